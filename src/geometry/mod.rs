@@ -1,0 +1,190 @@
+//! Bézier geometry, written once and shared by the reference, the methods' CPU
+//! preparation and the tests. Curve evaluation, splitting, flattening and bounds come
+//! from lyon_geom; what is ours is the outline model and the error-bounded conversion
+//! policy around it.
+
+mod quadratic;
+
+pub use quadratic::{DEFAULT_QUAD_TOLERANCE_EM, cubic_to_quadratics, max_distance_to_cubic};
+
+use glam::{DMat3, DVec2, DVec3};
+
+/// One outline segment in font units (or any 2D space), y up.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Segment {
+    Line(DVec2, DVec2),
+    Quad(DVec2, DVec2, DVec2),
+    Cubic(DVec2, DVec2, DVec2, DVec2),
+}
+
+impl Segment {
+    pub fn start(&self) -> DVec2 {
+        match *self {
+            Segment::Line(p, _) | Segment::Quad(p, _, _) | Segment::Cubic(p, _, _, _) => p,
+        }
+    }
+
+    pub fn end(&self) -> DVec2 {
+        match *self {
+            Segment::Line(_, p) | Segment::Quad(_, _, p) | Segment::Cubic(_, _, _, p) => p,
+        }
+    }
+
+    /// The segment with every control point mapped by `f`.
+    pub fn map(&self, f: impl Fn(DVec2) -> DVec2) -> Segment {
+        match *self {
+            Segment::Line(a, b) => Segment::Line(f(a), f(b)),
+            Segment::Quad(a, b, c) => Segment::Quad(f(a), f(b), f(c)),
+            Segment::Cubic(a, b, c, d) => Segment::Cubic(f(a), f(b), f(c), f(d)),
+        }
+    }
+
+    /// Calls `f` on points along the segment, after its start and ending exactly at its
+    /// end, such that the polyline is within `tolerance` of the curve (Wang's bound,
+    /// guaranteed, not estimated).
+    pub fn flatten(&self, tolerance: f64, f: &mut impl FnMut(DVec2)) {
+        match *self {
+            Segment::Line(_, b) => f(b),
+            // Degree elevation is exact, so one bounded flattener serves both degrees.
+            Segment::Quad(a, b, c) => {
+                Segment::Cubic(a, a + (b - a) * (2.0 / 3.0), c + (b - c) * (2.0 / 3.0), c)
+                    .flatten(tolerance, f)
+            }
+            Segment::Cubic(a, b, c, d) => {
+                let cubic = lyon_geom::CubicBezierSegment {
+                    from: to_lyon(a),
+                    ctrl1: to_lyon(b),
+                    ctrl2: to_lyon(c),
+                    to: to_lyon(d),
+                };
+                cubic.for_each_flattened(tolerance, &mut |line| f(from_lyon(line.to)));
+            }
+        }
+    }
+}
+
+pub(crate) fn to_lyon(p: DVec2) -> lyon_geom::Point<f64> {
+    lyon_geom::point(p.x, p.y)
+}
+
+pub(crate) fn from_lyon(p: lyon_geom::Point<f64>) -> DVec2 {
+    DVec2::new(p.x, p.y)
+}
+
+/// A closed contour: each segment starts where the previous one ends, and the last ends
+/// where the first starts.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Contour {
+    pub segments: Vec<Segment>,
+}
+
+/// A glyph outline: closed contours, filled by the nonzero rule.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Outline {
+    pub contours: Vec<Contour>,
+}
+
+impl Outline {
+    pub fn is_empty(&self) -> bool {
+        self.contours.is_empty()
+    }
+
+    pub fn segments(&self) -> impl Iterator<Item = &Segment> {
+        self.contours.iter().flat_map(|c| c.segments.iter())
+    }
+
+    /// Bounds of the control points, which contain the curves (convex hull property).
+    pub fn control_bounds(&self) -> Option<Rect> {
+        Rect::enclosing(self.segments().flat_map(segment_points))
+    }
+
+    /// The same outline with every cubic replaced by quadratics within `tolerance`
+    /// (same units as the outline). Lines and quadratics are kept as they are.
+    pub fn to_quadratics(&self, tolerance: f64) -> Outline {
+        Outline {
+            contours: self
+                .contours
+                .iter()
+                .map(|c| {
+                    let mut segments = Vec::with_capacity(c.segments.len());
+                    for s in &c.segments {
+                        match *s {
+                            Segment::Cubic(..) => {
+                                cubic_to_quadratics(s, tolerance, &mut |q| segments.push(q))
+                            }
+                            other => segments.push(other),
+                        }
+                    }
+                    Contour { segments }
+                })
+                .collect(),
+        }
+    }
+}
+
+/// The control points of a segment, by value.
+pub fn segment_points(s: &Segment) -> impl Iterator<Item = DVec2> {
+    let (pts, n): ([DVec2; 4], usize) = match *s {
+        Segment::Line(a, b) => ([a, b, b, b], 2),
+        Segment::Quad(a, b, c) => ([a, b, c, c], 3),
+        Segment::Cubic(a, b, c, d) => ([a, b, c, d], 4),
+    };
+    pts.into_iter().take(n)
+}
+
+/// An axis-aligned rectangle.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Rect {
+    pub min: DVec2,
+    pub max: DVec2,
+}
+
+impl Rect {
+    pub fn enclosing(points: impl IntoIterator<Item = DVec2>) -> Option<Rect> {
+        let mut it = points.into_iter();
+        let first = it.next()?;
+        Some(it.fold(
+            Rect {
+                min: first,
+                max: first,
+            },
+            |r, p| Rect {
+                min: r.min.min(p),
+                max: r.max.max(p),
+            },
+        ))
+    }
+
+    pub fn union(self, other: Rect) -> Rect {
+        Rect {
+            min: self.min.min(other.min),
+            max: self.max.max(other.max),
+        }
+    }
+
+    pub fn size(&self) -> DVec2 {
+        self.max - self.min
+    }
+
+    pub fn corners(&self) -> [DVec2; 4] {
+        [
+            self.min,
+            DVec2::new(self.max.x, self.min.y),
+            self.max,
+            DVec2::new(self.min.x, self.max.y),
+        ]
+    }
+
+    pub fn overlaps(&self, other: &Rect) -> bool {
+        self.min.x < other.max.x
+            && other.min.x < self.max.x
+            && self.min.y < other.max.y
+            && other.min.y < self.max.y
+    }
+}
+
+/// Applies a projective 3×3 matrix to a 2D point (column vectors, w = last row).
+pub fn project(m: &DMat3, p: DVec2) -> DVec2 {
+    let v = *m * DVec3::new(p.x, p.y, 1.0);
+    DVec2::new(v.x / v.z, v.y / v.z)
+}

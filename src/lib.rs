@@ -1,0 +1,34 @@
+//! glyphscope's render core: fonts and shaping, Bézier geometry, scenes, the camera
+//! convention, the exact CPU reference, error metrics, the GPU context and the methods.
+//! It builds and runs without the UI (`--no-default-features`).
+
+#[cfg(feature = "app")]
+pub mod app;
+pub mod camera;
+pub mod cli;
+pub mod coverage;
+pub mod font;
+pub mod geometry;
+pub mod gpu;
+pub mod methods;
+pub mod metrics;
+pub mod reference;
+pub mod scene;
+pub mod shaping;
+
+/// Every failure the core reports. Each message is one line a user can act on.
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    /// Bad input from the user: text, sizes, glyph ids, parameters.
+    #[error("{0}")]
+    Input(String),
+    /// A font that cannot be read or parsed.
+    #[error("{0}")]
+    Font(String),
+    /// No usable GPU, or the GPU failed.
+    #[error("{0}")]
+    Gpu(String),
+    /// A result that cannot be written.
+    #[error("{0}")]
+    Output(String),
+}

@@ -1,0 +1,112 @@
+//! Error of a coverage image against the reference: the figures every test, the bench
+//! and the app quote.
+
+use serde::Serialize;
+
+use crate::Error;
+use crate::coverage::CoverageImage;
+
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct ErrorStats {
+    /// Mean absolute error, in 1/255.
+    pub mae_255: f64,
+    /// Root-mean-square error, in 1/255.
+    pub rmse_255: f64,
+    /// Largest absolute error, as coverage (0..1).
+    pub max: f64,
+    /// Where the largest error is (x, y).
+    pub worst_pixel: (u32, u32),
+    pub pixels_over_025: usize,
+    pub pixels_over_05: usize,
+    pub pixels: usize,
+}
+
+/// Compares `image` with `reference` pixel by pixel.
+pub fn compare(image: &CoverageImage, reference: &CoverageImage) -> Result<ErrorStats, Error> {
+    if (image.width, image.height) != (reference.width, reference.height) {
+        return Err(Error::Input(format!(
+            "cannot compare a {}x{} image with a {}x{} reference",
+            image.width, image.height, reference.width, reference.height
+        )));
+    }
+    let mut stats = ErrorStats {
+        pixels: image.data.len(),
+        ..Default::default()
+    };
+    let (mut sum, mut sum_sq) = (0.0, 0.0);
+    for (i, (&a, &b)) in image.data.iter().zip(&reference.data).enumerate() {
+        let e = (f64::from(a) - f64::from(b)).abs();
+        sum += e;
+        sum_sq += e * e;
+        stats.pixels_over_025 += usize::from(e > 0.25);
+        stats.pixels_over_05 += usize::from(e > 0.5);
+        // NaN compares false and would hide; count it as the worst possible error.
+        let e = if e.is_nan() { f64::INFINITY } else { e };
+        if e > stats.max {
+            stats.max = e;
+            stats.worst_pixel = (
+                (i % image.width as usize) as u32,
+                (i / image.width as usize) as u32,
+            );
+        }
+    }
+    let n = stats.pixels.max(1) as f64;
+    stats.mae_255 = sum / n * 255.0;
+    stats.rmse_255 = (sum_sq / n).sqrt() * 255.0;
+    Ok(stats)
+}
+
+/// Signed error image: red where `image` covers more than `reference`, blue where it
+/// covers less, full intensity at an error of `full_scale`.
+pub fn error_image(
+    image: &CoverageImage,
+    reference: &CoverageImage,
+    full_scale: f32,
+) -> image::RgbImage {
+    let mut out = image::RgbImage::new(image.width, image.height);
+    for (p, (&a, &b)) in out.pixels_mut().zip(image.data.iter().zip(&reference.data)) {
+        let e = ((a - b) / full_scale).clamp(-1.0, 1.0);
+        let v = (e.abs() * 255.0).round() as u8;
+        *p = if e >= 0.0 {
+            image::Rgb([v, 0, 0])
+        } else {
+            image::Rgb([0, 0, v])
+        };
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn img(data: &[f32]) -> CoverageImage {
+        CoverageImage {
+            width: data.len() as u32,
+            height: 1,
+            data: data.to_vec(),
+        }
+    }
+
+    #[test]
+    fn figures_match_hand_computation() {
+        let s = compare(&img(&[0.0, 0.5, 1.0, 0.3]), &img(&[0.0, 0.0, 0.4, 0.3])).unwrap();
+        assert!((s.mae_255 - (0.5 + 0.6) / 4.0 * 255.0).abs() < 1e-4);
+        assert!((s.rmse_255 - ((0.25 + 0.36) / 4.0f64).sqrt() * 255.0).abs() < 1e-3);
+        assert!((s.max - 0.6).abs() < 1e-6);
+        assert_eq!(s.worst_pixel, (2, 0));
+        assert_eq!((s.pixels_over_025, s.pixels_over_05), (2, 1));
+    }
+
+    #[test]
+    fn nan_is_the_worst_error() {
+        let s = compare(&img(&[0.0, f32::NAN]), &img(&[0.0, 0.0])).unwrap();
+        assert!(s.max.is_infinite());
+        assert_eq!(s.worst_pixel, (1, 0));
+    }
+
+    #[test]
+    fn size_mismatch_is_an_error() {
+        assert!(compare(&img(&[0.0]), &img(&[0.0, 0.0])).is_err());
+    }
+}

@@ -1,0 +1,178 @@
+//! A scene: glyph instances (which glyph, where) and the set of distinct glyphs they
+//! use. Methods build their GPU data once per distinct glyph and reuse it for every
+//! instance and frame.
+
+use std::collections::HashMap;
+
+use glam::DVec2;
+
+use crate::Error;
+use crate::font::{Font, GlyphId};
+use crate::geometry::{Outline, Rect};
+use crate::shaping;
+
+/// A distinct glyph: its outline in font units and the bounds of its control points.
+#[derive(Clone, Debug)]
+pub struct Glyph {
+    pub id: GlyphId,
+    pub outline: Outline,
+    pub bounds: Rect,
+}
+
+/// One drawn copy of a glyph.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Instance {
+    /// Index into [`Scene::glyphs`].
+    pub glyph: u32,
+    /// The glyph's origin in font units, y up.
+    pub position: DVec2,
+}
+
+#[derive(Clone, Debug)]
+pub struct Scene {
+    pub units_per_em: f64,
+    /// Distinct glyphs with ink, in order of first use.
+    pub glyphs: Vec<Glyph>,
+    /// Instances of glyphs with ink (blank glyphs such as spaces are left out).
+    pub instances: Vec<Instance>,
+}
+
+impl Scene {
+    /// Shapes `text` (possibly several lines) in `font`.
+    pub fn from_text(font: &Font, text: &str) -> Result<Scene, Error> {
+        let shaped = shaping::shape(font, text)?;
+        let scene = Self::build(font, shaped.iter().map(|g| (g.glyph, g.position)));
+        if scene.instances.is_empty() {
+            return Err(Error::Input(
+                "the text draws nothing (only blank glyphs)".into(),
+            ));
+        }
+        Ok(scene)
+    }
+
+    /// One glyph, by id, at the origin.
+    pub fn from_glyph_id(font: &Font, id: u32) -> Result<Scene, Error> {
+        let id = font.check_glyph_id(id)?;
+        let scene = Self::build(font, [(id, DVec2::ZERO)]);
+        if scene.instances.is_empty() {
+            return Err(Error::Input(format!(
+                "glyph {id} of '{}' has no outline",
+                font.name()
+            )));
+        }
+        Ok(scene)
+    }
+
+    fn build(font: &Font, placed: impl IntoIterator<Item = (GlyphId, DVec2)>) -> Scene {
+        let mut slots: HashMap<GlyphId, Option<u32>> = HashMap::new();
+        let mut glyphs = Vec::new();
+        let mut instances = Vec::new();
+        for (id, position) in placed {
+            let slot = *slots.entry(id).or_insert_with(|| {
+                let outline = font.outline(id);
+                let bounds = outline.control_bounds()?;
+                glyphs.push(Glyph {
+                    id,
+                    outline,
+                    bounds,
+                });
+                Some(glyphs.len() as u32 - 1)
+            });
+            if let Some(glyph) = slot {
+                instances.push(Instance { glyph, position });
+            }
+        }
+        Scene {
+            units_per_em: font.units_per_em(),
+            glyphs,
+            instances,
+        }
+    }
+
+    /// A synthetic scene: each outline is its own distinct glyph, placed at its position.
+    /// Empty outlines are left out.
+    pub fn from_outlines(units_per_em: f64, placed: Vec<(Outline, DVec2)>) -> Scene {
+        let mut glyphs = Vec::new();
+        let mut instances = Vec::new();
+        for (outline, position) in placed {
+            let Some(bounds) = outline.control_bounds() else {
+                continue;
+            };
+            instances.push(Instance {
+                glyph: glyphs.len() as u32,
+                position,
+            });
+            glyphs.push(Glyph {
+                id: glyphs.len() as GlyphId,
+                outline,
+                bounds,
+            });
+        }
+        Scene {
+            units_per_em,
+            glyphs,
+            instances,
+        }
+    }
+
+    /// Bounds of all instances' control points, font units.
+    pub fn ink_bounds(&self) -> Option<Rect> {
+        self.instances
+            .iter()
+            .map(|i| {
+                let b = self.glyphs[i.glyph as usize].bounds;
+                Rect {
+                    min: b.min + i.position,
+                    max: b.max + i.position,
+                }
+            })
+            .reduce(Rect::union)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn distinct_glyphs_are_shared_by_instances() {
+        let scene = Scene::from_text(&Font::default_font(), "abab a").unwrap();
+        assert_eq!(scene.glyphs.len(), 2);
+        assert_eq!(scene.instances.len(), 5, "the space draws nothing");
+        assert_eq!(scene.instances[0].glyph, scene.instances[2].glyph);
+    }
+
+    #[test]
+    fn bengali_shapes_into_conjuncts() {
+        let font = Font::from_path(std::path::Path::new("fonts/Lohit-Bengali.ttf")).unwrap();
+        // ক + ্ + ষ (three code points) form the conjunct ক্ষ: fewer glyphs than
+        // characters, and a glyph that none of the three characters maps to alone.
+        let text = "\u{0995}\u{09CD}\u{09B7}";
+        let scene = Scene::from_text(&font, text).unwrap();
+        assert!(
+            scene.instances.len() < 3,
+            "{} glyphs",
+            scene.instances.len()
+        );
+        let singles: Vec<_> = text
+            .chars()
+            .map(|c| font.glyph_for_char(c).unwrap())
+            .collect();
+        assert!(
+            scene.glyphs.iter().any(|g| !singles.contains(&g.id)),
+            "no conjunct glyph"
+        );
+        // DejaVu Sans has no Bengali: the error names the character.
+        let err = Scene::from_text(&Font::default_font(), text)
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("U+0995"), "{err}");
+    }
+
+    #[test]
+    fn glyph_id_out_of_range_is_an_error() {
+        let font = Font::default_font();
+        let err = Scene::from_glyph_id(&font, 70_000).unwrap_err().to_string();
+        assert!(err.contains("out of range"), "{err}");
+    }
+}
