@@ -1,0 +1,41 @@
+//! Helpers shared by the integration tests: synthetic outlines and scenes laid out so
+//! that one font unit is one pixel.
+#![allow(dead_code)] // each test binary uses its own subset
+
+use glam::DVec2;
+use glyphscope::camera::Camera;
+use glyphscope::geometry::{Contour, Outline, Segment};
+use glyphscope::scene::Scene;
+
+/// A closed polygon contour through `points` (font units, y up).
+pub fn polygon(points: &[(f64, f64)]) -> Contour {
+    let p: Vec<DVec2> = points.iter().map(|&(x, y)| DVec2::new(x, y)).collect();
+    Contour {
+        segments: (0..p.len())
+            .map(|i| Segment::Line(p[i], p[(i + 1) % p.len()]))
+            .collect(),
+    }
+}
+
+/// An outline of several polygons.
+pub fn polygons(contours: &[&[(f64, f64)]]) -> Outline {
+    Outline {
+        contours: contours.iter().map(|c| polygon(c)).collect(),
+    }
+}
+
+/// An axis-aligned rectangle, counter-clockwise in y-up coordinates.
+pub fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> Vec<(f64, f64)> {
+    vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+}
+
+/// A scene holding `outline` once at the origin, where 1 font unit = 1 px.
+pub fn single(outline: Outline) -> Scene {
+    Scene::from_outlines(1000.0, vec![(outline, DVec2::ZERO)])
+}
+
+/// A camera with 1 px per font unit whose baseline origin is at the image's bottom-left
+/// corner, so font (x, y) lands at image (x, height − y).
+pub fn unit_camera(width: u32, height: u32) -> Camera {
+    Camera::new(width, height, 1000.0, DVec2::new(0.0, f64::from(height)))
+}
