@@ -1,0 +1,153 @@
+//! The device every method renders with, and the few helpers that turn wgpu's
+//! callbacks and error handlers into plain `Result`s.
+
+use crate::Error;
+
+/// The adapter, device and queue, chosen once per process.
+pub struct GpuContext {
+    pub device: wgpu::Device,
+    pub queue: wgpu::Queue,
+    adapter: wgpu::Adapter,
+}
+
+/// The features `time_frames` needs: timestamps written on the command encoder, around
+/// whatever passes a method records.
+const TIMESTAMP_FEATURES: wgpu::Features =
+    wgpu::Features::TIMESTAMP_QUERY.union(wgpu::Features::TIMESTAMP_QUERY_INSIDE_ENCODERS);
+
+impl GpuContext {
+    /// Opens any adapter. `WGPU_BACKEND`, `WGPU_POWER_PREF` and `WGPU_ADAPTER_NAME`
+    /// choose among them. Timestamp queries are enabled when the adapter has them, and
+    /// the device gets the adapter's own limits rather than WebGPU's portable defaults,
+    /// so that 16384-pixel targets work wherever the hardware allows them.
+    pub fn new() -> Result<GpuContext, Error> {
+        pollster::block_on(Self::new_async())
+    }
+
+    async fn new_async() -> Result<GpuContext, Error> {
+        let instance =
+            wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+        let adapter = choose_adapter(&instance).await?;
+        let (device, queue) = adapter
+            .request_device(&wgpu::DeviceDescriptor {
+                label: Some("glyphscope"),
+                required_features: adapter.features() & TIMESTAMP_FEATURES,
+                required_limits: adapter.limits(),
+                ..Default::default()
+            })
+            .await
+            .map_err(|e| Error::Gpu(format!("cannot open '{}': {e}", adapter.get_info().name)))?;
+        Ok(GpuContext {
+            device,
+            queue,
+            adapter,
+        })
+    }
+
+    /// The adapter's name and backend, e.g. "llvmpipe (LLVM 15.0.6, 256 bits) (Vulkan)".
+    pub fn adapter_name(&self) -> String {
+        describe(&self.adapter)
+    }
+
+    /// Whether `time_frames` can measure GPU time on this device.
+    pub fn has_timestamps(&self) -> bool {
+        self.device.features().contains(TIMESTAMP_FEATURES)
+    }
+
+    /// The largest width or height of a 2D texture, and so of a coverage target.
+    pub fn max_texture_side(&self) -> u32 {
+        self.device.limits().max_texture_dimension_2d
+    }
+
+    /// Runs `work` and reports the validation and out-of-memory errors wgpu raises
+    /// meanwhile as [`Error::Gpu`], instead of letting wgpu's default handler panic.
+    pub(crate) fn catching_errors<T>(
+        &self,
+        what: &str,
+        work: impl FnOnce() -> Result<T, Error>,
+    ) -> Result<T, Error> {
+        let out_of_memory = self.device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+        let validation = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let result = work();
+        // Scopes pop in reverse order of their pushes.
+        let validation = pollster::block_on(validation.pop());
+        let out_of_memory = pollster::block_on(out_of_memory.pop());
+        match validation.or(out_of_memory) {
+            Some(e) => Err(Error::Gpu(format!("{what} failed on the GPU: {e}"))),
+            None => result,
+        }
+    }
+
+    /// Blocks until the GPU has finished everything submitted so far.
+    pub(crate) fn wait_idle(&self) -> Result<(), Error> {
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map(drop)
+            .map_err(|e| Error::Gpu(format!("waiting for the GPU failed: {e}")))
+    }
+
+    /// Maps a `MAP_READ` buffer whose copies have been submitted, and returns its bytes.
+    pub(crate) fn read_buffer(&self, buffer: &wgpu::Buffer) -> Result<Vec<u8>, Error> {
+        let (sender, receiver) = std::sync::mpsc::channel();
+        buffer.map_async(wgpu::MapMode::Read, .., move |result| {
+            // The receiver outlives the wait below, so sending cannot fail.
+            let _ = sender.send(result);
+        });
+        self.wait_idle()?;
+        let mapped = receiver
+            .recv()
+            .map_err(|_| Error::Gpu("the GPU never answered a buffer read".into()))?;
+        mapped.map_err(|e| Error::Gpu(format!("cannot read a buffer back from the GPU: {e}")))?;
+        let bytes = buffer
+            .get_mapped_range(..)
+            .map_err(|e| Error::Gpu(format!("cannot read a buffer back from the GPU: {e}")))?
+            .to_vec();
+        buffer.unmap();
+        Ok(bytes)
+    }
+}
+
+/// The adapter named by `WGPU_ADAPTER_NAME` (a case-insensitive part of its name) if
+/// that is set, else wgpu's default choice under `WGPU_POWER_PREF`. wgpu's own helper
+/// for this panics when the name matches nothing; this reports the adapters there are.
+async fn choose_adapter(instance: &wgpu::Instance) -> Result<wgpu::Adapter, Error> {
+    if let Ok(wanted) = std::env::var("WGPU_ADAPTER_NAME") {
+        let adapters = instance.enumerate_adapters(wgpu::Backends::all()).await;
+        let names: Vec<String> = adapters.iter().map(describe).collect();
+        return adapters
+            .into_iter()
+            .find(|a| {
+                a.get_info()
+                    .name
+                    .to_lowercase()
+                    .contains(&wanted.to_lowercase())
+            })
+            .ok_or_else(|| {
+                Error::Gpu(format!(
+                    "WGPU_ADAPTER_NAME='{wanted}' matches no adapter; found: {}",
+                    if names.is_empty() {
+                        "none".to_string()
+                    } else {
+                        names.join(", ")
+                    }
+                ))
+            });
+    }
+    instance
+        .request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference: wgpu::PowerPreference::from_env().unwrap_or_default(),
+            ..Default::default()
+        })
+        .await
+        .map_err(|_| {
+            Error::Gpu(
+                "no GPU adapter found; on Debian install mesa-vulkan-drivers for lavapipe".into(),
+            )
+        })
+}
+
+/// An adapter's name and backend: the same name can come through several backends.
+fn describe(adapter: &wgpu::Adapter) -> String {
+    let info = adapter.get_info();
+    format!("{} ({:?})", info.name, info.backend)
+}

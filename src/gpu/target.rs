@@ -1,0 +1,110 @@
+//! The texture every method renders its coverage into, and reading it back.
+
+use super::GpuContext;
+use crate::Error;
+use crate::coverage::CoverageImage;
+
+/// A coverage target: coverage in alpha, premultiplied overlay colour in rgb.
+pub struct CoverageTarget {
+    pub texture: wgpu::Texture,
+    pub view: wgpu::TextureView,
+    pub width: u32,
+    pub height: u32,
+}
+
+impl CoverageTarget {
+    /// Half floats: blendable everywhere, exact for 0 and 1, and about 3 decimal digits
+    /// in between — finer than the 8 bits an image is saved with.
+    pub const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
+
+    /// Bytes of one texel of [`Self::FORMAT`].
+    const TEXEL_BYTES: u32 = 8;
+
+    pub fn new(gpu: &GpuContext, width: u32, height: u32) -> Result<CoverageTarget, Error> {
+        let max = gpu.max_texture_side();
+        if width == 0 || height == 0 || width > max || height > max {
+            return Err(Error::Input(format!(
+                "target size {width}x{height} is not possible on this GPU: each side must be \
+                 1 to {max} pixels"
+            )));
+        }
+        gpu.catching_errors("creating the coverage target", || {
+            let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
+                label: Some("coverage target"),
+                size: wgpu::Extent3d {
+                    width,
+                    height,
+                    depth_or_array_layers: 1,
+                },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format: Self::FORMAT,
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+                    | wgpu::TextureUsages::TEXTURE_BINDING
+                    | wgpu::TextureUsages::COPY_SRC,
+                view_formats: &[],
+            });
+            let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
+            Ok(CoverageTarget {
+                texture,
+                view,
+                width,
+                height,
+            })
+        })
+    }
+
+    /// Copies the coverage (alpha) back as f32, clamped to [0, 1] like the reference:
+    /// methods that add coverage up may overshoot where instances overlap.
+    pub fn readback(&self, gpu: &GpuContext) -> Result<CoverageImage, Error> {
+        let row_bytes = self.width * Self::TEXEL_BYTES;
+        // Buffer rows of a texture copy must start on 256-byte boundaries.
+        let padded_row_bytes = row_bytes.next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
+        let bytes = gpu.catching_errors("reading the coverage target back", || {
+            let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("coverage readback"),
+                size: u64::from(padded_row_bytes) * u64::from(self.height),
+                usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+                mapped_at_creation: false,
+            });
+            let mut encoder = gpu
+                .device
+                .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                    label: Some("readback"),
+                });
+            encoder.copy_texture_to_buffer(
+                self.texture.as_image_copy(),
+                wgpu::TexelCopyBufferInfo {
+                    buffer: &buffer,
+                    layout: wgpu::TexelCopyBufferLayout {
+                        offset: 0,
+                        bytes_per_row: Some(padded_row_bytes),
+                        rows_per_image: None,
+                    },
+                },
+                wgpu::Extent3d {
+                    width: self.width,
+                    height: self.height,
+                    depth_or_array_layers: 1,
+                },
+            );
+            gpu.queue.submit([encoder.finish()]);
+            gpu.read_buffer(&buffer)
+        })?;
+
+        let mut image = CoverageImage::new(self.width, self.height);
+        let rows = bytes.chunks_exact(padded_row_bytes as usize);
+        for (out_row, row) in image.data.chunks_exact_mut(self.width as usize).zip(rows) {
+            for (out, texel) in out_row
+                .iter_mut()
+                .zip(row.chunks_exact(Self::TEXEL_BYTES as usize))
+            {
+                // rgba, two bytes each, little-endian: alpha is the last pair.
+                let alpha = half::f16::from_le_bytes([texel[6], texel[7]]);
+                *out = alpha.to_f32().clamp(0.0, 1.0);
+            }
+        }
+        Ok(image)
+    }
+}

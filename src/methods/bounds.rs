@@ -1,0 +1,263 @@
+//! `bounds`: a diagnostic method that draws each glyph instance's control-point
+//! rectangle as one quad, with exact box-filter coverage.
+//!
+//! It is the floor cost of any one-quad-per-glyph pipeline, and since its coverage is
+//! exact it proves the GPU path — transform convention, target, blending, readback —
+//! against the CPU reference on scenes whose glyphs are rectangles.
+//!
+//! Per frame the CPU maps each rectangle's corners to image pixels in f64 and uploads
+//! them, relative to an integer pixel near the instance, as f32; the fragment shader
+//! clips each pixel square to the corners' quadrilateral (`shaders/bounds.wgsl`).
+
+use glam::DVec2;
+
+use super::{Method, Params, reject_unknown_params};
+use crate::Error;
+use crate::camera::Camera;
+use crate::geometry::{Rect, project};
+use crate::gpu::{CoverageTarget, GpuContext};
+use crate::scene::Scene;
+
+pub struct Bounds {
+    /// Built on the first `prepare`; it depends on the device only.
+    pipeline: Option<QuadPipeline>,
+    /// What `prepare` keeps of the scene.
+    prepared: Option<PreparedScene>,
+}
+
+impl Bounds {
+    pub fn new(params: &Params) -> Result<Bounds, Error> {
+        reject_unknown_params("bounds", params, &[])?;
+        Ok(Bounds {
+            pipeline: None,
+            prepared: None,
+        })
+    }
+}
+
+struct QuadPipeline {
+    pipeline: wgpu::RenderPipeline,
+    /// The target size, for the vertex shader's pixel → clip-space step.
+    view_buffer: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+}
+
+struct PreparedScene {
+    units_per_em: f64,
+    /// Each instance's pen position and local rectangle: all that does not depend on
+    /// the camera.
+    placed: Vec<(DVec2, Rect)>,
+    /// One [`QuadInstance`] per instance, rewritten every frame.
+    quad_buffer: wgpu::Buffer,
+    /// This frame's quads, kept to reuse the allocation.
+    quads: Vec<QuadInstance>,
+}
+
+/// One quad as the vertex shader reads it (`Instance` in `bounds.wgsl`).
+#[repr(C)]
+#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+struct QuadInstance {
+    /// An integer pixel near the instance; the corners are relative to it.
+    origin: [i32; 2],
+    /// The rectangle's corners in image pixels, in order around it.
+    corners: [[f32; 2]; 4],
+}
+
+const QUAD_ATTRIBUTES: [wgpu::VertexAttribute; 3] =
+    wgpu::vertex_attr_array![0 => Sint32x2, 1 => Float32x4, 2 => Float32x4];
+
+impl QuadPipeline {
+    fn new(gpu: &GpuContext) -> QuadPipeline {
+        let device = &gpu.device;
+        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("bounds.wgsl"),
+            source: wgpu::ShaderSource::Wgsl(include_str!("../../shaders/bounds.wgsl").into()),
+        });
+        let bind_group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("bounds view"),
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::VERTEX,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+                count: None,
+            }],
+        });
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("bounds"),
+            bind_group_layouts: &[Some(&bind_group_layout)],
+            immediate_size: 0,
+        });
+        // Coverage adds up: instances that share an edge sum to full coverage there,
+        // as the reference sums instances that do not overlap.
+        let add = wgpu::BlendComponent {
+            src_factor: wgpu::BlendFactor::One,
+            dst_factor: wgpu::BlendFactor::One,
+            operation: wgpu::BlendOperation::Add,
+        };
+        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("bounds"),
+            layout: Some(&layout),
+            vertex: wgpu::VertexState {
+                module: &shader,
+                entry_point: Some("vs_main"),
+                compilation_options: Default::default(),
+                buffers: &[Some(wgpu::VertexBufferLayout {
+                    array_stride: size_of::<QuadInstance>() as wgpu::BufferAddress,
+                    step_mode: wgpu::VertexStepMode::Instance,
+                    attributes: &QUAD_ATTRIBUTES,
+                })],
+            },
+            primitive: wgpu::PrimitiveState {
+                topology: wgpu::PrimitiveTopology::TriangleStrip,
+                ..Default::default()
+            },
+            depth_stencil: None,
+            multisample: wgpu::MultisampleState::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &shader,
+                entry_point: Some("fs_main"),
+                compilation_options: Default::default(),
+                targets: &[Some(wgpu::ColorTargetState {
+                    format: CoverageTarget::FORMAT,
+                    blend: Some(wgpu::BlendState {
+                        color: add,
+                        alpha: add,
+                    }),
+                    write_mask: wgpu::ColorWrites::ALL,
+                })],
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
+        let view_buffer = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("bounds view"),
+            size: size_of::<[f32; 2]>() as wgpu::BufferAddress,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("bounds view"),
+            layout: &bind_group_layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: view_buffer.as_entire_binding(),
+            }],
+        });
+        QuadPipeline {
+            pipeline,
+            view_buffer,
+            bind_group,
+        }
+    }
+}
+
+impl Method for Bounds {
+    fn name(&self) -> &'static str {
+        "bounds"
+    }
+
+    fn prepare(&mut self, gpu: &GpuContext, scene: &Scene) -> Result<(), Error> {
+        gpu.catching_errors("preparing 'bounds'", || {
+            if self.pipeline.is_none() {
+                self.pipeline = Some(QuadPipeline::new(gpu));
+            }
+            let placed: Vec<(DVec2, Rect)> = scene
+                .instances
+                .iter()
+                .map(|i| (i.position, scene.glyphs[i.glyph as usize].bounds))
+                .collect();
+            let quad_buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("bounds quads"),
+                size: (placed.len() * size_of::<QuadInstance>()) as wgpu::BufferAddress,
+                usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            self.prepared = Some(PreparedScene {
+                units_per_em: scene.units_per_em,
+                quads: Vec::with_capacity(placed.len()),
+                placed,
+                quad_buffer,
+            });
+            Ok(())
+        })
+    }
+
+    fn encode(
+        &mut self,
+        gpu: &GpuContext,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &CoverageTarget,
+        camera: &Camera,
+    ) -> Result<(), Error> {
+        let (Some(pipeline), Some(scene)) = (&self.pipeline, &mut self.prepared) else {
+            return Err(Error::Gpu(
+                "method 'bounds' was asked to draw before `prepare`".into(),
+            ));
+        };
+        let view = Rect {
+            min: DVec2::ZERO,
+            max: DVec2::new(f64::from(target.width), f64::from(target.height)),
+        };
+        scene.quads.clear();
+        for &(pen, rect) in &scene.placed {
+            let to_image = camera.glyph_to_image(scene.units_per_em, pen);
+            // Also rejects a tilt that puts a corner behind the eye.
+            let image_bounds = Camera::project_bounds(&to_image, &rect)?;
+            if !image_bounds.overlaps(&view) {
+                continue;
+            }
+            // An integer pixel at the instance's corner or the view's, whichever is
+            // further in: the f32 corners relative to it are as small as the instance,
+            // however far from the world origin it lies.
+            let origin = image_bounds.min.max(view.min).floor();
+            let corners = rect
+                .corners()
+                .map(|c| (project(&to_image, c) - origin).as_vec2().to_array());
+            scene.quads.push(QuadInstance {
+                origin: [origin.x as i32, origin.y as i32],
+                corners,
+            });
+        }
+        let size = [target.width as f32, target.height as f32];
+        gpu.queue
+            .write_buffer(&pipeline.view_buffer, 0, bytemuck::cast_slice(&size));
+        if !scene.quads.is_empty() {
+            gpu.queue
+                .write_buffer(&scene.quad_buffer, 0, bytemuck::cast_slice(&scene.quads));
+        }
+
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("bounds"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: &target.view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: None,
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        if !scene.quads.is_empty() {
+            pass.set_pipeline(&pipeline.pipeline);
+            pass.set_bind_group(0, &pipeline.bind_group, &[]);
+            pass.set_vertex_buffer(0, scene.quad_buffer.slice(..));
+            pass.draw(0..4, 0..scene.quads.len() as u32);
+        }
+        Ok(())
+    }
+
+    fn gpu_bytes(&self) -> u64 {
+        let view = self.pipeline.as_ref().map_or(0, |p| p.view_buffer.size());
+        let quads = self.prepared.as_ref().map_or(0, |s| s.quad_buffer.size());
+        view + quads
+    }
+}

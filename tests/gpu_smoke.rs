@@ -1,0 +1,253 @@
+//! The whole GPU path — context, target, the `Method` trait, blending, readback — checked
+//! against the CPU reference with the `bounds` method on glyphs that are rectangles,
+//! where its box-filter coverage is exact.
+//!
+//! These tests need an adapter. Without one they fail with the message that says how
+//! to get one (CI installs lavapipe), rather than skip and pass silently.
+
+use std::sync::OnceLock;
+
+use glam::DVec2;
+use glyphscope::camera::Camera;
+use glyphscope::coverage::CoverageImage;
+use glyphscope::geometry::{Contour, Outline, Segment};
+use glyphscope::gpu::{CoverageTarget, GpuContext, render_frame, time_frames};
+use glyphscope::scene::Scene;
+use glyphscope::{Error, methods, reference};
+
+/// Half-float coverage holds about 3 decimal digits.
+const MAX_ERROR: f32 = 2e-3;
+
+fn gpu() -> &'static GpuContext {
+    static GPU: OnceLock<GpuContext> = OnceLock::new();
+    GPU.get_or_init(|| GpuContext::new().unwrap_or_else(|e| panic!("{e}")))
+}
+
+/// A closed rectangle of four lines, either way round (nonzero fills both alike).
+fn rectangle(min: DVec2, max: DVec2, clockwise: bool) -> Outline {
+    let mut corners = [min, DVec2::new(max.x, min.y), max, DVec2::new(min.x, max.y)];
+    if clockwise {
+        corners.reverse();
+    }
+    let segments = (0..4)
+        .map(|k| Segment::Line(corners[k], corners[(k + 1) % 4]))
+        .collect();
+    Outline {
+        contours: vec![Contour { segments }],
+    }
+}
+
+/// Rectangles at sub-pixel positions for a 37×23 view at 10 px/em (0.01 px per unit):
+/// two that share an edge, a sliver under half a pixel wide, a clockwise one, one
+/// smaller than a pixel and one that runs off the right edge. None overlap, so the
+/// reference's union and the GPU's sum agree.
+fn small_scene() -> Scene {
+    let r =
+        |x0, y0, x1, y1, clockwise| rectangle(DVec2::new(x0, y0), DVec2::new(x1, y1), clockwise);
+    Scene::from_outlines(
+        1000.0,
+        vec![
+            (r(0.0, 0.0, 430.0, 710.0, false), DVec2::new(13.7, 0.0)),
+            (r(0.0, 0.0, 270.0, 710.0, false), DVec2::new(443.7, 0.0)),
+            (r(0.0, -200.0, 37.0, 1300.0, false), DVec2::new(900.25, 0.0)),
+            (
+                r(-120.0, -380.0, 640.0, 220.0, true),
+                DVec2::new(1250.6, 153.1),
+            ),
+            (r(0.0, 0.0, 55.0, 45.0, false), DVec2::new(2100.3, 800.7)),
+            (
+                r(0.0, -300.0, 1200.0, 1500.0, false),
+                DVec2::new(2300.9, 0.3),
+            ),
+        ],
+    )
+}
+
+/// A row of 24 rectangles of assorted sizes across a 301×41 view at 24 px/em: wide
+/// enough that a row of the target is not a multiple of 256 bytes (301 × 8 = 2408).
+/// Every fourth one touches its left neighbour.
+fn wide_scene() -> Scene {
+    let mut placed = Vec::new();
+    let mut x = 37.3;
+    for k in 0..24 {
+        let k = f64::from(k);
+        let width = 90.0 + (k * 157.0) % 610.0;
+        let bottom = -350.0 + (k * 83.0) % 300.0;
+        let top = 300.0 + (k * 211.0) % 2100.0;
+        let clockwise = k % 3.0 == 0.0;
+        let outline = rectangle(DVec2::new(0.0, bottom), DVec2::new(width, top), clockwise);
+        placed.push((outline, DVec2::new(x, (k * 0.37) % 1.0)));
+        let gap = if k % 4.0 == 2.0 {
+            0.0
+        } else {
+            113.7 + (k * 29.0) % 80.0
+        };
+        x += width + gap;
+    }
+    Scene::from_outlines(2048.0, placed)
+}
+
+/// The transforms every scene is checked under, on a camera of the given view.
+fn cameras(base: Camera) -> Vec<(&'static str, Camera)> {
+    let (sin, cos) = 30f64.to_radians().sin_cos();
+    let skew = 0.3;
+    // A 30° rotation after a horizontal skew.
+    let rotated = Camera::matrix_from_rows(cos, cos * skew - sin, sin, sin * skew + cos);
+    // Upside down about the baseline, which moves down to keep the scene in view: a
+    // negative determinant turns the corners' order around.
+    let mirrored = Camera {
+        matrix: Camera::matrix_from_rows(1.0, 0.0, 0.0, -1.0),
+        origin: DVec2::new(base.origin.x, f64::from(base.height) - base.origin.y),
+        ..base
+    };
+    vec![
+        ("identity", base),
+        (
+            "rotation and skew",
+            Camera {
+                matrix: rotated,
+                ..base
+            },
+        ),
+        ("mirrored", mirrored),
+        (
+            "tilt 25°",
+            Camera {
+                tilt_deg: 25.0,
+                ..base
+            },
+        ),
+        (
+            "far world offset",
+            Camera {
+                world_offset: DVec2::new(1e5, -1e5),
+                ..base
+            },
+        ),
+    ]
+}
+
+fn render(scene: &Scene, camera: &Camera) -> Result<CoverageImage, Error> {
+    let gpu = gpu();
+    let mut method = methods::create("bounds", &[])?;
+    method.prepare(gpu, scene)?;
+    let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
+    render_frame(gpu, method.as_mut(), &target, camera)?;
+    target.readback(gpu)
+}
+
+fn max_abs_difference(a: &CoverageImage, b: &CoverageImage) -> f32 {
+    assert_eq!((a.width, a.height), (b.width, b.height));
+    a.data
+        .iter()
+        .zip(&b.data)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f32::max)
+}
+
+/// Renders `scene` under every camera and compares with the reference.
+fn check_against_reference(scene: &Scene, base: Camera) {
+    for (name, camera) in cameras(base) {
+        let expected = reference::rasterize(scene, &camera).unwrap();
+        let actual = render(scene, &camera).unwrap();
+        let error = max_abs_difference(&actual, &expected);
+        let (sum, expected_sum) = (actual.sum(), expected.sum());
+        let view = format!("{}x{}", camera.width, camera.height);
+        eprintln!(
+            "{view} {name}: max error {error:.2e}, coverage {sum:.4} px (reference {expected_sum:.4})"
+        );
+        assert!(
+            expected_sum > 10.0,
+            "{view} {name}: the scene is barely in view"
+        );
+        assert!(
+            error < MAX_ERROR,
+            "{view} {name}: max error {error} over {MAX_ERROR}"
+        );
+        assert!(
+            (sum - expected_sum).abs() <= 1e-3 * expected_sum,
+            "{view} {name}: coverage sums to {sum} px, the reference to {expected_sum}"
+        );
+    }
+    // Moving the scene and the view together must change nothing but the last bits of
+    // the f32 corners (here it changes nothing at all).
+    let far = Camera {
+        world_offset: DVec2::new(1e5, -1e5),
+        ..base
+    };
+    let shift = max_abs_difference(
+        &render(scene, &far).unwrap(),
+        &render(scene, &base).unwrap(),
+    );
+    eprintln!(
+        "{}x{} far world offset vs none: max difference {shift:.2e}",
+        base.width, base.height
+    );
+    assert!(shift < 1e-3, "the world offset changed coverage by {shift}");
+}
+
+#[test]
+fn bounds_matches_the_reference_on_an_odd_sized_target() {
+    check_against_reference(
+        &small_scene(),
+        Camera::new(37, 23, 10.0, DVec2::new(2.3, 17.6)),
+    );
+}
+
+#[test]
+fn bounds_matches_the_reference_on_a_target_with_padded_rows() {
+    check_against_reference(
+        &wide_scene(),
+        Camera::new(301, 41, 24.0, DVec2::new(0.45, 31.3)),
+    );
+}
+
+#[test]
+fn each_frame_starts_from_a_clear_target() {
+    let gpu = gpu();
+    let camera = Camera::new(37, 23, 10.0, DVec2::new(2.3, 17.6));
+    let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
+    let mut method = methods::create("bounds", &[]).unwrap();
+    method.prepare(gpu, &small_scene()).unwrap();
+    render_frame(gpu, method.as_mut(), &target, &camera).unwrap();
+    assert!(target.readback(gpu).unwrap().sum() > 10.0);
+    // The same method and target, now with nothing to draw.
+    method
+        .prepare(gpu, &Scene::from_outlines(1000.0, Vec::new()))
+        .unwrap();
+    render_frame(gpu, method.as_mut(), &target, &camera).unwrap();
+    assert_eq!(target.readback(gpu).unwrap().sum(), 0.0);
+}
+
+#[test]
+fn timestamps_give_finite_positive_frame_times() {
+    let gpu = gpu();
+    let camera = Camera::new(37, 23, 10.0, DVec2::new(2.3, 17.6));
+    let mut method = methods::create("bounds", &[]).unwrap();
+    method.prepare(gpu, &small_scene()).unwrap();
+    let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
+    assert!(
+        gpu.has_timestamps(),
+        "{} has no timestamp queries",
+        gpu.adapter_name()
+    );
+    let times = time_frames(gpu, method.as_mut(), &target, &camera, 2, 5)
+        .unwrap()
+        .unwrap();
+    eprintln!("{}: frame times {times:?} ms", gpu.adapter_name());
+    assert_eq!(times.len(), 5);
+    assert!(
+        times.iter().all(|t| t.is_finite() && *t > 0.0),
+        "frame times {times:?} ms"
+    );
+}
+
+#[test]
+fn a_target_larger_than_the_device_allows_is_an_input_error() {
+    let gpu = gpu();
+    let side = gpu.max_texture_side() + 1;
+    assert!(matches!(
+        CoverageTarget::new(gpu, side, 1),
+        Err(Error::Input(_))
+    ));
+}
