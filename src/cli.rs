@@ -1,0 +1,336 @@
+//! The command line. `glyphscope render` is the command every later issue and every
+//! outside check drives; it lives in the library so tests call exactly what users run.
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use clap::{Args, Parser, Subcommand};
+use glam::DVec2;
+use serde::Serialize;
+
+use crate::Error;
+use crate::camera::{Camera, MAX_IMAGE_SIDE, MAX_SIZE_PX_PER_EM};
+use crate::coverage::CoverageImage;
+use crate::font::Font;
+use crate::geometry::Rect;
+use crate::gpu::{self, CoverageTarget, GpuContext};
+use crate::methods;
+use crate::reference;
+use crate::scene::Scene;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "glyphscope",
+    version,
+    about = "Explore how GPUs draw glyphs from their outlines"
+)]
+pub struct Cli {
+    /// With no command, the interactive explorer opens.
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Render text or a glyph to an 8-bit grayscale PNG of linear coverage.
+    Render(RenderArgs),
+}
+
+#[derive(Args, Clone, Debug)]
+pub struct RenderArgs {
+    /// Font file (.ttf/.otf); the embedded DejaVu Sans when absent.
+    #[arg(long)]
+    pub font: Option<PathBuf>,
+    /// Text to shape; '\n' (or a literal backslash-n) starts a new line.
+    #[arg(
+        long,
+        required_unless_present = "glyph_id",
+        conflicts_with = "glyph_id"
+    )]
+    pub text: Option<String>,
+    /// One glyph by its id in the font.
+    #[arg(long)]
+    pub glyph_id: Option<u32>,
+    /// Size in pixels per em.
+    #[arg(long, allow_negative_numbers = true)]
+    pub size: f64,
+    /// reference, bounds, winding, sdf-cells, xor-stencil or tessellation.
+    #[arg(long)]
+    pub method: String,
+    /// Image width; by default the ink box plus a margin.
+    #[arg(long)]
+    pub width: Option<u32>,
+    /// Image height; by default the ink box plus a margin.
+    #[arg(long)]
+    pub height: Option<u32>,
+    /// Baseline origin X,Y in pixels; by default the ink box starts at the margin.
+    #[arg(long, value_parser = parse_pair, allow_hyphen_values = true)]
+    pub origin: Option<DVec2>,
+    /// Matrix A,B,C,D: X = ox + (A·x + B·y)·s, Y = oy − (C·x + D·y)·s.
+    #[arg(long, value_parser = parse_matrix, allow_hyphen_values = true)]
+    pub matrix: Option<[f64; 4]>,
+    /// Moves scene and view together by DX,DY pixels (the image must not change).
+    #[arg(long, value_parser = parse_pair, allow_hyphen_values = true)]
+    pub world_offset: Option<DVec2>,
+    /// Perspective tilt in degrees about the image's horizontal centre line.
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    pub tilt: f64,
+    /// Variable-font axis values, TAG=VALUE[,TAG=VALUE...] (e.g. wght=700).
+    #[arg(long, value_delimiter = ',', value_parser = parse_variation)]
+    pub variation: Vec<(String, f32)>,
+    /// Method parameter KEY=VALUE; repeat for several.
+    #[arg(long = "param", value_parser = parse_key_value)]
+    pub params: Vec<(String, String)>,
+    /// Output PNG.
+    #[arg(long)]
+    pub out: PathBuf,
+    /// Also write statistics as JSON.
+    #[arg(long)]
+    pub stats: Option<PathBuf>,
+}
+
+/// Margin around the ink box of a default frame, pixels.
+pub const FRAME_MARGIN_PX: f64 = 4.0;
+/// Frames timed for `gpu_ms`, after as many untimed warm-up frames (shaders compile
+/// lazily on the first frames).
+const TIMED_FRAMES: usize = 21;
+const WARMUP_FRAMES: usize = 5;
+
+/// What `render --stats` writes.
+#[derive(Clone, Debug, Serialize)]
+pub struct RenderStats {
+    pub method: String,
+    pub params: Vec<(String, String)>,
+    pub adapter: String,
+    /// Median GPU time of one frame after a warm-up; None for CPU methods.
+    pub gpu_ms: Option<f64>,
+    /// (min, max) of the timed frames.
+    pub gpu_ms_range: Option<(f64, f64)>,
+    /// Font outlines and scene for the reference; plus the method's GPU data for GPU
+    /// methods.
+    pub cpu_prepare_ms: f64,
+    /// The reference's rasterization time; None for GPU methods.
+    pub cpu_render_ms: Option<f64>,
+    pub gpu_bytes: u64,
+    pub width: u32,
+    pub height: u32,
+    pub size_px_per_em: f64,
+    pub instances: usize,
+    pub distinct_glyphs: usize,
+    /// Sum of coverage over the image, pixels.
+    pub covered_area_px: f64,
+}
+
+/// A rendered image and its statistics.
+pub struct Rendered {
+    pub image: CoverageImage,
+    pub stats: RenderStats,
+}
+
+/// Loads the font, applying `--variation` values.
+pub fn load_font(args: &RenderArgs) -> Result<Font, Error> {
+    let font = match &args.font {
+        Some(path) => Font::from_path(path)?,
+        None => Font::default_font(),
+    };
+    if args.variation.is_empty() {
+        Ok(font)
+    } else {
+        font.with_variations(&args.variation)
+    }
+}
+
+/// Builds the scene and camera that `args` describe, checking every input.
+pub fn scene_and_camera(args: &RenderArgs) -> Result<(Scene, Camera), Error> {
+    let size = args.size;
+    if !size.is_finite() || size <= 0.0 {
+        return Err(Error::Input(format!(
+            "--size must be a positive number of px/em, got {size}"
+        )));
+    }
+    if size > MAX_SIZE_PX_PER_EM {
+        return Err(Error::Input(format!(
+            "--size {size} is over the limit of {MAX_SIZE_PX_PER_EM}"
+        )));
+    }
+    if !methods::METHOD_NAMES.contains(&args.method.as_str()) {
+        return Err(Error::Input(format!(
+            "unknown method '{}'; choose one of: {}",
+            args.method,
+            methods::METHOD_NAMES.join(", ")
+        )));
+    }
+    let font = load_font(args)?;
+    let scene = match (&args.text, args.glyph_id) {
+        (Some(text), _) => Scene::from_text(&font, text)?,
+        (None, Some(id)) => Scene::from_glyph_id(&font, id)?,
+        (None, None) => return Err(Error::Input("give --text or --glyph-id".into())),
+    };
+    let mut camera = Camera::new(1, 1, size, DVec2::ZERO);
+    if let Some([a, b, c, d]) = args.matrix {
+        camera.matrix = Camera::matrix_from_rows(a, b, c, d);
+    }
+    camera.validate()?;
+    // The frame: ink bounds under the matrix, before any tilt (which turns about the
+    // frame's centre and so needs the frame first).
+    let ink = ink_bounds_in_image(&scene, &camera)?;
+    camera.origin = args
+        .origin
+        .unwrap_or(DVec2::splat(FRAME_MARGIN_PX) - ink.min);
+    let ink_max = ink.max + camera.origin;
+    let side = |given: Option<u32>, extent: f64, flag: &str| -> Result<u32, Error> {
+        if let Some(v) = given {
+            return Ok(v);
+        }
+        let v = (extent.max(0.0) + FRAME_MARGIN_PX).ceil();
+        if v > f64::from(MAX_IMAGE_SIDE) {
+            return Err(Error::Input(format!(
+                "the text is {v} px {flag} at this size, over the limit of {MAX_IMAGE_SIDE}; \
+                 pass --width and --height to view part of it"
+            )));
+        }
+        Ok(v.max(1.0) as u32)
+    };
+    camera.width = side(args.width, ink_max.x, "wide")?;
+    camera.height = side(args.height, ink_max.y, "tall")?;
+    camera.world_offset = args.world_offset.unwrap_or(DVec2::ZERO);
+    camera.tilt_deg = args.tilt;
+    camera.validate()?;
+    // Fails early, with a clear message, if the tilt puts ink behind the eye.
+    ink_bounds_in_image(&scene, &camera)?;
+    Ok((scene, camera))
+}
+
+/// The scene's ink box in image pixels.
+fn ink_bounds_in_image(scene: &Scene, camera: &Camera) -> Result<Rect, Error> {
+    let mut bounds: Option<Rect> = None;
+    for instance in &scene.instances {
+        let to_image = camera.glyph_to_image(scene.units_per_em, instance.position);
+        let b = Camera::project_bounds(&to_image, &scene.glyphs[instance.glyph as usize].bounds)?;
+        bounds = Some(bounds.map_or(b, |r| r.union(b)));
+    }
+    bounds.ok_or_else(|| Error::Input("nothing to draw".into()))
+}
+
+/// Renders what `args` describe (nothing is written).
+pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
+    let start = Instant::now();
+    let (scene, camera) = scene_and_camera(args)?;
+    let scene_ms = ms_since(start);
+    let mut stats = RenderStats {
+        method: args.method.clone(),
+        params: args.params.clone(),
+        adapter: String::new(),
+        gpu_ms: None,
+        gpu_ms_range: None,
+        cpu_prepare_ms: scene_ms,
+        cpu_render_ms: None,
+        gpu_bytes: 0,
+        width: camera.width,
+        height: camera.height,
+        size_px_per_em: camera.size_px_per_em,
+        instances: scene.instances.len(),
+        distinct_glyphs: scene.glyphs.len(),
+        covered_area_px: 0.0,
+    };
+    let image = if args.method == "reference" {
+        methods::reject_unknown_params("reference", &args.params, &[])?;
+        stats.adapter = "cpu (exact reference rasterizer)".into();
+        let start = Instant::now();
+        let image = reference::rasterize(&scene, &camera)?;
+        stats.cpu_render_ms = Some(ms_since(start));
+        image
+    } else {
+        let mut method = methods::create(&args.method, &args.params)?;
+        let gpu = GpuContext::new()?;
+        stats.adapter = gpu.adapter_name();
+        let target = CoverageTarget::new(&gpu, camera.width, camera.height)?;
+        let start = Instant::now();
+        method.prepare(&gpu, &scene)?;
+        stats.cpu_prepare_ms += ms_since(start);
+        stats.gpu_bytes = method.gpu_bytes();
+        gpu::render_frame(&gpu, method.as_mut(), &target, &camera)?;
+        let image = target.readback(&gpu)?;
+        if let Some(mut times) = gpu::time_frames(
+            &gpu,
+            method.as_mut(),
+            &target,
+            &camera,
+            WARMUP_FRAMES,
+            TIMED_FRAMES,
+        )? {
+            times.sort_by(f64::total_cmp);
+            stats.gpu_ms = Some(times[times.len() / 2]);
+            stats.gpu_ms_range = Some((times[0], times[times.len() - 1]));
+        }
+        image
+    };
+    stats.covered_area_px = image.sum();
+    Ok(Rendered { image, stats })
+}
+
+/// `glyphscope render`: renders, then writes the PNG and, if asked, the statistics.
+pub fn run_render(args: &RenderArgs) -> Result<(), Error> {
+    let rendered = render(args)?;
+    rendered.image.save_png(&args.out)?;
+    if let Some(path) = &args.stats {
+        let json = serde_json::to_string_pretty(&rendered.stats).expect("stats serialize");
+        std::fs::write(path, json + "\n")
+            .map_err(|e| Error::Output(format!("cannot write '{}': {e}", path.display())))?;
+    }
+    Ok(())
+}
+
+fn ms_since(start: Instant) -> f64 {
+    start.elapsed().as_secs_f64() * 1e3
+}
+
+fn parse_number(s: &str) -> Result<f64, String> {
+    let v: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{s}' is not a number"))?;
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(format!("'{s}' is not a finite number"))
+    }
+}
+
+fn parse_numbers<const N: usize>(s: &str) -> Result<[f64; N], String> {
+    let parts: Vec<&str> = s.split(',').collect();
+    if parts.len() != N {
+        return Err(format!("expected {N} comma-separated numbers, got '{s}'"));
+    }
+    let mut out = [0.0; N];
+    for (o, p) in out.iter_mut().zip(parts) {
+        *o = parse_number(p)?;
+    }
+    Ok(out)
+}
+
+fn parse_pair(s: &str) -> Result<DVec2, String> {
+    parse_numbers::<2>(s).map(DVec2::from_array)
+}
+
+fn parse_matrix(s: &str) -> Result<[f64; 4], String> {
+    parse_numbers::<4>(s)
+}
+
+fn parse_key_value(s: &str) -> Result<(String, String), String> {
+    match s.split_once('=') {
+        Some((k, v)) if !k.trim().is_empty() => Ok((k.trim().to_owned(), v.trim().to_owned())),
+        _ => Err(format!("expected KEY=VALUE, got '{s}'")),
+    }
+}
+
+fn parse_variation(s: &str) -> Result<(String, f32), String> {
+    let (tag, value) = parse_key_value(s)?;
+    if tag.len() != 4 || !tag.is_ascii() {
+        return Err(format!(
+            "axis tag '{tag}' must be 4 ASCII characters (e.g. wght)"
+        ));
+    }
+    let value = parse_number(&value)?;
+    Ok((tag, value as f32))
+}

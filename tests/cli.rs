@@ -1,0 +1,276 @@
+//! `glyphscope render` as a user runs it: outputs for good input, one clear line and
+//! exit code 2 for bad input, never a panic, never an image.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn bin() -> Command {
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_glyphscope"));
+    cmd.current_dir(env!("CARGO_MANIFEST_DIR"));
+    cmd
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("glyphscope-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+fn run(args: &[&str]) -> Output {
+    bin().args(args).output().expect("the binary runs")
+}
+
+/// Runs `render` with `args` plus an output path and checks it fails cleanly, with a
+/// message containing `expect`.
+fn fails(name: &str, args: &[&str], expect: &str) {
+    let out = scratch(&format!("{name}.png"));
+    let _ = std::fs::remove_file(&out);
+    let mut all = vec!["render"];
+    all.extend_from_slice(args);
+    all.extend_from_slice(&["--out", out.to_str().unwrap()]);
+    let result = run(&all);
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert_eq!(
+        result.status.code(),
+        Some(2),
+        "{name}: exit {:?}, stderr: {stderr}",
+        result.status
+    );
+    assert!(!stderr.contains("panicked"), "{name}: panic: {stderr}");
+    assert!(
+        stderr.to_lowercase().contains(&expect.to_lowercase()),
+        "{name}: stderr lacks {expect:?}: {stderr}"
+    );
+    assert!(!out.exists(), "{name}: an image was written");
+}
+
+#[test]
+fn reference_render_writes_png_and_stats() {
+    let out = scratch("ok.png");
+    let stats = scratch("ok.json");
+    let result = run(&[
+        "render",
+        "--text",
+        "Hello\\nworld",
+        "--size",
+        "24",
+        "--method",
+        "reference",
+        "--matrix",
+        "1,0.2,0,1",
+        "--out",
+        out.to_str().unwrap(),
+        "--stats",
+        stats.to_str().unwrap(),
+    ]);
+    assert!(
+        result.status.success(),
+        "{}",
+        String::from_utf8_lossy(&result.stderr)
+    );
+    let img = image::open(&out).unwrap();
+    assert_eq!(img.color(), image::ColorType::L8, "8-bit grayscale");
+    let gray = img.to_luma8();
+    assert!(gray.pixels().any(|p| p.0[0] == 255) && gray.pixels().any(|p| p.0[0] == 0));
+    // The default frame keeps the margin free of ink.
+    assert!((0..gray.width()).all(|x| gray.get_pixel(x, 0).0[0] == 0));
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
+    assert_eq!(json["method"], "reference");
+    assert!(json["gpu_ms"].is_null());
+    assert!(json["cpu_prepare_ms"].as_f64().unwrap() >= 0.0);
+    assert_eq!(json["gpu_bytes"], 0);
+    assert_eq!(json["width"], gray.width());
+    assert!(json["adapter"].as_str().unwrap().contains("cpu"));
+}
+
+#[test]
+fn glyph_id_fonts_and_variations() {
+    for (font, extra) in [
+        ("fonts/lmroman10-regular.otf", vec!["--glyph-id", "40"]),
+        (
+            "fonts/Inter-roman.var.ttf",
+            vec!["--text", "W", "--variation", "wght=900"],
+        ),
+    ] {
+        let out = scratch("font.png");
+        let mut args = vec![
+            "render",
+            "--font",
+            font,
+            "--size",
+            "40",
+            "--method",
+            "reference",
+        ];
+        args.extend(extra);
+        args.extend(["--out", out.to_str().unwrap()]);
+        let result = run(&args);
+        assert!(
+            result.status.success(),
+            "{font}: {}",
+            String::from_utf8_lossy(&result.stderr)
+        );
+        assert!(
+            image::open(&out)
+                .unwrap()
+                .to_luma8()
+                .pixels()
+                .any(|p| p.0[0] > 0)
+        );
+    }
+}
+
+#[test]
+fn heavier_weight_covers_more() {
+    let area = |wght: &str| {
+        let stats = scratch(&format!("w{wght}.json"));
+        let out = scratch(&format!("w{wght}.png"));
+        let result = run(&[
+            "render",
+            "--font",
+            "fonts/Inter-roman.var.ttf",
+            "--text",
+            "Wo",
+            "--size",
+            "64",
+            "--width",
+            "160",
+            "--height",
+            "90",
+            "--origin",
+            "5,70",
+            "--variation",
+            &format!("wght={wght}"),
+            "--method",
+            "reference",
+            "--out",
+            out.to_str().unwrap(),
+            "--stats",
+            stats.to_str().unwrap(),
+        ]);
+        assert!(result.status.success());
+        let json: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
+        json["covered_area_px"].as_f64().unwrap()
+    };
+    assert!(area("900") > area("100") * 1.5);
+}
+
+#[test]
+fn bad_input_fails_cleanly() {
+    let garbage = scratch("garbage.ttf");
+    std::fs::write(&garbage, b"definitely not a font, just some bytes").unwrap();
+    let g = garbage.to_str().unwrap();
+    let base = ["--size", "20", "--method", "reference"];
+    let with = |extra: &[&'static str]| -> Vec<&'static str> {
+        let mut v: Vec<&'static str> = extra.to_vec();
+        v.extend_from_slice(&base);
+        v
+    };
+    fails(
+        "missing font",
+        &with(&["--font", "no/such/font.ttf", "--text", "a"]),
+        "cannot read font",
+    );
+    fails(
+        "corrupt font",
+        &[&["--font", g, "--text", "a"][..], &base].concat(),
+        "not a usable font",
+    );
+    fails("glyph id", &with(&["--glyph-id", "99999"]), "out of range");
+    fails("missing char", &with(&["--text", "a\u{E000}"]), "U+E000");
+    fails("empty text", &with(&["--text", ""]), "empty");
+    fails("blank text", &with(&["--text", "   "]), "empty");
+    for size in ["0", "-3", "nan", "inf", "5e9"] {
+        fails(
+            size,
+            &["--text", "a", "--method", "reference", "--size", size],
+            "size",
+        );
+    }
+    fails(
+        "huge image",
+        &with(&["--text", "a", "--width", "20000", "--height", "20"]),
+        "limit",
+    );
+    fails(
+        "huge default frame",
+        &["--text", "abc", "--size", "900000", "--method", "reference"],
+        "--width",
+    );
+    fails(
+        "unknown method",
+        &["--text", "a", "--size", "20", "--method", "magic"],
+        "unknown method",
+    );
+    fails(
+        "not yet",
+        &["--text", "a", "--size", "20", "--method", "winding"],
+        "not implemented yet",
+    );
+    fails(
+        "unknown param",
+        &with(&["--text", "a", "--param", "rays=2"]),
+        "takes no parameters",
+    );
+    fails(
+        "malformed param",
+        &with(&["--text", "a", "--param", "rays"]),
+        "KEY=VALUE",
+    );
+    fails(
+        "malformed origin",
+        &with(&["--text", "a", "--origin", "1,x"]),
+        "not a number",
+    );
+    fails(
+        "short matrix",
+        &with(&["--text", "a", "--matrix", "1,0,0"]),
+        "4 comma-separated",
+    );
+    fails(
+        "singular matrix",
+        &with(&["--text", "a", "--matrix", "1,1,1,1"]),
+        "singular",
+    );
+    fails("tilt", &with(&["--text", "a", "--tilt", "95"]), "tilt");
+    fails(
+        "no axis",
+        &with(&["--text", "a", "--variation", "wght=700"]),
+        "not variable",
+    );
+    fails(
+        "axis range",
+        &[
+            "--font",
+            "fonts/Inter-roman.var.ttf",
+            "--text",
+            "a",
+            "--size",
+            "20",
+            "--method",
+            "reference",
+            "--variation",
+            "wght=5000",
+        ],
+        "outside the axis range",
+    );
+    fails(
+        "unknown axis",
+        &[
+            "--font",
+            "fonts/Inter-roman.var.ttf",
+            "--text",
+            "a",
+            "--size",
+            "20",
+            "--method",
+            "reference",
+            "--variation",
+            "opsz=14",
+        ],
+        "has no variation axis 'opsz' (it has: wght)",
+    );
+    fails("no text", &base, "required");
+}
