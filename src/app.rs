@@ -85,7 +85,7 @@ impl Explorer {
                 let pixels = image
                     .data
                     .iter()
-                    .map(|&c| egui::Color32::from_black_alpha((c * 255.0).round() as u8));
+                    .map(|&c| egui::Color32::from_white_alpha((c * 255.0).round() as u8));
                 let color = egui::ColorImage::new(
                     [image.width as usize, image.height as usize],
                     pixels.collect(),
@@ -125,8 +125,10 @@ impl eframe::App for Explorer {
         self.refresh(ui.ctx());
         egui::CentralPanel::default().show(ui, |ui| {
             if let Some(texture) = &self.texture {
+                // Coverage is white alpha, tinted to whatever the theme draws text in.
+                let ink = ui.visuals().strong_text_color();
                 egui::ScrollArea::both().show(ui, |ui| {
-                    ui.image((texture.id(), texture.size_vec2()));
+                    ui.add(egui::Image::new((texture.id(), texture.size_vec2())).tint(ink));
                 });
             }
         });

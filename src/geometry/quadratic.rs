@@ -182,6 +182,26 @@ mod tests {
     }
 
     #[test]
+    fn latin_modern_cubics_at_the_default_tolerance() {
+        let font = crate::font::Font::shipped(1);
+        let tol = DEFAULT_QUAD_TOLERANCE_EM * font.units_per_em();
+        let mut checked = 0;
+        for c in "&Qag§".chars() {
+            let outline = font.outline(font.glyph_for_char(c).unwrap());
+            for s in outline
+                .segments()
+                .filter(|s| matches!(s, Segment::Cubic(..)))
+            {
+                let pieces = convert(s, tol);
+                let err = max_distance_to_cubic(&pieces, s, tol / 20.0);
+                assert!(err <= tol * 1.1, "{c:?}: {err} over {tol}");
+                checked += 1;
+            }
+        }
+        assert!(checked > 50, "only {checked} cubics");
+    }
+
+    #[test]
     fn piece_count_follows_the_closed_form_bound() {
         let c = cubic([(0.0, 0.0), (400.0, 800.0), (600.0, -800.0), (1000.0, 0.0)]);
         let coarse = convert(&c, 1.0).len();
