@@ -15,6 +15,7 @@ use crate::font::Font;
 use crate::geometry::Rect;
 use crate::gpu::{self, CoverageTarget, GpuContext};
 use crate::methods;
+use crate::metrics::{self, ErrorStats};
 use crate::reference;
 use crate::scene::Scene;
 
@@ -87,6 +88,10 @@ pub struct RenderArgs {
     /// Also write statistics as JSON.
     #[arg(long)]
     pub stats: Option<PathBuf>,
+    /// Also render the reference and write the signed error (red: too much coverage,
+    /// blue: too little, full intensity at 0.5); the statistics gain the error figures.
+    #[arg(long)]
+    pub error_image: Option<PathBuf>,
 }
 
 /// Margin around the ink box of a default frame, pixels.
@@ -119,11 +124,14 @@ pub struct RenderStats {
     pub distinct_glyphs: usize,
     /// Sum of coverage over the image, pixels.
     pub covered_area_px: f64,
+    /// Error against the reference, when `--error-image` asked for it.
+    pub error: Option<ErrorStats>,
 }
 
-/// A rendered image and its statistics.
+/// A rendered image, its statistics, and the reference it was compared with (if any).
 pub struct Rendered {
     pub image: CoverageImage,
+    pub reference: Option<CoverageImage>,
     pub stats: RenderStats,
 }
 
@@ -232,6 +240,7 @@ pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
         instances: scene.instances.len(),
         distinct_glyphs: scene.glyphs.len(),
         covered_area_px: 0.0,
+        error: None,
     };
     let image = if args.method == "reference" {
         methods::reject_unknown_params("reference", &args.params, &[])?;
@@ -266,13 +275,30 @@ pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
         image
     };
     stats.covered_area_px = image.sum();
-    Ok(Rendered { image, stats })
+    let reference = match &args.error_image {
+        Some(_) if args.method == "reference" => Some(image.clone()),
+        Some(_) => Some(reference::rasterize(&scene, &camera)?),
+        None => None,
+    };
+    if let Some(reference) = &reference {
+        stats.error = Some(metrics::compare(&image, reference)?);
+    }
+    Ok(Rendered {
+        image,
+        reference,
+        stats,
+    })
 }
 
 /// `glyphscope render`: renders, then writes the PNG and, if asked, the statistics.
 pub fn run_render(args: &RenderArgs) -> Result<(), Error> {
     let rendered = render(args)?;
     rendered.image.save_png(&args.out)?;
+    if let (Some(path), Some(reference)) = (&args.error_image, &rendered.reference) {
+        metrics::error_image(&rendered.image, reference, 0.5)
+            .save(path)
+            .map_err(|e| Error::Output(format!("cannot write '{}': {e}", path.display())))?;
+    }
     if let Some(path) = &args.stats {
         let json = serde_json::to_string_pretty(&rendered.stats).expect("stats serialize");
         std::fs::write(path, json + "\n")

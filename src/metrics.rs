@@ -106,6 +106,14 @@ mod tests {
     }
 
     #[test]
+    fn error_image_is_signed() {
+        let e = error_image(&img(&[0.75, 0.25, 0.5]), &img(&[0.5, 0.5, 0.5]), 0.5);
+        assert_eq!(e.get_pixel(0, 0).0, [128, 0, 0], "over-coverage is red");
+        assert_eq!(e.get_pixel(1, 0).0, [0, 0, 128], "under-coverage is blue");
+        assert_eq!(e.get_pixel(2, 0).0, [0, 0, 0]);
+    }
+
+    #[test]
     fn size_mismatch_is_an_error() {
         assert!(compare(&img(&[0.0]), &img(&[0.0, 0.0])).is_err());
     }

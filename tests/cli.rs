@@ -85,6 +85,46 @@ fn reference_render_writes_png_and_stats() {
 }
 
 #[test]
+fn error_image_compares_with_the_reference() {
+    let (out, err, stats) = (scratch("e.png"), scratch("e-err.png"), scratch("e.json"));
+    let result = run(&[
+        "render",
+        "--text",
+        "Ag",
+        "--size",
+        "30",
+        "--method",
+        "bounds",
+        "--out",
+        out.to_str().unwrap(),
+        "--error-image",
+        err.to_str().unwrap(),
+        "--stats",
+        stats.to_str().unwrap(),
+    ]);
+    assert!(
+        result.status.success(),
+        "{}",
+        String::from_utf8_lossy(&result.stderr)
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
+    // Glyph boxes cover far more than the glyphs: red, and a large error.
+    let error = &json["error"];
+    assert!(error["mae_255"].as_f64().unwrap() > 10.0, "{error}");
+    assert!(error["pixels_over_05"].as_u64().unwrap() > 0);
+    let diff = image::open(&err).unwrap().to_rgb8();
+    assert!(
+        diff.pixels().any(|p| p.0[0] > 200 && p.0[2] == 0),
+        "no red where boxes over-cover"
+    );
+    assert!(
+        json["gpu_ms"].as_f64().unwrap() > 0.0,
+        "lavapipe has timestamps"
+    );
+}
+
+#[test]
 fn glyph_id_fonts_and_variations() {
     for (font, extra) in [
         ("fonts/lmroman10-regular.otf", vec!["--glyph-id", "40"]),
