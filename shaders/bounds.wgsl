@@ -1,4 +1,4 @@
-// Method `bounds`: each glyph instance's control-point rectangle, one quad per instance,
+// Method `bounds` (compiled after common.wgsl): each glyph instance's control-point rectangle, one quad per instance,
 // with exact box-filter coverage.
 //
 // The rectangle's image is a convex quadrilateral (under any affine map, and under the
@@ -55,10 +55,6 @@ fn vs_main(@builtin(vertex_index) vertex: u32, instance: Instance) -> Varyings {
     out.corners01 = instance.corners01;
     out.corners23 = instance.corners23;
     return out;
-}
-
-fn cross2(a: vec2<f32>, b: vec2<f32>) -> f32 {
-    return a.x * b.y - a.y * b.x;
 }
 
 // Area of the unit square [0, 1]² inside the convex quadrilateral `quad` (either

@@ -5,6 +5,8 @@
 //! method is measured exactly as it is checked.
 
 mod context;
+pub mod msaa;
+pub mod shaders;
 mod target;
 mod timing;
 

@@ -70,10 +70,7 @@ const QUAD_ATTRIBUTES: [wgpu::VertexAttribute; 3] =
 impl QuadPipeline {
     fn new(gpu: &GpuContext) -> QuadPipeline {
         let device = &gpu.device;
-        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("bounds.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(include_str!("../../shaders/bounds.wgsl").into()),
-        });
+        let shader = crate::gpu::shaders::create_module(device, "bounds.wgsl");
         let bind_group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("bounds view"),
             entries: &[wgpu::BindGroupLayoutEntry {

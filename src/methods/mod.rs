@@ -85,3 +85,4 @@ pub fn reject_unknown_params(method: &str, params: &Params, known: &[&str]) -> R
 }
 
 pub mod bounds;
+pub mod instances;

@@ -1,0 +1,71 @@
+// Shared by every method shader (prepended to each one by `gpu::shaders`).
+//
+// Conventions: a glyph's local coordinates are its font units, y up, origin at its pen
+// position. Image coordinates are pixels, y down, pixel (i, j) covering [i, i+1) × [j, j+1).
+// `to_image` maps local → image as a homography (column vectors, w in the last row); it is
+// composed on the CPU in f64, relative to the glyph and the view, so its entries are small.
+
+struct GlyphInstance {
+    to_image: mat3x3<f32>,
+    to_local: mat3x3<f32>,
+    // Index of the distinct glyph this instance draws.
+    glyph: u32,
+}
+
+struct Frame {
+    // Target size in pixels.
+    size: vec2<f32>,
+}
+
+// A homogeneous image point (X·w, Y·w, w) → clip space, keeping w so that varyings are
+// interpolated perspective-correctly.
+fn image_to_clip(h: vec3<f32>, size: vec2<f32>) -> vec4<f32> {
+    return vec4<f32>(2.0 * h.x / size.x - h.z, h.z - 2.0 * h.y / size.y, 0.0, h.z);
+}
+
+fn project(m: mat3x3<f32>, p: vec2<f32>) -> vec2<f32> {
+    let h = m * vec3<f32>(p, 1.0);
+    return h.xy / h.z;
+}
+
+// Corner `k` (0: min, 1: (max.x, min.y), 2: max, 3: (min.x, max.y)) of a local rectangle.
+fn rect_corner(rect_min: vec2<f32>, rect_max: vec2<f32>, k: u32) -> vec2<f32> {
+    let pick = vec2<f32>(f32(k == 1u || k == 2u), f32(k >= 2u));
+    return mix(rect_min, rect_max, pick);
+}
+
+// Corner `k` of the local rectangle, moved so that the image of the rectangle grows by
+// exactly what a pixel can reach: each edge moves out by the support distance of the
+// pixel square along its normal, ½(|nx| + |ny|) — ½ px for an axis-aligned edge, ½√2 at
+// 45° — plus `margin` pixels. Every pixel whose square touches the rectangle then has its
+// centre inside the grown quad, under any rotation, skew or perspective, with no fixed
+// em margin wasting fill. Returns the moved corner in local coordinates.
+fn dilated_corner(inst: GlyphInstance, rect_min: vec2<f32>, rect_max: vec2<f32>, k: u32, margin: f32) -> vec2<f32> {
+    let previous = project(inst.to_image, rect_corner(rect_min, rect_max, (k + 3u) % 4u));
+    let here = project(inst.to_image, rect_corner(rect_min, rect_max, k));
+    let next = project(inst.to_image, rect_corner(rect_min, rect_max, (k + 1u) % 4u));
+    let opposite = project(inst.to_image, rect_corner(rect_min, rect_max, (k + 2u) % 4u));
+    // The image's winding (mirroring matrices and the y flip reverse it) says which side
+    // of each edge is outside.
+    let turn = sign(cross2(here - previous, next - here) + cross2(opposite - next, previous - opposite));
+    let n_in = outward_normal(here - previous, turn);
+    let n_out = outward_normal(next - here, turn);
+    let d_in = margin + 0.5 * (abs(n_in.x) + abs(n_in.y));
+    let d_out = margin + 0.5 * (abs(n_out.x) + abs(n_out.y));
+    // Move the corner to where both shifted edges meet: n_in·Δ = d_in, n_out·Δ = d_out.
+    let det = cross2(n_in, n_out);
+    var delta = n_in * d_in + n_out * d_out;
+    if abs(det) > 1e-3 {
+        delta = vec2<f32>(d_in * n_out.y - d_out * n_in.y, d_out * n_in.x - d_in * n_out.x) / det;
+    }
+    return project(inst.to_local, here + delta);
+}
+
+fn cross2(a: vec2<f32>, b: vec2<f32>) -> f32 {
+    return a.x * b.y - a.y * b.x;
+}
+
+fn outward_normal(edge: vec2<f32>, turn: f32) -> vec2<f32> {
+    let length = max(length(edge), 1e-30);
+    return turn * vec2<f32>(edge.y, -edge.x) / length;
+}

@@ -1,0 +1,116 @@
+//! Per-instance data for the methods that draw each glyph instance through its own
+//! transform (`GlyphInstance` in `shaders/common.wgsl`): the homography from the glyph's
+//! local font units to image pixels, its inverse, and which distinct glyph it draws.
+//!
+//! Rewritten every frame, since the camera moves; composed in f64 and rounded to f32
+//! only once it is relative to the glyph and the view, so a far-away world position
+//! never reaches the GPU.
+
+use glam::{DMat3, DVec2};
+
+use crate::Error;
+use crate::camera::Camera;
+use crate::geometry::Rect;
+use crate::gpu::GpuContext;
+use crate::scene::Scene;
+
+/// `GlyphInstance` as WGSL lays it out in a storage buffer (mat3x3 columns are padded
+/// to 16 bytes).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct GpuInstance {
+    to_image: [[f32; 4]; 3],
+    to_local: [[f32; 4]; 3],
+    glyph: u32,
+    _pad: [u32; 3],
+}
+
+fn columns(m: &DMat3) -> [[f32; 4]; 3] {
+    [m.x_axis, m.y_axis, m.z_axis].map(|c| [c.x as f32, c.y as f32, c.z as f32, 0.0])
+}
+
+/// The scene's instances on the GPU, culled to the view each frame.
+pub struct Instances {
+    units_per_em: f64,
+    /// (pen position, distinct glyph index, local bounds) per instance.
+    placed: Vec<(DVec2, u32, Rect)>,
+    staging: Vec<GpuInstance>,
+    buffer: wgpu::Buffer,
+    /// `Frame` of `common.wgsl`: the target size.
+    frame: wgpu::Buffer,
+}
+
+impl Instances {
+    pub fn new(gpu: &GpuContext, scene: &Scene) -> Instances {
+        let placed: Vec<_> = scene
+            .instances
+            .iter()
+            .map(|i| (i.position, i.glyph, scene.glyphs[i.glyph as usize].bounds))
+            .collect();
+        let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("glyph instances"),
+            // A binding cannot be empty.
+            size: (placed.len().max(1) * size_of::<GpuInstance>()) as u64,
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let frame = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("frame"),
+            size: size_of::<[f32; 2]>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        Instances {
+            units_per_em: scene.units_per_em,
+            staging: Vec::with_capacity(placed.len()),
+            placed,
+            buffer,
+            frame,
+        }
+    }
+
+    /// Writes this frame's transforms for the instances whose bounds, grown by `margin`
+    /// pixels plus a pixel, reach the view; returns how many were written (draw that
+    /// many instances). Fails if the tilt puts an instance behind the eye.
+    pub fn update(&mut self, gpu: &GpuContext, camera: &Camera, margin: f64) -> Result<u32, Error> {
+        let view = Rect {
+            min: DVec2::splat(-1.0 - margin),
+            max: DVec2::new(f64::from(camera.width), f64::from(camera.height)) + 1.0 + margin,
+        };
+        self.staging.clear();
+        for &(pen, glyph, bounds) in &self.placed {
+            let to_image = camera.glyph_to_image(self.units_per_em, pen);
+            if !Camera::project_bounds(&to_image, &bounds)?.overlaps(&view) {
+                continue;
+            }
+            self.staging.push(GpuInstance {
+                to_image: columns(&to_image),
+                to_local: columns(&to_image.inverse()),
+                glyph,
+                _pad: [0; 3],
+            });
+        }
+        let size = [camera.width as f32, camera.height as f32];
+        gpu.queue
+            .write_buffer(&self.frame, 0, bytemuck::cast_slice(&size));
+        if !self.staging.is_empty() {
+            gpu.queue
+                .write_buffer(&self.buffer, 0, bytemuck::cast_slice(&self.staging));
+        }
+        Ok(self.staging.len() as u32)
+    }
+
+    /// The `array<GlyphInstance>` storage buffer.
+    pub fn buffer(&self) -> &wgpu::Buffer {
+        &self.buffer
+    }
+
+    /// The `Frame` uniform buffer.
+    pub fn frame(&self) -> &wgpu::Buffer {
+        &self.frame
+    }
+
+    pub fn bytes(&self) -> u64 {
+        self.buffer.size() + self.frame.size()
+    }
+}
