@@ -69,3 +69,14 @@ fn outward_normal(edge: vec2<f32>, turn: f32) -> vec2<f32> {
     let length = max(length(edge), 1e-30);
     return turn * vec2<f32>(edge.y, -edge.x) / length;
 }
+
+// The cost heat map's colour scale, shared by every method that draws one: t in [0, 1]
+// from dark blue through green and yellow to white (monotone in lightness, so it reads
+// in greyscale too).
+fn heat_color(t: f32) -> vec3<f32> {
+    let x = clamp(t, 0.0, 1.0);
+    let r = clamp(1.8 * x - 0.5, 0.0, 1.0);
+    let g = clamp(1.6 * x - 0.1, 0.0, 1.0) * (0.85 + 0.15 * x);
+    let b = clamp(0.55 - 1.2 * abs(x - 0.25), 0.0, 1.0) + clamp(2.5 * x - 1.5, 0.0, 1.0);
+    return vec3<f32>(r, g, min(b, 1.0));
+}

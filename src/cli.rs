@@ -82,7 +82,8 @@ pub struct RenderArgs {
     /// Method parameter KEY=VALUE; repeat for several.
     #[arg(long = "param", value_parser = parse_key_value)]
     pub params: Vec<(String, String)>,
-    /// Output PNG.
+    /// Output PNG: grayscale coverage, or the overlay's picture in colour when the
+    /// `overlay` parameter is given.
     #[arg(long)]
     pub out: PathBuf,
     /// Also write statistics as JSON.
@@ -126,11 +127,15 @@ pub struct RenderStats {
     pub covered_area_px: f64,
     /// Error against the reference, when `--error-image` asked for it.
     pub error: Option<ErrorStats>,
+    /// Curves evaluated per covered pixel, for methods with that notion.
+    pub curves_per_pixel: Option<methods::CurveCost>,
 }
 
 /// A rendered image, its statistics, and the reference it was compared with (if any).
 pub struct Rendered {
     pub image: CoverageImage,
+    /// The overlay picture, when the `overlay` parameter asked for one.
+    pub overlay: Option<image::RgbImage>,
     pub reference: Option<CoverageImage>,
     pub stats: RenderStats,
 }
@@ -241,7 +246,9 @@ pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
         distinct_glyphs: scene.glyphs.len(),
         covered_area_px: 0.0,
         error: None,
+        curves_per_pixel: None,
     };
+    let mut overlay = None;
     let image = if args.method == "reference" {
         methods::reject_unknown_params("reference", &args.params, &[])?;
         stats.adapter = "cpu (exact reference rasterizer)".into();
@@ -260,6 +267,10 @@ pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
         stats.gpu_bytes = method.gpu_bytes();
         gpu::render_frame(&gpu, method.as_mut(), &target, &camera)?;
         let image = target.readback(&gpu)?;
+        if methods::param(&args.params, "overlay").is_some_and(|v| v != "none") {
+            overlay = Some(target.readback_color(&gpu)?);
+        }
+        stats.curves_per_pixel = method.curves_per_pixel(&gpu, &camera)?;
         if let Some(mut times) = gpu::time_frames(
             &gpu,
             method.as_mut(),
@@ -285,6 +296,7 @@ pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
     }
     Ok(Rendered {
         image,
+        overlay,
         reference,
         stats,
     })
@@ -293,7 +305,13 @@ pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
 /// `glyphscope render`: renders, then writes the PNG and, if asked, the statistics.
 pub fn run_render(args: &RenderArgs) -> Result<(), Error> {
     let rendered = render(args)?;
-    rendered.image.save_png(&args.out)?;
+    match &rendered.overlay {
+        // An overlay is a picture, not coverage: it is written in colour.
+        Some(picture) => picture
+            .save(&args.out)
+            .map_err(|e| Error::Output(format!("cannot write '{}': {e}", args.out.display())))?,
+        None => rendered.image.save_png(&args.out)?,
+    }
     if let (Some(path), Some(reference)) = (&args.error_image, &rendered.reference) {
         metrics::error_image(&rendered.image, reference, 0.5)
             .save(path)

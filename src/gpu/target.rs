@@ -58,6 +58,28 @@ impl CoverageTarget {
     /// Copies the coverage (alpha) back as f32, clamped to [0, 1] like the reference:
     /// methods that add coverage up may overshoot where instances overlap.
     pub fn readback(&self, gpu: &GpuContext) -> Result<CoverageImage, Error> {
+        let texels = self.read_texels(gpu)?;
+        Ok(CoverageImage {
+            width: self.width,
+            height: self.height,
+            data: texels.iter().map(|t| t[3].clamp(0.0, 1.0)).collect(),
+        })
+    }
+
+    /// Copies the overlay picture (rgb, premultiplied, over black) back as 8-bit sRGB-less
+    /// RGB, clamped.
+    pub fn readback_color(&self, gpu: &GpuContext) -> Result<image::RgbImage, Error> {
+        let texels = self.read_texels(gpu)?;
+        let bytes = texels
+            .iter()
+            .flat_map(|t| [t[0], t[1], t[2]])
+            .map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8)
+            .collect();
+        Ok(image::RgbImage::from_raw(self.width, self.height, bytes).expect("size matches"))
+    }
+
+    /// Every texel as f32 rgba, row-major.
+    fn read_texels(&self, gpu: &GpuContext) -> Result<Vec<[f32; 4]>, Error> {
         let row_bytes = self.width * Self::TEXEL_BYTES;
         // Buffer rows of a texture copy must start on 256-byte boundaries.
         let padded_row_bytes = row_bytes.next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
@@ -92,19 +114,17 @@ impl CoverageTarget {
             gpu.queue.submit([encoder.finish()]);
             gpu.read_buffer(&buffer)
         })?;
-
-        let mut image = CoverageImage::new(self.width, self.height);
-        let rows = bytes.chunks_exact(padded_row_bytes as usize);
-        for (out_row, row) in image.data.chunks_exact_mut(self.width as usize).zip(rows) {
-            for (out, texel) in out_row
-                .iter_mut()
-                .zip(row.chunks_exact(Self::TEXEL_BYTES as usize))
-            {
-                // rgba, two bytes each, little-endian: alpha is the last pair.
-                let alpha = half::f16::from_le_bytes([texel[6], texel[7]]);
-                *out = alpha.to_f32().clamp(0.0, 1.0);
-            }
+        let mut texels = Vec::with_capacity(self.width as usize * self.height as usize);
+        for row in bytes.chunks_exact(padded_row_bytes as usize) {
+            // rgba, two bytes each, little-endian.
+            texels.extend(
+                row[..row_bytes as usize]
+                    .chunks_exact(Self::TEXEL_BYTES as usize)
+                    .map(|t| {
+                        [0, 2, 4, 6].map(|i| half::f16::from_le_bytes([t[i], t[i + 1]]).to_f32())
+                    }),
+            );
         }
-        Ok(image)
+        Ok(texels)
     }
 }

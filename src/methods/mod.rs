@@ -32,6 +32,104 @@ pub trait Method {
 
     /// GPU memory held for the prepared scene, bytes.
     fn gpu_bytes(&self) -> u64;
+
+    /// The overlays this method can draw (chosen with the `overlay` parameter).
+    fn overlays(&self) -> &'static [Overlay] {
+        &[]
+    }
+
+    /// Curves evaluated per covered pixel in a frame seen by `camera`, for methods that
+    /// evaluate curves per pixel; measured by the method itself (it may render a pass of
+    /// its own to count them).
+    fn curves_per_pixel(
+        &mut self,
+        _gpu: &GpuContext,
+        _camera: &Camera,
+    ) -> Result<Option<CurveCost>, Error> {
+        Ok(None)
+    }
+}
+
+/// Curves a method evaluated per pixel with nonzero coverage.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct CurveCost {
+    pub mean: f64,
+    pub max: u32,
+}
+
+/// A debug picture a method draws instead of plain coverage. With an overlay on, the
+/// target's rgb holds the complete picture to show (premultiplied, over black) and its
+/// alpha still holds coverage.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Overlay {
+    /// Pixels where the two nearest curves' distances tie (the seed's purple regions).
+    EqualDistance,
+    /// Cell borders, each cell tinted by how many curves it lists.
+    CellGrid,
+    /// Pixels near each curve tinted by its 3-bit sign class for the ray through them.
+    CurveClasses,
+    /// Curves evaluated per pixel, on a colour scale.
+    CostHeatMap,
+    /// Triangles as wireframe, by kind.
+    TriangleWireframe,
+    /// Where curves were subdivided.
+    SubdivisionPoints,
+}
+
+impl Overlay {
+    pub const ALL: [Overlay; 6] = [
+        Overlay::EqualDistance,
+        Overlay::CellGrid,
+        Overlay::CurveClasses,
+        Overlay::CostHeatMap,
+        Overlay::TriangleWireframe,
+        Overlay::SubdivisionPoints,
+    ];
+
+    /// The value `--param overlay=` takes.
+    pub fn name(self) -> &'static str {
+        match self {
+            Overlay::EqualDistance => "purple",
+            Overlay::CellGrid => "cells",
+            Overlay::CurveClasses => "classes",
+            Overlay::CostHeatMap => "cost",
+            Overlay::TriangleWireframe => "wireframe",
+            Overlay::SubdivisionPoints => "points",
+        }
+    }
+}
+
+/// The `overlay` parameter's value among `supported` (None for absent or `none`).
+pub fn parse_overlay(
+    method: &str,
+    value: Option<&str>,
+    supported: &[Overlay],
+) -> Result<Option<Overlay>, Error> {
+    match value {
+        None | Some("none") => Ok(None),
+        Some(v) => supported
+            .iter()
+            .copied()
+            .find(|o| o.name() == v)
+            .map(Some)
+            .ok_or_else(|| {
+                let names: Vec<_> = supported.iter().map(|o| o.name()).collect();
+                Error::Input(format!(
+                    "method '{method}' has no overlay '{v}'; it has: none{}{}",
+                    if names.is_empty() { "" } else { ", " },
+                    names.join(", ")
+                ))
+            }),
+    }
+}
+
+/// The value of parameter `key`, if given (the last one wins).
+pub fn param<'a>(params: &'a Params, key: &str) -> Option<&'a str> {
+    params
+        .iter()
+        .rev()
+        .find(|(k, _)| k == key)
+        .map(|(_, v)| v.as_str())
 }
 
 /// A `--param KEY=VALUE` list, in the order given.
