@@ -18,6 +18,7 @@ use glam::{DMat2, DMat3, DVec2, DVec3};
 
 use crate::Error;
 use crate::geometry::{Rect, project};
+use crate::scene::Scene;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Camera {
@@ -147,6 +148,19 @@ impl Camera {
             DVec3::new(0.0, 0.0, 1.0),
         );
         from_centre * tilt * to_centre
+    }
+
+    /// The scene's ink box (its glyphs' control-point bounds) in image pixels, or an
+    /// error if the tilt puts part of it behind the eye.
+    pub fn ink_bounds(&self, scene: &Scene) -> Result<Rect, Error> {
+        let mut bounds: Option<Rect> = None;
+        for instance in &scene.instances {
+            let to_image = self.glyph_to_image(scene.units_per_em, instance.position);
+            let glyph = &scene.glyphs[instance.glyph as usize];
+            let b = Camera::project_bounds(&to_image, &glyph.bounds)?;
+            bounds = Some(bounds.map_or(b, |r| r.union(b)));
+        }
+        bounds.ok_or_else(|| Error::Input("nothing to draw".into()))
     }
 
     /// Image-space bounds of a local-space rectangle under `glyph_to_image`, or an error

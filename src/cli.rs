@@ -12,7 +12,6 @@ use crate::Error;
 use crate::camera::{Camera, MAX_IMAGE_SIDE, MAX_SIZE_PX_PER_EM};
 use crate::coverage::CoverageImage;
 use crate::font::Font;
-use crate::geometry::Rect;
 use crate::gpu::{self, CoverageTarget, GpuContext};
 use crate::methods;
 use crate::metrics::{self, ErrorStats};
@@ -186,7 +185,7 @@ pub fn scene_and_camera(args: &RenderArgs) -> Result<(Scene, Camera), Error> {
     camera.validate()?;
     // The frame: ink bounds under the matrix, before any tilt (which turns about the
     // frame's centre and so needs the frame first).
-    let ink = ink_bounds_in_image(&scene, &camera)?;
+    let ink = camera.ink_bounds(&scene)?;
     camera.origin = args
         .origin
         .unwrap_or(DVec2::splat(FRAME_MARGIN_PX) - ink.min);
@@ -210,19 +209,8 @@ pub fn scene_and_camera(args: &RenderArgs) -> Result<(Scene, Camera), Error> {
     camera.tilt_deg = args.tilt;
     camera.validate()?;
     // Fails early, with a clear message, if the tilt puts ink behind the eye.
-    ink_bounds_in_image(&scene, &camera)?;
+    camera.ink_bounds(&scene)?;
     Ok((scene, camera))
-}
-
-/// The scene's ink box in image pixels.
-fn ink_bounds_in_image(scene: &Scene, camera: &Camera) -> Result<Rect, Error> {
-    let mut bounds: Option<Rect> = None;
-    for instance in &scene.instances {
-        let to_image = camera.glyph_to_image(scene.units_per_em, instance.position);
-        let b = Camera::project_bounds(&to_image, &scene.glyphs[instance.glyph as usize].bounds)?;
-        bounds = Some(bounds.map_or(b, |r| r.union(b)));
-    }
-    bounds.ok_or_else(|| Error::Input("nothing to draw".into()))
 }
 
 /// Renders what `args` describe (nothing is written).

@@ -38,6 +38,18 @@ pub fn render_frame(
     })
 }
 
+/// Renders one frame of a prepared `method` into a new target the camera's size and
+/// reads its coverage back.
+pub fn render_image(
+    gpu: &GpuContext,
+    method: &mut dyn Method,
+    camera: &Camera,
+) -> Result<crate::coverage::CoverageImage, Error> {
+    let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
+    render_frame(gpu, method, &target, camera)?;
+    target.readback(gpu)
+}
+
 /// A frame needs a camera that can be drawn with, looking at exactly the target: the
 /// camera's image size fixes the projection (the tilt turns about the image centre).
 fn check_frame(target: &CoverageTarget, camera: &Camera) -> Result<(), Error> {

@@ -39,3 +39,15 @@ pub fn single(outline: Outline) -> Scene {
 pub fn unit_camera(width: u32, height: u32) -> Camera {
     Camera::new(width, height, 1000.0, DVec2::new(0.0, f64::from(height)))
 }
+
+/// A camera that frames `scene` with a margin, at `size`, under `matrix`.
+pub fn framed(scene: &Scene, size: f64, matrix: [f64; 4], subpixel: DVec2) -> Camera {
+    let mut cam = Camera::new(1, 1, size, DVec2::ZERO);
+    cam.matrix = Camera::matrix_from_rows(matrix[0], matrix[1], matrix[2], matrix[3]);
+    let ink = cam.ink_bounds(scene).unwrap();
+    cam.origin = DVec2::splat(2.0) - ink.min + subpixel;
+    let extent = ink.size() + 5.0;
+    cam.width = extent.x.ceil() as u32;
+    cam.height = extent.y.ceil() as u32;
+    cam
+}
