@@ -5,8 +5,10 @@
 pub const COMMON_WGSL: &str = include_str!("../../shaders/common.wgsl");
 
 /// Every method shader, by file name. A new shader is added here, and only here.
-pub const METHOD_SHADERS: &[(&str, &str)] =
-    &[("bounds.wgsl", include_str!("../../shaders/bounds.wgsl"))];
+pub const METHOD_SHADERS: &[(&str, &str)] = &[
+    ("bounds.wgsl", include_str!("../../shaders/bounds.wgsl")),
+    ("winding.wgsl", include_str!("../../shaders/winding.wgsl")),
+];
 
 /// The full source of a method shader, common part included.
 pub fn source(file: &str) -> String {

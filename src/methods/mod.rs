@@ -149,7 +149,7 @@ pub const METHOD_NAMES: &[&str] = &[
 pub fn create(name: &str, params: &Params) -> Result<Box<dyn Method>, Error> {
     let issue = match name {
         "bounds" => return Ok(Box::new(bounds::Bounds::new(params)?)),
-        "winding" => 3,
+        "winding" => return Ok(Box::new(winding::Winding::new(params)?)),
         "sdf-cells" => 4,
         "xor-stencil" => 5,
         "tessellation" => 6,
@@ -184,3 +184,4 @@ pub fn reject_unknown_params(method: &str, params: &Params, known: &[&str]) -> R
 
 pub mod bounds;
 pub mod instances;
+pub mod winding;

@@ -1,0 +1,362 @@
+//! CPU preparation for `winding`: each distinct glyph's quadratic curves, and its
+//! horizontal and vertical bands, laid out as the shader reads them.
+//!
+//! A band lists every curve whose control-point bounds overlap it across the ray, so a
+//! ray cast inside the band meets no other curve. Each band keeps its curves twice:
+//! by descending max (rays cast towards +) and by ascending min (rays cast towards −);
+//! a ray then stops at the first curve lying wholly behind it.
+
+use glam::DVec2;
+
+use crate::geometry::{Outline, Segment};
+
+/// `Curve` in `winding.wgsl`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct GpuCurve {
+    pub p0p1: [f32; 4],
+    /// p2, then max x and max y of the control points.
+    pub p2_max: [f32; 4],
+    pub min: [f32; 2],
+    pub _pad: [f32; 2],
+}
+
+/// `Glyph` in `winding.wgsl`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct GpuGlyph {
+    pub bounds: [f32; 4],
+    pub band_count_h: u32,
+    pub band_count_v: u32,
+    pub first_band: u32,
+    pub units_per_em: f32,
+}
+
+/// `Band` in `winding.wgsl`: offsets of its two orderings in the band-curve list.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct GpuBand {
+    pub by_max: u32,
+    pub by_min: u32,
+    pub count: u32,
+}
+
+/// How many bands each glyph gets.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BandCount {
+    /// Chosen per glyph: doubled while doubling still saves half a curve per band.
+    Auto,
+    /// The same count for every glyph, in each direction.
+    Fixed(u32),
+}
+
+/// Most bands in one direction: past this, bands cost memory and save nothing.
+pub const MAX_BANDS: u32 = 64;
+
+/// Everything the shader reads about the distinct glyphs, built once per scene.
+#[derive(Default, Debug)]
+pub struct GlyphData {
+    pub curves: Vec<GpuCurve>,
+    pub glyphs: Vec<GpuGlyph>,
+    /// Per glyph: its horizontal bands, its vertical bands, then one band listing all
+    /// its curves (brute force, and the class overlay).
+    pub bands: Vec<GpuBand>,
+    pub band_curves: Vec<u32>,
+}
+
+/// A quadratic curve in local font units, as f32 the way the GPU holds it.
+#[derive(Clone, Copy, Debug)]
+struct Quad {
+    p: [DVec2; 3],
+    min: DVec2,
+    max: DVec2,
+}
+
+impl Quad {
+    fn along(&self, axis: usize) -> (f64, f64) {
+        (self.min[axis], self.max[axis])
+    }
+
+    /// A line along the ray never crosses it (its sign class is uniform): it is left
+    /// out of that direction's bands, as Slug does.
+    fn is_flat_across(&self, across: usize) -> bool {
+        self.p[0][across] == self.p[1][across] && self.p[1][across] == self.p[2][across]
+    }
+}
+
+/// The quadratics of an outline (already free of cubics): lines become quadratics with
+/// their midpoint as control point, exactly representable; zero-length pieces, which
+/// cannot change any winding number, are dropped.
+fn quads(outline: &Outline) -> Vec<Quad> {
+    outline
+        .segments()
+        .filter_map(|s| {
+            let p = match *s {
+                Segment::Line(a, b) => [a, (a + b) * 0.5, b],
+                Segment::Quad(a, b, c) => [a, b, c],
+                Segment::Cubic(..) => unreachable!("outlines are converted to quadratics first"),
+            };
+            // Round once, here, so that bounds and bands agree with what the GPU sees.
+            let p = p.map(|v| v.as_vec2().as_dvec2());
+            (p[0] != p[1] || p[1] != p[2]).then(|| Quad {
+                p,
+                min: p[0].min(p[1]).min(p[2]),
+                max: p[0].max(p[1]).max(p[2]),
+            })
+        })
+        .collect()
+}
+
+impl GlyphData {
+    /// Appends one glyph (an outline of lines and quadratics, in a font of
+    /// `units_per_em`) and returns its index.
+    pub fn push(&mut self, outline: &Outline, units_per_em: f64, band_count: BandCount) -> u32 {
+        let quads = quads(outline);
+        let first_curve = self.curves.len() as u32;
+        self.curves.extend(quads.iter().map(|q| GpuCurve {
+            p0p1: [
+                q.p[0].x as f32,
+                q.p[0].y as f32,
+                q.p[1].x as f32,
+                q.p[1].y as f32,
+            ],
+            p2_max: [
+                q.p[2].x as f32,
+                q.p[2].y as f32,
+                q.max.x as f32,
+                q.max.y as f32,
+            ],
+            min: [q.min.x as f32, q.min.y as f32],
+            _pad: [0.0; 2],
+        }));
+        let min = quads
+            .iter()
+            .fold(DVec2::splat(f64::INFINITY), |m, q| m.min(q.min));
+        let max = quads
+            .iter()
+            .fold(DVec2::splat(f64::NEG_INFINITY), |m, q| m.max(q.max));
+        let (min, max) = if quads.is_empty() {
+            (DVec2::ZERO, DVec2::ZERO)
+        } else {
+            (min, max)
+        };
+
+        let first_band = self.bands.len() as u32;
+        // Horizontal bands split y (rays along x, axis 0); vertical ones split x.
+        let count_h = self.push_bands(&quads, first_curve, 1, (min.y, max.y), band_count);
+        let count_v = self.push_bands(&quads, first_curve, 0, (min.x, max.x), band_count);
+        let all: Vec<usize> = (0..quads.len()).collect();
+        self.push_band(&quads, first_curve, &all, 0);
+        self.glyphs.push(GpuGlyph {
+            bounds: [min.x as f32, min.y as f32, max.x as f32, max.y as f32],
+            band_count_h: count_h,
+            band_count_v: count_v,
+            first_band,
+            units_per_em: units_per_em as f32,
+        });
+        self.glyphs.len() as u32 - 1
+    }
+
+    /// Pushes the bands splitting `range` of coordinate `across`; returns how many.
+    fn push_bands(
+        &mut self,
+        quads: &[Quad],
+        first_curve: u32,
+        across: usize,
+        range: (f64, f64),
+        band_count: BandCount,
+    ) -> u32 {
+        let count = match band_count {
+            BandCount::Fixed(n) => n,
+            BandCount::Auto => auto_band_count(quads, across, range),
+        };
+        let along = 1 - across;
+        for members in band_members(quads, across, range, count) {
+            self.push_band(quads, first_curve, &members, along);
+        }
+        count
+    }
+
+    fn push_band(&mut self, quads: &[Quad], first_curve: u32, members: &[usize], along: usize) {
+        let mut by_max = members.to_vec();
+        by_max.sort_by(|&a, &b| quads[b].along(along).1.total_cmp(&quads[a].along(along).1));
+        let mut by_min = members.to_vec();
+        by_min.sort_by(|&a, &b| quads[a].along(along).0.total_cmp(&quads[b].along(along).0));
+        let start = self.band_curves.len() as u32;
+        self.band_curves.extend(
+            by_max
+                .iter()
+                .chain(&by_min)
+                .map(|&i| first_curve + i as u32),
+        );
+        self.bands.push(GpuBand {
+            by_max: start,
+            by_min: start + members.len() as u32,
+            count: members.len() as u32,
+        });
+    }
+
+    pub fn bytes(&self) -> usize {
+        size_of_val(self.curves.as_slice())
+            + size_of_val(self.glyphs.as_slice())
+            + size_of_val(self.bands.as_slice())
+            + size_of_val(self.band_curves.as_slice())
+    }
+}
+
+/// The curves of each of `count` equal bands across `range`. Membership is by closed
+/// intervals widened by 1/256 of a band, so a sample the shader rounds into a
+/// neighbouring band still finds every curve at its height: a superset is harmless,
+/// a missing curve is not.
+fn band_members(quads: &[Quad], across: usize, range: (f64, f64), count: u32) -> Vec<Vec<usize>> {
+    let height = (range.1 - range.0) / f64::from(count);
+    let slack = height / 256.0;
+    (0..count)
+        .map(|k| {
+            let lo = range.0 + height * f64::from(k) - slack;
+            let hi = range.0 + height * f64::from(k + 1) + slack;
+            (0..quads.len())
+                .filter(|&i| {
+                    let (min, max) = quads[i].along(across);
+                    !quads[i].is_flat_across(across) && min <= hi && max >= lo
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// Doubles the band count while that still saves at least half a curve per band on
+/// average, up to [`MAX_BANDS`].
+fn auto_band_count(quads: &[Quad], across: usize, range: (f64, f64)) -> u32 {
+    let mean = |count: u32| {
+        let members = band_members(quads, across, range, count);
+        members.iter().map(Vec::len).sum::<usize>() as f64 / f64::from(count)
+    };
+    let mut count = 1;
+    let mut current = mean(1);
+    while count < MAX_BANDS {
+        let doubled = mean(count * 2);
+        if current - doubled < 0.5 {
+            break;
+        }
+        count *= 2;
+        current = doubled;
+    }
+    count
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::font::Font;
+    use crate::geometry::DEFAULT_QUAD_TOLERANCE_EM;
+
+    fn glyph(font: &Font, c: char) -> Outline {
+        let tolerance = DEFAULT_QUAD_TOLERANCE_EM * font.units_per_em();
+        font.outline(font.glyph_for_char(c).unwrap())
+            .to_quadratics(tolerance)
+    }
+
+    /// Every curve that crosses a band's interior is in that band.
+    #[test]
+    fn bands_hold_every_curve_that_can_cross_them() {
+        let font = Font::default_font();
+        for c in "gS@&mW".chars() {
+            let mut data = GlyphData::default();
+            data.push(&glyph(&font, c), 2048.0, BandCount::Fixed(7));
+            let g = data.glyphs[0];
+            let (lo, hi) = (g.bounds[1], g.bounds[3]);
+            for k in 0..7 {
+                let band = data.bands[k];
+                let listed: Vec<u32> =
+                    data.band_curves[band.by_max as usize..][..band.count as usize].to_vec();
+                let y = lo + (hi - lo) * (k as f32 + 0.5) / 7.0;
+                for (i, curve) in data.curves.iter().enumerate() {
+                    let ys = [curve.p0p1[1], curve.p0p1[3], curve.p2_max[1]];
+                    let crosses = ys.iter().any(|&v| v > y) && ys.iter().any(|&v| v <= y);
+                    assert!(
+                        !crosses || listed.contains(&(i as u32)),
+                        "{c:?} band {k} lacks curve {i}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn both_orderings_are_sorted_and_hold_the_same_curves() {
+        let font = Font::shipped(1);
+        let mut data = GlyphData::default();
+        data.push(&glyph(&font, '&'), 1000.0, BandCount::Auto);
+        let g = data.glyphs[0];
+        for (k, band) in data.bands.iter().enumerate() {
+            let along =
+                if (k as u32) < g.band_count_h || k as u32 == g.band_count_h + g.band_count_v {
+                    0
+                } else {
+                    1
+                };
+            let ids = |start: u32| &data.band_curves[start as usize..][..band.count as usize];
+            let max = |i: &u32| data.curves[*i as usize].p2_max[2 + along];
+            let min = |i: &u32| data.curves[*i as usize].min[along];
+            assert!(
+                ids(band.by_max)
+                    .windows(2)
+                    .all(|w| max(&w[0]) >= max(&w[1]))
+            );
+            assert!(
+                ids(band.by_min)
+                    .windows(2)
+                    .all(|w| min(&w[0]) <= min(&w[1]))
+            );
+            let mut a = ids(band.by_max).to_vec();
+            let mut b = ids(band.by_min).to_vec();
+            a.sort();
+            b.sort();
+            assert_eq!(a, b);
+        }
+    }
+
+    #[test]
+    fn auto_bands_shrink_the_lists() {
+        let font = Font::default_font();
+        let mut data = GlyphData::default();
+        data.push(&glyph(&font, '@'), 2048.0, BandCount::Auto);
+        let g = data.glyphs[0];
+        assert!(g.band_count_h > 1 && g.band_count_v > 1, "{g:?}");
+        let all = data.bands[(g.band_count_h + g.band_count_v) as usize].count;
+        let mean_h: f64 = data.bands[..g.band_count_h as usize]
+            .iter()
+            .map(|b| f64::from(b.count))
+            .sum::<f64>()
+            / f64::from(g.band_count_h);
+        assert!(
+            mean_h < f64::from(all) / 3.0,
+            "mean band {mean_h} of {all} curves"
+        );
+    }
+
+    #[test]
+    fn degenerate_pieces_are_dropped_and_lines_stay_exact() {
+        let a = DVec2::new(0.0, 0.0);
+        let b = DVec2::new(100.0, 30.0);
+        let outline = Outline {
+            contours: vec![crate::geometry::Contour {
+                segments: vec![
+                    Segment::Line(a, b),
+                    Segment::Line(b, b),
+                    Segment::Line(b, a),
+                ],
+            }],
+        };
+        let mut data = GlyphData::default();
+        data.push(&outline, 1000.0, BandCount::Auto);
+        assert_eq!(data.curves.len(), 2, "the zero-length line is gone");
+        let c = data.curves[0];
+        assert_eq!(
+            [c.p0p1[2], c.p0p1[3]],
+            [50.0, 15.0],
+            "line control point is its midpoint"
+        );
+    }
+}

@@ -1,0 +1,439 @@
+//! `winding`: the winding number of each pixel from the roots of its glyph's quadratic
+//! curves along a ray (seeds 002 and 003; Slug is the state of the art).
+//!
+//! - Which roots count follows from the sign bits of the control points' y relative to
+//!   the ray alone (the `0x2E74` table): no epsilon decides a crossing.
+//! - Roots come from the stable form of the quadratic formula, relative to the sample
+//!   point, so lines and near-lines need no threshold.
+//! - Anti-aliasing: a crossing within one pixel along the ray adds the exact box-filter
+//!   coverage of the curve's tangent line there, with the pixel footprint taken from
+//!   the local coordinates' screen derivatives (rotation, skew, zoom and perspective
+//!   included). Two rays (x and y) are blended by how near each one's nearest crossing
+//!   is, since a ray is blind to edges running along it.
+//! - Bands let a pixel visit only the curves at its height, cast towards the nearer
+//!   side of the glyph, and stop at the first curve wholly behind it.
+//! - Each instance's quad grows by exactly the pixel footprint (`dilated_corner`).
+
+mod bands;
+
+pub use bands::{BandCount, GlyphData, MAX_BANDS};
+
+use super::instances::Instances;
+use super::{CurveCost, Method, Overlay, Params, param, parse_overlay, reject_unknown_params};
+use crate::Error;
+use crate::camera::Camera;
+use crate::geometry::DEFAULT_QUAD_TOLERANCE_EM;
+use crate::gpu::{self, CoverageTarget, GpuContext};
+use crate::scene::Scene;
+
+/// The overlays `winding` draws.
+pub const OVERLAYS: &[Overlay] = &[Overlay::CurveClasses, Overlay::CostHeatMap];
+
+/// The curve classes' colours as the class overlay draws them (index: y0 > 0, y1 > 0,
+/// y2 > 0 relative to the ray, as bits 0, 1, 2) and which roots each class counts: the
+/// legend of the overlay.
+pub const CLASS_LEGEND: [([f32; 3], &str); 8] = [
+    ([0.35, 0.35, 0.35], "000 below: no root"),
+    ([1.0, 0.35, 0.2], "001 t1 (descending)"),
+    ([0.75, 0.3, 1.0], "010 both roots"),
+    ([1.0, 0.75, 0.1], "011 t1 (descending)"),
+    ([0.2, 0.6, 1.0], "100 t2 (ascending)"),
+    ([1.0, 0.4, 0.85], "101 both roots"),
+    ([0.2, 0.9, 0.7], "110 t2 (ascending)"),
+    ([0.7, 0.7, 0.7], "111 above: no root"),
+];
+
+/// What the `--param`s choose.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Settings {
+    /// 1: rays along x only; 2: x and y.
+    pub rays: u32,
+    /// 1 or 4 sub-pixel samples; 0: 4 where a pixel spans over 1/32 em, else 1.
+    pub samples: u32,
+    pub even_odd: bool,
+    /// None: no bands, every curve for every ray.
+    pub bands: Option<BandCount>,
+    pub overlay: Option<Overlay>,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            rays: 2,
+            samples: 0,
+            even_odd: false,
+            bands: Some(BandCount::Auto),
+            overlay: None,
+        }
+    }
+}
+
+impl Settings {
+    pub fn from_params(params: &Params) -> Result<Settings, Error> {
+        reject_unknown_params(
+            "winding",
+            params,
+            &["rays", "bands", "fill", "samples", "overlay"],
+        )?;
+        let bad = |key: &str, value: &str, allowed: &str| {
+            Error::Input(format!("winding: {key}={value} is not one of {allowed}"))
+        };
+        let mut s = Settings::default();
+        if let Some(v) = param(params, "rays") {
+            s.rays = match v {
+                "1" => 1,
+                "2" => 2,
+                _ => return Err(bad("rays", v, "1, 2")),
+            };
+        }
+        if let Some(v) = param(params, "samples") {
+            s.samples = match v {
+                "auto" => 0,
+                "1" => 1,
+                "4" => 4,
+                _ => return Err(bad("samples", v, "auto, 1, 4")),
+            };
+        }
+        if let Some(v) = param(params, "fill") {
+            s.even_odd = match v {
+                "nonzero" => false,
+                "evenodd" => true,
+                _ => return Err(bad("fill", v, "nonzero, evenodd")),
+            };
+        }
+        if let Some(v) = param(params, "bands") {
+            s.bands = match v {
+                "auto" => Some(BandCount::Auto),
+                "off" => None,
+                n => match n.parse::<u32>() {
+                    Ok(n) if (1..=MAX_BANDS).contains(&n) => Some(BandCount::Fixed(n)),
+                    _ => return Err(bad("bands", v, &format!("auto, off, 1..{MAX_BANDS}"))),
+                },
+            };
+        }
+        s.overlay = parse_overlay("winding", param(params, "overlay"), OVERLAYS)?;
+        Ok(s)
+    }
+}
+
+/// What the fragment shader draws, as its `OVERLAY` constant.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Output {
+    Coverage,
+    Overlay(Overlay),
+    /// Curves evaluated per pixel in red, for `curves_per_pixel`.
+    CurveCount,
+}
+
+impl Output {
+    fn constant(self) -> f64 {
+        match self {
+            Output::Coverage => 0.0,
+            Output::Overlay(Overlay::CurveClasses) => 1.0,
+            Output::Overlay(_) => 2.0,
+            Output::CurveCount => 3.0,
+        }
+    }
+}
+
+pub struct Winding {
+    settings: Settings,
+    layout: Option<(wgpu::BindGroupLayout, wgpu::PipelineLayout)>,
+    /// The drawing pipeline, and the counting one once `curves_per_pixel` asks.
+    pipelines: Vec<(Output, wgpu::RenderPipeline)>,
+    prepared: Option<Prepared>,
+}
+
+struct Prepared {
+    instances: Instances,
+    /// Holds the glyph buffers (a bind group keeps what it binds alive).
+    bind_group: wgpu::BindGroup,
+    bytes: u64,
+}
+
+impl Winding {
+    pub fn new(params: &Params) -> Result<Winding, Error> {
+        Ok(Winding {
+            settings: Settings::from_params(params)?,
+            layout: None,
+            pipelines: Vec::new(),
+            prepared: None,
+        })
+    }
+
+    pub fn settings(&self) -> Settings {
+        self.settings
+    }
+
+    fn layout(&mut self, gpu: &GpuContext) -> &(wgpu::BindGroupLayout, wgpu::PipelineLayout) {
+        self.layout.get_or_insert_with(|| {
+            let entry = |binding, visibility, ty| wgpu::BindGroupLayoutEntry {
+                binding,
+                visibility,
+                ty: wgpu::BindingType::Buffer {
+                    ty,
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+                count: None,
+            };
+            let storage = wgpu::BufferBindingType::Storage { read_only: true };
+            let (vertex, fragment) = (wgpu::ShaderStages::VERTEX, wgpu::ShaderStages::FRAGMENT);
+            let group = gpu
+                .device
+                .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                    label: Some("winding"),
+                    entries: &[
+                        entry(0, vertex, wgpu::BufferBindingType::Uniform),
+                        entry(1, vertex, storage),
+                        entry(2, vertex | fragment, storage),
+                        entry(3, fragment, storage),
+                        entry(4, fragment, storage),
+                        entry(5, fragment, storage),
+                    ],
+                });
+            let layout = gpu
+                .device
+                .create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+                    label: Some("winding"),
+                    bind_group_layouts: &[Some(&group)],
+                    immediate_size: 0,
+                });
+            (group, layout)
+        })
+    }
+
+    fn pipeline(&mut self, gpu: &GpuContext, output: Output) -> &wgpu::RenderPipeline {
+        if let Some(i) = self.pipelines.iter().position(|(o, _)| *o == output) {
+            return &self.pipelines[i].1;
+        }
+        let s = self.settings;
+        let constants = [
+            ("RAYS", f64::from(s.rays)),
+            ("SAMPLES", f64::from(s.samples)),
+            ("EVEN_ODD", f64::from(u8::from(s.even_odd))),
+            ("USE_BANDS", f64::from(u8::from(s.bands.is_some()))),
+            ("OVERLAY", output.constant()),
+        ];
+        let module = gpu::shaders::create_module(&gpu.device, "winding.wgsl");
+        let layout = &self.layout(gpu).1;
+        let options = wgpu::PipelineCompilationOptions {
+            constants: &constants,
+            ..Default::default()
+        };
+        // Coverage adds up where instances' quads overlap, as the reference sums
+        // instances that do not overlap.
+        let add = wgpu::BlendComponent {
+            src_factor: wgpu::BlendFactor::One,
+            dst_factor: wgpu::BlendFactor::One,
+            operation: wgpu::BlendOperation::Add,
+        };
+        let pipeline = gpu
+            .device
+            .create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some("winding"),
+                layout: Some(layout),
+                vertex: wgpu::VertexState {
+                    module: &module,
+                    entry_point: Some("vs_main"),
+                    compilation_options: options.clone(),
+                    buffers: &[],
+                },
+                primitive: wgpu::PrimitiveState {
+                    topology: wgpu::PrimitiveTopology::TriangleStrip,
+                    ..Default::default()
+                },
+                depth_stencil: None,
+                multisample: wgpu::MultisampleState::default(),
+                fragment: Some(wgpu::FragmentState {
+                    module: &module,
+                    entry_point: Some("fs_main"),
+                    compilation_options: options,
+                    targets: &[Some(wgpu::ColorTargetState {
+                        format: CoverageTarget::FORMAT,
+                        blend: Some(wgpu::BlendState {
+                            color: add,
+                            alpha: add,
+                        }),
+                        write_mask: wgpu::ColorWrites::ALL,
+                    })],
+                }),
+                multiview_mask: None,
+                cache: None,
+            });
+        self.pipelines.push((output, pipeline));
+        &self.pipelines.last().expect("just pushed").1
+    }
+
+    /// Records the draw of every visible instance with `output`'s pipeline.
+    fn draw(
+        &mut self,
+        gpu: &GpuContext,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &CoverageTarget,
+        camera: &Camera,
+        output: Output,
+    ) -> Result<(), Error> {
+        let prepared = self.prepared.as_mut().ok_or_else(|| {
+            Error::Gpu("method 'winding' was asked to draw before `prepare`".into())
+        })?;
+        let visible = prepared.instances.update(gpu, camera, 0.0)?;
+        let pipeline = self.pipeline(gpu, output).clone();
+        let prepared = self.prepared.as_ref().expect("checked above");
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("winding"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: &target.view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: None,
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        if visible > 0 {
+            pass.set_pipeline(&pipeline);
+            pass.set_bind_group(0, &prepared.bind_group, &[]);
+            pass.draw(0..4, 0..visible);
+        }
+        Ok(())
+    }
+}
+
+impl Method for Winding {
+    fn name(&self) -> &'static str {
+        "winding"
+    }
+
+    fn prepare(&mut self, gpu: &GpuContext, scene: &Scene) -> Result<(), Error> {
+        let tolerance = DEFAULT_QUAD_TOLERANCE_EM * scene.units_per_em;
+        let band_count = self.settings.bands.unwrap_or(BandCount::Fixed(1));
+        let mut data = GlyphData::default();
+        for glyph in &scene.glyphs {
+            data.push(
+                &glyph.outline.to_quadratics(tolerance),
+                scene.units_per_em,
+                band_count,
+            );
+        }
+        gpu.catching_errors("preparing 'winding'", || {
+            let instances = Instances::new(gpu, scene);
+            let buffer = |label, bytes: &[u8]| {
+                // A binding cannot be empty.
+                let size = (bytes.len() as u64).max(16);
+                let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                    label: Some(label),
+                    size,
+                    usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+                    mapped_at_creation: false,
+                });
+                gpu.queue.write_buffer(&buffer, 0, bytes);
+                buffer
+            };
+            let buffers = [
+                buffer("winding glyphs", bytemuck::cast_slice(&data.glyphs)),
+                buffer("winding bands", bytemuck::cast_slice(&data.bands)),
+                buffer(
+                    "winding band curves",
+                    bytemuck::cast_slice(&data.band_curves),
+                ),
+                buffer("winding curves", bytemuck::cast_slice(&data.curves)),
+            ];
+            let group = &self.layout(gpu).0;
+            let bind_group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("winding"),
+                layout: group,
+                entries: &[
+                    wgpu::BindGroupEntry {
+                        binding: 0,
+                        resource: instances.frame().as_entire_binding(),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 1,
+                        resource: instances.buffer().as_entire_binding(),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 2,
+                        resource: buffers[0].as_entire_binding(),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 3,
+                        resource: buffers[1].as_entire_binding(),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 4,
+                        resource: buffers[2].as_entire_binding(),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 5,
+                        resource: buffers[3].as_entire_binding(),
+                    },
+                ],
+            });
+            let bytes = instances.bytes() + buffers.iter().map(wgpu::Buffer::size).sum::<u64>();
+            self.prepared = Some(Prepared {
+                instances,
+                bind_group,
+                bytes,
+            });
+            Ok(())
+        })
+    }
+
+    fn encode(
+        &mut self,
+        gpu: &GpuContext,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &CoverageTarget,
+        camera: &Camera,
+    ) -> Result<(), Error> {
+        let output = self
+            .settings
+            .overlay
+            .map_or(Output::Coverage, Output::Overlay);
+        self.draw(gpu, encoder, target, camera, output)
+    }
+
+    fn gpu_bytes(&self) -> u64 {
+        self.prepared.as_ref().map_or(0, |p| p.bytes)
+    }
+
+    fn overlays(&self) -> &'static [Overlay] {
+        OVERLAYS
+    }
+
+    fn curves_per_pixel(
+        &mut self,
+        gpu: &GpuContext,
+        camera: &Camera,
+    ) -> Result<Option<CurveCost>, Error> {
+        let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
+        gpu.catching_errors("counting curves per pixel", || {
+            let mut encoder = gpu.device.create_command_encoder(&Default::default());
+            self.draw(gpu, &mut encoder, &target, camera, Output::CurveCount)?;
+            gpu.queue.submit([encoder.finish()]);
+            gpu.wait_idle()
+        })?;
+        let (mut sum, mut covered, mut max) = (0.0, 0u64, 0u32);
+        for texel in target.read_texels(gpu)? {
+            if texel[3] > 0.0 {
+                sum += f64::from(texel[0]);
+                covered += 1;
+                max = max.max(texel[0].round() as u32);
+            }
+        }
+        Ok(Some(CurveCost {
+            mean: if covered > 0 {
+                sum / covered as f64
+            } else {
+                0.0
+            },
+            max,
+        }))
+    }
+}

@@ -1,0 +1,446 @@
+//! Method `winding` against the exact reference: real glyphs of every shipped font at
+//! 8–400 px/em under rotation and skew at 16 sub-pixel offsets, the hard cases that
+//! break ray casting, and what each parameter does.
+
+mod common;
+
+use common::*;
+use glam::DVec2;
+use glyphscope::camera::Camera;
+use glyphscope::coverage::CoverageImage;
+use glyphscope::font::{Font, SHIPPED_FONTS};
+use glyphscope::geometry::{Contour, Outline, Segment};
+use glyphscope::gpu::{self, GpuContext};
+use glyphscope::methods::{self, Method};
+use glyphscope::metrics::{ErrorStats, compare};
+use glyphscope::reference;
+use glyphscope::scene::Scene;
+
+fn gpu() -> GpuContext {
+    GpuContext::new().expect("a GPU adapter (lavapipe: apt-get install mesa-vulkan-drivers)")
+}
+
+fn winding(params: &[(&str, &str)]) -> Box<dyn Method> {
+    let params: Vec<(String, String)> = params
+        .iter()
+        .map(|(k, v)| (k.to_string(), v.to_string()))
+        .collect();
+    methods::create("winding", &params).unwrap()
+}
+
+fn render(gpu: &GpuContext, method: &mut dyn Method, scene: &Scene, cam: &Camera) -> CoverageImage {
+    method.prepare(gpu, scene).unwrap();
+    gpu::render_image(gpu, method, cam).unwrap()
+}
+
+/// Error of `winding` with `params` against the reference, for one frame.
+fn error(gpu: &GpuContext, params: &[(&str, &str)], scene: &Scene, cam: &Camera) -> ErrorStats {
+    let got = render(gpu, winding(params).as_mut(), scene, cam);
+    compare(&got, &reference::rasterize(scene, cam).unwrap()).unwrap()
+}
+
+/// The 16 sub-pixel offsets of a 4×4 grid, kept off the pixel grid's symmetries.
+fn subpixel(k: u32) -> DVec2 {
+    DVec2::new(f64::from(k % 4) / 4.0 + 0.03, f64::from(k / 4) / 4.0 + 0.07)
+}
+
+/// Worst error and mean MAE over the 16 offsets.
+struct Sweep {
+    mean_mae: f64,
+    max: f64,
+    over_half: usize,
+}
+
+fn sweep(
+    gpu: &GpuContext,
+    params: &[(&str, &str)],
+    scene: &Scene,
+    size: f64,
+    matrix: [f64; 4],
+) -> Sweep {
+    let mut method = winding(params);
+    method.prepare(gpu, scene).unwrap();
+    let (mut mae, mut max, mut over_half) = (0.0, 0.0f64, 0);
+    for k in 0..16 {
+        let cam = framed(scene, size, matrix, subpixel(k));
+        let got = gpu::render_image(gpu, method.as_mut(), &cam).unwrap();
+        let s = compare(&got, &reference::rasterize(scene, &cam).unwrap()).unwrap();
+        mae += s.mae_255 / 16.0;
+        max = max.max(s.max);
+        over_half += s.pixels_over_05;
+    }
+    Sweep {
+        mean_mae: mae,
+        max,
+        over_half,
+    }
+}
+
+const SAMPLE_TEXT: [&str; 4] = [
+    "g&@Se",
+    "Qa§gf",
+    "BéW4k",
+    "\u{0995}\u{09CD}\u{09B7}\u{0999}",
+];
+
+fn transforms() -> [(&'static str, [f64; 4]); 3] {
+    let (s, c) = 30f64.to_radians().sin_cos();
+    [
+        ("identity", [1.0, 0.0, 0.0, 1.0]),
+        ("rotated 30°", [c, -s, s, c]),
+        ("skewed", [1.0, 0.4, 0.0, 1.0]),
+    ]
+}
+
+#[test]
+fn real_glyphs_stay_within_half_a_level_everywhere() {
+    let gpu = gpu();
+    let mut worst: f64 = 0.0;
+    println!("| font | px/em | transform | mean MAE /255 | max | pixels > 0.5 |");
+    for (index, text) in SAMPLE_TEXT.iter().enumerate() {
+        let font = Font::shipped(index);
+        for size in [8.0, 16.0, 48.0, 400.0] {
+            // At 400 px/em two glyphs hold thousands of edge pixels at every phase.
+            let text: String = text
+                .chars()
+                .take(if size > 100.0 { 2 } else { 5 })
+                .collect();
+            let scene = Scene::from_text(&font, &text).unwrap();
+            for (name, matrix) in transforms() {
+                let s = sweep(&gpu, &[], &scene, size, matrix);
+                println!(
+                    "| {} | {size} | {name} | {:.2} | {:.3} | {} |",
+                    SHIPPED_FONTS[index].0, s.mean_mae, s.max, s.over_half
+                );
+                assert_eq!(
+                    s.over_half, 0,
+                    "{} at {size} px/em, {name}: max {}",
+                    SHIPPED_FONTS[index].0, s.max
+                );
+                worst = worst.max(s.mean_mae);
+            }
+        }
+    }
+    assert!(worst <= 2.0, "worst mean error {worst}/255");
+}
+
+/// A scene of one synthetic outline with 1 font unit = 1 px, y up from the image's
+/// bottom edge: font (x, y) is image (x, height − y), so y = k + 0.5 is a pixel-centre
+/// row.
+fn hard_case(contours: Vec<Contour>) -> (Scene, Camera) {
+    (single(Outline { contours }), unit_camera(24, 20))
+}
+
+fn line(a: (f64, f64), b: (f64, f64)) -> Segment {
+    Segment::Line(DVec2::new(a.0, a.1), DVec2::new(b.0, b.1))
+}
+
+fn quad(a: (f64, f64), b: (f64, f64), c: (f64, f64)) -> Segment {
+    Segment::Quad(
+        DVec2::new(a.0, a.1),
+        DVec2::new(b.0, b.1),
+        DVec2::new(c.0, c.1),
+    )
+}
+
+fn assert_within_half(gpu: &GpuContext, what: &str, scene: &Scene, cam: &Camera) -> ErrorStats {
+    let s = error(gpu, &[], scene, cam);
+    println!("{what}: MAE {:.3}/255, max {:.3}", s.mae_255, s.max);
+    assert_eq!(
+        s.pixels_over_05, 0,
+        "{what}: max {} at {:?}",
+        s.max, s.worst_pixel
+    );
+    s
+}
+
+#[test]
+fn hard_cases_on_pixel_centre_rows() {
+    let gpu = gpu();
+    // A diamond whose four vertices sit exactly on pixel centres.
+    let (scene, cam) = hard_case(vec![polygon(&[
+        (12.5, 2.5),
+        (20.5, 10.5),
+        (12.5, 17.5),
+        (3.5, 10.5),
+    ])]);
+    assert_within_half(&gpu, "vertex on a pixel-centre row", &scene, &cam);
+    // A staircase whose horizontal edges run along pixel-centre rows.
+    let (scene, cam) = hard_case(vec![polygon(&[
+        (2.0, 2.5),
+        (20.0, 2.5),
+        (20.0, 8.5),
+        (14.0, 8.5),
+        (14.0, 12.5),
+        (8.0, 12.5),
+        (8.0, 16.5),
+        (2.0, 16.5),
+    ])]);
+    let s = assert_within_half(&gpu, "horizontal segments along sample rows", &scene, &cam);
+    assert!(
+        s.max < 0.02,
+        "an axis-aligned shape should be exact, got {}",
+        s.max
+    );
+    // An arch whose two halves join at its top with a horizontal tangent on a centre row.
+    let (scene, cam) = hard_case(vec![Contour {
+        segments: vec![
+            quad((2.0, 2.5), (2.0, 14.5), (11.0, 14.5)),
+            quad((11.0, 14.5), (20.0, 14.5), (20.0, 2.5)),
+            line((20.0, 2.5), (2.0, 2.5)),
+        ],
+    }]);
+    assert_within_half(&gpu, "horizontal tangent at a join", &scene, &cam);
+}
+
+#[test]
+fn degenerate_curves() {
+    let gpu = gpu();
+    // Quadratics whose control point lies on the chord: a = 0 exactly (midpoint) and
+    // not (uneven), and one bent by 1e-7 em.
+    let (scene, cam) = hard_case(vec![Contour {
+        segments: vec![
+            quad((2.0, 2.5), (4.0, 9.0), (6.0, 15.5)),
+            quad((6.0, 15.5), (7.0, 15.5), (18.0, 15.5)),
+            quad((18.0, 15.5), (18.0 + 1e-4, 10.0), (18.0, 2.5)),
+            quad((18.0, 2.5), (10.0, 2.5), (2.0, 2.5)),
+        ],
+    }]);
+    assert_within_half(
+        &gpu,
+        "collinear and nearly collinear quadratics",
+        &scene,
+        &cam,
+    );
+    // Zero-length segments and duplicated points inside a contour.
+    let p = (12.0, 15.5);
+    let (scene, cam) = hard_case(vec![Contour {
+        segments: vec![
+            line((3.0, 3.0), p),
+            line(p, p),
+            quad(p, p, p),
+            line(p, (21.0, 4.0)),
+            line((21.0, 4.0), (21.0, 4.0)),
+            line((21.0, 4.0), (3.0, 3.0)),
+        ],
+    }]);
+    assert_within_half(&gpu, "zero-length segments", &scene, &cam);
+    // A bulge whose control point reaches past pixel columns that the curve itself
+    // never reaches: vertical rays there see the "both roots" sign class with no real
+    // root, and must count nothing.
+    let (scene, cam) = hard_case(vec![Contour {
+        segments: vec![
+            quad((3.0, 17.5), (16.0, 10.0), (8.0, 3.5)),
+            line((8.0, 3.5), (3.0, 3.5)),
+            line((3.0, 3.5), (3.0, 17.5)),
+        ],
+    }]);
+    let s = assert_within_half(&gpu, "control point beyond the curve", &scene, &cam);
+    assert!(s.max < 0.2, "{s:?}");
+}
+
+#[test]
+fn far_from_the_origin_nothing_changes() {
+    let gpu = gpu();
+    let scene = Scene::from_text(&Font::default_font(), "Rg").unwrap();
+    let mut cam = framed(&scene, 37.0, [0.9, 0.3, -0.2, 1.1], DVec2::new(0.25, 0.5));
+    let mut method = winding(&[]);
+    let near = render(&gpu, method.as_mut(), &scene, &cam);
+    cam.world_offset = DVec2::new(1.0e5, -1.0e5);
+    let far = gpu::render_image(&gpu, method.as_mut(), &cam).unwrap();
+    assert!(
+        compare(&far, &near).unwrap().max < 1e-3,
+        "a 100 000 px world offset changed the image"
+    );
+    assert_within_half(&gpu, "100 000 px world offset", &scene, &cam);
+}
+
+#[test]
+fn a_huge_glyph_viewed_on_its_edge() {
+    let gpu = gpu();
+    let font = Font::default_font();
+    let scene = Scene::from_glyph_id(&font, font.glyph_for_char('o').unwrap().into()).unwrap();
+    for (name, matrix) in transforms() {
+        let mut cam = Camera::new(64, 64, 20_000.0, DVec2::ZERO);
+        cam.matrix = Camera::matrix_from_rows(matrix[0], matrix[1], matrix[2], matrix[3]);
+        // Put the bowl's leftmost point in the middle of the view.
+        let b = scene.glyphs[0].bounds;
+        let edge = glam::DVec2::new(b.min.x, (b.min.y + b.max.y) * 0.5);
+        let at = glyphscope::geometry::project(
+            &cam.glyph_to_image(scene.units_per_em, DVec2::ZERO),
+            edge,
+        );
+        cam.origin = DVec2::splat(32.3) - at;
+        let got = render(&gpu, winding(&[]).as_mut(), &scene, &cam);
+        let covered = got.sum() / 4096.0;
+        assert!(
+            covered > 0.2 && covered < 0.8,
+            "{name}: view not on the edge ({covered})"
+        );
+        assert_within_half(
+            &gpu,
+            &format!("20 000 px/em on an edge, {name}"),
+            &scene,
+            &cam,
+        );
+    }
+}
+
+#[test]
+fn perspective_tilt() {
+    let gpu = gpu();
+    let scene = Scene::from_text(&Font::default_font(), "Tilted").unwrap();
+    let mut cam = framed(&scene, 60.0, [1.0, 0.0, 0.0, 1.0], DVec2::new(0.3, 0.6));
+    cam.tilt_deg = 40.0;
+    let s = assert_within_half(&gpu, "40° perspective tilt", &scene, &cam);
+    assert!(s.mae_255 < 2.0, "{s:?}");
+}
+
+#[test]
+fn bands_change_the_cost_not_the_image() {
+    let gpu = gpu();
+    let scene = Scene::from_text(&Font::shipped(1), "Bands &g").unwrap();
+    let cam = framed(
+        &scene,
+        41.0,
+        [0.96, -0.28, 0.28, 0.96],
+        DVec2::new(0.4, 0.1),
+    );
+    let mut brute = winding(&[("bands", "off")]);
+    let reference_image = render(&gpu, brute.as_mut(), &scene, &cam);
+    let brute_cost = brute.curves_per_pixel(&gpu, &cam).unwrap().unwrap();
+    for bands in ["auto", "1", "5", "64"] {
+        let mut banded = winding(&[("bands", bands)]);
+        let got = render(&gpu, banded.as_mut(), &scene, &cam);
+        let diff = compare(&got, &reference_image).unwrap();
+        assert!(
+            diff.max < 2e-3,
+            "bands={bands} changed a pixel by {}",
+            diff.max
+        );
+        let cost = banded.curves_per_pixel(&gpu, &cam).unwrap().unwrap();
+        assert!(
+            cost.mean < brute_cost.mean,
+            "bands={bands}: {cost:?} vs brute force {brute_cost:?}"
+        );
+    }
+}
+
+#[test]
+fn settings_trade_accuracy_for_cost() {
+    let gpu = gpu();
+    let scene = Scene::from_text(&Font::default_font(), "Hamburgefonstiv").unwrap();
+    let (s, c) = 12f64.to_radians().sin_cos();
+    let cam = framed(&scene, 13.0, [c, -s, s, c], DVec2::new(0.37, 0.21));
+    let one_ray = error(&gpu, &[("rays", "1"), ("samples", "1")], &scene, &cam);
+    let two_rays = error(&gpu, &[("samples", "1")], &scene, &cam);
+    let four_samples = error(&gpu, &[("samples", "4")], &scene, &cam);
+    let auto = error(&gpu, &[], &scene, &cam);
+    assert_eq!(
+        auto, four_samples,
+        "13 px/em is small text: auto takes four samples"
+    );
+    println!("13 px/em, 12°: rays=1 {one_ray:?}\nrays=2 {two_rays:?}\nsamples=4 {four_samples:?}");
+    assert!(two_rays.mae_255 < one_ray.mae_255);
+    assert!(four_samples.mae_255 < two_rays.mae_255);
+    assert!(four_samples.max < two_rays.max);
+}
+
+/// Two same-direction squares overlapping, and a pentagram: nonzero fills the overlap
+/// and the star's centre; even-odd leaves them empty.
+#[test]
+fn fill_rules_on_overlaps_and_self_intersections() {
+    let gpu = gpu();
+    let squares = single(polygons(&[
+        &rect(2.0, 2.0, 14.0, 14.0),
+        &rect(8.0, 8.0, 20.0, 20.0),
+    ]));
+    let star: Vec<(f64, f64)> = (0..5)
+        .map(|k| {
+            let a = std::f64::consts::FRAC_PI_2 + f64::from(k * 2) * std::f64::consts::TAU / 5.0;
+            (11.0 + 9.0 * a.cos(), 11.0 + 9.0 * a.sin())
+        })
+        .collect();
+    let star = single(polygons(&[&star]));
+    let cam = unit_camera(22, 22);
+    // Pixels (image coordinates) inside the overlap / star centre, and inside one
+    // square / one star point only.
+    let probes = [(&squares, (11, 11), (4, 18)), (&star, (11, 11), (10, 6))];
+    for (scene, shared, single_cover) in probes {
+        let nonzero = render(&gpu, winding(&[]).as_mut(), scene, &cam);
+        let even_odd = render(&gpu, winding(&[("fill", "evenodd")]).as_mut(), scene, &cam);
+        assert_eq!(nonzero.get(shared.0, shared.1), 1.0);
+        assert_eq!(even_odd.get(shared.0, shared.1), 0.0);
+        assert_eq!(nonzero.get(single_cover.0, single_cover.1), 1.0);
+        assert_eq!(even_odd.get(single_cover.0, single_cover.1), 1.0);
+        // Nonzero is what the reference computes.
+        let s = compare(&nonzero, &reference::rasterize(scene, &cam).unwrap()).unwrap();
+        assert_eq!(s.pixels_over_05, 0, "{s:?}");
+    }
+}
+
+#[test]
+fn overlays_draw_classes_and_cost() {
+    let gpu = gpu();
+    let scene = Scene::from_text(&Font::default_font(), "Sg").unwrap();
+    let cam = framed(&scene, 80.0, [1.0, 0.0, 0.0, 1.0], DVec2::new(0.5, 0.5));
+    let picture = |params: &[(&str, &str)]| {
+        let mut method = winding(params);
+        method.prepare(&gpu, &scene).unwrap();
+        let target = gpu::CoverageTarget::new(&gpu, cam.width, cam.height).unwrap();
+        gpu::render_frame(&gpu, method.as_mut(), &target, &cam).unwrap();
+        (
+            target.readback_color(&gpu).unwrap(),
+            target.readback(&gpu).unwrap(),
+        )
+    };
+    let (classes, coverage) = picture(&[("overlay", "classes")]);
+    // Every pixel shows either grey coverage or one of the legend's colours, and near
+    // the outline the counting classes (not grey) appear.
+    let legend: Vec<[u8; 3]> = glyphscope::methods::winding::CLASS_LEGEND
+        .iter()
+        .map(|(c, _)| c.map(|v| (v * 255.0).round() as u8))
+        .collect();
+    let tinted = classes
+        .pixels()
+        .filter(|p| legend[1..7].contains(&p.0))
+        .count();
+    assert!(
+        tinted > 200,
+        "only {tinted} pixels tinted by a counting class"
+    );
+    // The overlay does not change coverage.
+    let plain = render(&gpu, winding(&[]).as_mut(), &scene, &cam);
+    assert!(compare(&coverage, &plain).unwrap().max < 1e-3);
+    let (cost, _) = picture(&[("overlay", "cost")]);
+    let (cost_brute, _) = picture(&[("overlay", "cost"), ("bands", "off")]);
+    let brightness = |img: &image::RgbImage| {
+        img.pixels()
+            .map(|p| p.0.iter().map(|&v| u64::from(v)).sum::<u64>())
+            .sum::<u64>()
+    };
+    assert!(
+        brightness(&cost_brute) > brightness(&cost),
+        "brute force should look hotter"
+    );
+}
+
+#[test]
+fn bad_parameters_are_clear_errors() {
+    for (key, value, expect) in [
+        ("rays", "3", "rays=3"),
+        ("samples", "2", "samples=2"),
+        ("bands", "0", "bands=0"),
+        ("bands", "lots", "bands=lots"),
+        ("fill", "winding", "fill=winding"),
+        ("overlay", "wireframe", "no overlay 'wireframe'"),
+        ("colour", "red", "no parameter 'colour'"),
+    ] {
+        let params = vec![(key.to_string(), value.to_string())];
+        let err = methods::create("winding", &params)
+            .err()
+            .expect("an error")
+            .to_string();
+        assert!(err.contains(expect), "{key}={value}: {err}");
+    }
+}
