@@ -49,7 +49,7 @@ override USE_BANDS: bool = true;  // false: every curve of the glyph for every r
 override OVERLAY: u32 = 0u;       // 0 none, 1 curve classes, 2 cost heat map
 
 // Cost heat map: this many curves evaluated per pixel is the top of the scale.
-const COST_SCALE: f32 = 32.0;
+const COST_SCALE: f32 = 16.0;
 
 // `SAMPLES` auto: four sub-samples where a pixel spans more than this part of an em
 // (text under 32 px/em, or the far side of a tilt), where one sample's error reaches
@@ -346,13 +346,13 @@ const CLASS_COLORS = array<vec3<f32>, 8>(
     vec3<f32>(0.7, 0.7, 0.7),    // 111: wholly above: no root
 );
 
-// The sign class of the curve nearest the pixel (within 1.5 px) for the x-ray through its
+// The sign class of the curve nearest the pixel (within 3 px) for the x-ray through its
 // centre, or 8 when no curve is that near. Brute force over the glyph: an overlay.
 fn nearest_class(g: Glyph, p: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> u32 {
     let det = jx.x * jy.y - jy.x * jx.y;
     let to_pixels = mat2x2<f32>(vec2<f32>(jy.y, -jx.y), vec2<f32>(-jy.x, jx.x)) * (1.0 / det);
     let all = bands[g.first_band + g.band_count_h + g.band_count_v];
-    var best = 1.5;
+    var best = 3.0;
     var root_class = 8u;
     for (var i = 0u; i < all.count; i++) {
         let c = curves[band_curves[all.by_max + i]];

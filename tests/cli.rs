@@ -246,7 +246,7 @@ fn bad_input_fails_cleanly() {
     );
     fails(
         "not yet",
-        &["--text", "a", "--size", "20", "--method", "winding"],
+        &["--text", "a", "--size", "20", "--method", "xor-stencil"],
         "not implemented yet",
     );
     fails(

@@ -17,6 +17,24 @@ impl CoverageTarget {
     /// in between — finer than the 8 bits an image is saved with.
     pub const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
 
+    /// The colour state of pipelines that add their coverage up: where instances'
+    /// quads overlap, disjoint glyphs sum to the union's coverage, as in the reference.
+    pub const ADDITIVE: wgpu::ColorTargetState = {
+        let add = wgpu::BlendComponent {
+            src_factor: wgpu::BlendFactor::One,
+            dst_factor: wgpu::BlendFactor::One,
+            operation: wgpu::BlendOperation::Add,
+        };
+        wgpu::ColorTargetState {
+            format: Self::FORMAT,
+            blend: Some(wgpu::BlendState {
+                color: add,
+                alpha: add,
+            }),
+            write_mask: wgpu::ColorWrites::ALL,
+        }
+    };
+
     /// Bytes of one texel of [`Self::FORMAT`].
     const TEXEL_BYTES: u32 = 8;
 
@@ -52,6 +70,31 @@ impl CoverageTarget {
                 width,
                 height,
             })
+        })
+    }
+
+    /// A render pass drawing straight into this target, cleared to transparent: the
+    /// pass of methods that need no multisampling and no stencil.
+    pub fn clearing_pass<'e>(
+        &self,
+        encoder: &'e mut wgpu::CommandEncoder,
+        label: &str,
+    ) -> wgpu::RenderPass<'e> {
+        encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some(label),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: &self.view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: None,
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
         })
     }
 

@@ -221,13 +221,6 @@ impl Winding {
             constants: &constants,
             ..Default::default()
         };
-        // Coverage adds up where instances' quads overlap, as the reference sums
-        // instances that do not overlap.
-        let add = wgpu::BlendComponent {
-            src_factor: wgpu::BlendFactor::One,
-            dst_factor: wgpu::BlendFactor::One,
-            operation: wgpu::BlendOperation::Add,
-        };
         let pipeline = gpu
             .device
             .create_render_pipeline(&wgpu::RenderPipelineDescriptor {
@@ -249,14 +242,7 @@ impl Winding {
                     module: &module,
                     entry_point: Some("fs_main"),
                     compilation_options: options,
-                    targets: &[Some(wgpu::ColorTargetState {
-                        format: CoverageTarget::FORMAT,
-                        blend: Some(wgpu::BlendState {
-                            color: add,
-                            alpha: add,
-                        }),
-                        write_mask: wgpu::ColorWrites::ALL,
-                    })],
+                    targets: &[Some(CoverageTarget::ADDITIVE)],
                 }),
                 multiview_mask: None,
                 cache: None,
@@ -280,22 +266,7 @@ impl Winding {
         let visible = prepared.instances.update(gpu, camera, 0.0)?;
         let pipeline = self.pipeline(gpu, output).clone();
         let prepared = self.prepared.as_ref().expect("checked above");
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("winding"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &target.view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
-            depth_stencil_attachment: None,
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
+        let mut pass = target.clearing_pass(encoder, "winding");
         if visible > 0 {
             pass.set_pipeline(&pipeline);
             pass.set_bind_group(0, &prepared.bind_group, &[]);
@@ -344,36 +315,27 @@ impl Method for Winding {
                 ),
                 buffer("winding curves", bytemuck::cast_slice(&data.curves)),
             ];
+            // In the order of the bindings in winding.wgsl.
+            let bound = [
+                instances.frame(),
+                instances.buffer(),
+                &buffers[0],
+                &buffers[1],
+                &buffers[2],
+                &buffers[3],
+            ];
             let group = &self.layout(gpu).0;
             let bind_group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some("winding"),
                 layout: group,
-                entries: &[
-                    wgpu::BindGroupEntry {
-                        binding: 0,
-                        resource: instances.frame().as_entire_binding(),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: 1,
-                        resource: instances.buffer().as_entire_binding(),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: 2,
-                        resource: buffers[0].as_entire_binding(),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: 3,
-                        resource: buffers[1].as_entire_binding(),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: 4,
-                        resource: buffers[2].as_entire_binding(),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: 5,
-                        resource: buffers[3].as_entire_binding(),
-                    },
-                ],
+                entries: &bound
+                    .iter()
+                    .enumerate()
+                    .map(|(binding, buffer)| wgpu::BindGroupEntry {
+                        binding: binding as u32,
+                        resource: buffer.as_entire_binding(),
+                    })
+                    .collect::<Vec<_>>(),
             });
             let bytes = instances.bytes() + buffers.iter().map(wgpu::Buffer::size).sum::<u64>();
             self.prepared = Some(Prepared {
