@@ -165,6 +165,26 @@ pub fn create(name: &str, params: &Params) -> Result<Box<dyn Method>, Error> {
     )))
 }
 
+/// One parameter a method takes, described for controls and help.
+#[derive(Clone, Copy, Debug)]
+pub struct ParamSpec {
+    pub key: &'static str,
+    /// The values offered; the first is the default.
+    pub choices: &'static [&'static str],
+    /// Whole numbers in this range are accepted too (e.g. a band count), when given.
+    pub range: Option<(u32, u32)>,
+    /// What it does and what it costs.
+    pub help: &'static str,
+}
+
+/// The parameters of method `name` (none for unknown names and the reference).
+pub fn param_specs(name: &str) -> &'static [ParamSpec] {
+    match name {
+        "winding" => winding::PARAMS,
+        _ => &[],
+    }
+}
+
 /// Rejects parameters a method does not take, naming the ones it does.
 pub fn reject_unknown_params(method: &str, params: &Params, known: &[&str]) -> Result<(), Error> {
     for (key, _) in params {
@@ -185,3 +205,31 @@ pub fn reject_unknown_params(method: &str, params: &Params, known: &[&str]) -> R
 pub mod bounds;
 pub mod instances;
 pub mod winding;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// What the specs offer, `create` accepts: the app builds its controls from them.
+    #[test]
+    fn every_listed_parameter_value_is_accepted() {
+        for name in METHOD_NAMES.iter().filter(|n| **n != "reference") {
+            for spec in param_specs(name) {
+                let mut values: Vec<String> = spec.choices.iter().map(|v| v.to_string()).collect();
+                if let Some((lo, hi)) = spec.range {
+                    values.extend([lo.to_string(), hi.to_string()]);
+                }
+                for value in values {
+                    let params = vec![(spec.key.to_string(), value.clone())];
+                    if let Err(e) = create(name, &params) {
+                        assert!(
+                            e.to_string().contains("not implemented yet"),
+                            "{name} {}={value}: {e}",
+                            spec.key
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
