@@ -251,3 +251,28 @@ fn a_target_larger_than_the_device_allows_is_an_input_error() {
         Err(Error::Input(_))
     ));
 }
+
+/// The app renders on eframe's device: a device opened elsewhere with the same
+/// descriptor, wrapped by `from_device`, draws exactly what `GpuContext::new`'s draws
+/// and times frames too.
+#[test]
+fn a_device_opened_elsewhere_renders_the_same() {
+    let instance =
+        wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+    let adapter = pollster::block_on(instance.request_adapter(&Default::default()))
+        .expect("an adapter (on Debian: apt-get install mesa-vulkan-drivers)");
+    let (device, queue) =
+        pollster::block_on(adapter.request_device(&GpuContext::device_descriptor(&adapter)))
+            .unwrap();
+    let outside = GpuContext::from_device(adapter, device, queue);
+    assert!(outside.has_timestamps(), "{}", outside.adapter_name());
+    let scene = small_scene();
+    let camera = Camera::new(37, 23, 10.0, DVec2::new(2.3, 17.6));
+    let mut method = methods::create("bounds", &[]).unwrap();
+    method.prepare(&outside, &scene).unwrap();
+    let target = CoverageTarget::new(&outside, camera.width, camera.height).unwrap();
+    render_frame(&outside, method.as_mut(), &target, &camera).unwrap();
+    let image = target.readback(&outside).unwrap();
+    assert_eq!(image, render(&scene, &camera).unwrap());
+    assert!(image.sum() > 10.0, "nothing drawn");
+}

@@ -3,7 +3,9 @@
 
 use crate::Error;
 
-/// The adapter, device and queue, chosen once per process.
+/// The adapter, device and queue, chosen once per process. Cloning shares them (wgpu's
+/// handles are reference-counted), e.g. with a background thread.
+#[derive(Clone)]
 pub struct GpuContext {
     pub device: wgpu::Device,
     pub queue: wgpu::Queue,
@@ -29,12 +31,7 @@ impl GpuContext {
             wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
         let adapter = choose_adapter(&instance).await?;
         let (device, queue) = adapter
-            .request_device(&wgpu::DeviceDescriptor {
-                label: Some("glyphscope"),
-                required_features: adapter.features() & TIMESTAMP_FEATURES,
-                required_limits: adapter.limits(),
-                ..Default::default()
-            })
+            .request_device(&Self::device_descriptor(&adapter))
             .await
             .map_err(|e| Error::Gpu(format!("cannot open '{}': {e}", adapter.get_info().name)))?;
         Ok(GpuContext {
@@ -42,6 +39,29 @@ impl GpuContext {
             queue,
             adapter,
         })
+    }
+
+    /// What [`GpuContext::new`] asks of an adapter: timestamp queries where it has them,
+    /// and its own limits. Whoever opens a device for the methods elsewhere (the app, on
+    /// eframe's adapter) asks the same, so methods behave and time alike there.
+    pub fn device_descriptor(adapter: &wgpu::Adapter) -> wgpu::DeviceDescriptor<'static> {
+        wgpu::DeviceDescriptor {
+            label: Some("glyphscope"),
+            required_features: adapter.features() & TIMESTAMP_FEATURES,
+            required_limits: adapter.limits(),
+            ..Default::default()
+        }
+    }
+
+    /// Wraps a device someone else opened (eframe's, in the app), so that methods render
+    /// on it and their targets can be drawn by that device's own passes. Timestamps work
+    /// only if the device was opened with them (see [`GpuContext::device_descriptor`]).
+    pub fn from_device(adapter: wgpu::Adapter, device: wgpu::Device, queue: wgpu::Queue) -> Self {
+        GpuContext {
+            device,
+            queue,
+            adapter,
+        }
     }
 
     /// The adapter's name and backend, e.g. "llvmpipe (LLVM 15.0.6, 256 bits) (Vulkan)".

@@ -10,7 +10,10 @@ use crate::scene::Scene;
 ///
 /// Life cycle: `prepare` once per scene (and again only when the scene or the method's
 /// parameters change), then `encode` once per frame for whatever camera is current.
-pub trait Method {
+///
+/// `Send`, so that a method can live where its frames are recorded: in the app, egui's
+/// paint callbacks (whose resources must be `Send + Sync`) and background threads.
+pub trait Method: Send {
     /// The name `--method` takes.
     fn name(&self) -> &'static str;
 
