@@ -34,6 +34,15 @@ pub struct Cli {
 pub enum Command {
     /// Render text or a glyph to an 8-bit grayscale PNG of linear coverage.
     Render(RenderArgs),
+    /// Regenerate the README's screenshots of the explorer, headlessly.
+    Screenshots(ScreenshotsArgs),
+}
+
+#[derive(Args, Clone, Debug)]
+pub struct ScreenshotsArgs {
+    /// Folder to write the PNGs into.
+    #[arg(long, default_value = "screenshots")]
+    pub out_dir: PathBuf,
 }
 
 #[derive(Args, Clone, Debug)]

@@ -7,6 +7,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
         Some(Command::Render(args)) => glyphscope::cli::run_render(args),
+        Some(Command::Screenshots(args)) => run_screenshots(args),
         None => run_app(),
     };
     match result {
@@ -29,5 +30,17 @@ fn run_app() -> Result<(), glyphscope::Error> {
         "this build has no app (built without the `app` feature); use a subcommand such as \
          `render`, see --help"
             .into(),
+    ))
+}
+
+#[cfg(feature = "app")]
+fn run_screenshots(args: &glyphscope::cli::ScreenshotsArgs) -> Result<(), glyphscope::Error> {
+    glyphscope::app::screenshots::write_all(&args.out_dir).map(drop)
+}
+
+#[cfg(not(feature = "app"))]
+fn run_screenshots(_: &glyphscope::cli::ScreenshotsArgs) -> Result<(), glyphscope::Error> {
+    Err(glyphscope::Error::Input(
+        "this build has no app (built without the `app` feature), so no screenshots of it".into(),
     ))
 }

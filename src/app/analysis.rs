@@ -1,0 +1,139 @@
+//! The numbers that need the CPU reference — the reference picture itself, and each
+//! pane's error against it — worked out on a background thread once the view rests,
+//! never per frame. A newer request supersedes any still waiting.
+
+use std::sync::Arc;
+use std::sync::mpsc::{Receiver, Sender, channel};
+use std::time::Instant;
+
+use eframe::egui;
+
+use crate::camera::Camera;
+use crate::coverage::CoverageImage;
+use crate::metrics::{self, ErrorStats};
+use crate::reference;
+use crate::scene::Scene;
+
+/// A view to analyse: the scene, the camera, and what each pane showed for it.
+pub struct Request {
+    /// Numbers requests in the order sent; set by [`Analysis::send`].
+    pub id: u64,
+    pub scene: Arc<Scene>,
+    pub scene_generation: u64,
+    pub camera: Camera,
+    /// (pane, its coverage for `camera`).
+    pub captures: Vec<(usize, Arc<CoverageImage>)>,
+}
+
+pub struct Outcome {
+    /// The request answered.
+    pub id: u64,
+    pub scene_generation: u64,
+    pub camera: Camera,
+    pub reference: Result<Arc<CoverageImage>, String>,
+    /// CPU time of the reference, ms (None when an earlier one was reused).
+    pub reference_ms: Option<f64>,
+    pub errors: Vec<(usize, Result<ErrorStats, String>)>,
+}
+
+/// The background worker and its mailboxes.
+pub struct Analysis {
+    requests: Sender<Request>,
+    outcomes: Receiver<Outcome>,
+    sent: u64,
+    answered: u64,
+}
+
+impl Analysis {
+    pub fn start(ctx: egui::Context) -> Analysis {
+        let (requests, inbox) = channel::<Request>();
+        let (outbox, outcomes) = channel();
+        std::thread::Builder::new()
+            .name("reference and error".into())
+            .spawn(move || {
+                let mut last: Option<(u64, Camera, Arc<CoverageImage>)> = None;
+                while let Ok(mut request) = inbox.recv() {
+                    // Only the newest view matters.
+                    while let Ok(newer) = inbox.try_recv() {
+                        request = newer;
+                    }
+                    let outcome = analyse(&request, &mut last);
+                    if outbox.send(outcome).is_err() {
+                        return;
+                    }
+                    ctx.request_repaint();
+                }
+            })
+            .expect("a thread can be started");
+        Analysis {
+            requests,
+            outcomes,
+            sent: 0,
+            answered: 0,
+        }
+    }
+
+    pub fn send(&mut self, mut request: Request) {
+        self.sent += 1;
+        request.id = self.sent;
+        // The worker lives as long as the app; if it died, the numbers just stay unknown.
+        let _ = self.requests.send(request);
+    }
+
+    /// Whether the newest request is still being worked on.
+    pub fn busy(&self) -> bool {
+        self.answered < self.sent
+    }
+
+    /// The newest answer that has arrived, if any.
+    pub fn receive(&mut self) -> Option<Outcome> {
+        let newest = self.outcomes.try_iter().last()?;
+        self.answered = newest.id;
+        Some(newest)
+    }
+}
+
+fn analyse(request: &Request, last: &mut Option<(u64, Camera, Arc<CoverageImage>)>) -> Outcome {
+    let reused = last
+        .as_ref()
+        .filter(|(generation, camera, _)| {
+            (*generation, *camera) == (request.scene_generation, request.camera)
+        })
+        .map(|(_, _, image)| image.clone());
+    let mut reference_ms = None;
+    let reference = match reused {
+        Some(image) => Ok(image),
+        None => {
+            let start = Instant::now();
+            let result = reference::rasterize(&request.scene, &request.camera)
+                .map(Arc::new)
+                .map_err(|e| e.to_string());
+            reference_ms = Some(start.elapsed().as_secs_f64() * 1e3);
+            if let Ok(image) = &result {
+                *last = Some((request.scene_generation, request.camera, image.clone()));
+            }
+            result
+        }
+    };
+    let errors = match &reference {
+        Ok(reference) => request
+            .captures
+            .iter()
+            .map(|(pane, image)| {
+                (
+                    *pane,
+                    metrics::compare(image, reference).map_err(|e| e.to_string()),
+                )
+            })
+            .collect(),
+        Err(_) => Vec::new(),
+    };
+    Outcome {
+        id: request.id,
+        scene_generation: request.scene_generation,
+        camera: request.camera,
+        reference,
+        reference_ms,
+        errors,
+    }
+}

@@ -1,0 +1,162 @@
+//! Steering the shared camera: drag to pan, wheel to zoom about the cursor, rotate, skew
+//! and tilt about the view's centre, reset and fit. The render core's [`Camera`] is built
+//! from [`CameraSettings`] for each pane's size.
+
+use glam::{DMat2, DVec2};
+
+use super::settings::CameraSettings;
+use crate::camera::Camera;
+use crate::scene::Scene;
+
+/// The zoom range the explorer offers, px/em.
+pub const MIN_SIZE_PX_PER_EM: f64 = 0.1;
+pub const MAX_SIZE_PX_PER_EM: f64 = 100_000.0;
+/// Tilt beyond this puts most scenes partly behind the eye.
+pub const MAX_TILT_DEG: f64 = 75.0;
+/// Space left around the text when the view is fitted to it, pixels.
+const FIT_MARGIN_PX: f64 = 16.0;
+
+impl CameraSettings {
+    /// [a b; c d]: the skew, then the rotation.
+    pub fn matrix(&self) -> DMat2 {
+        let (sin, cos) = self.rotation_deg.to_radians().sin_cos();
+        let rotation = Camera::matrix_from_rows(cos, -sin, sin, cos);
+        rotation * Camera::matrix_from_rows(1.0, self.skew, 0.0, 1.0)
+    }
+
+    /// The camera for a pane of `width`×`height` pixels.
+    pub fn camera(&self, width: u32, height: u32) -> Camera {
+        let mut camera = Camera::new(
+            width,
+            height,
+            self.size_px_per_em,
+            DVec2::from_array(self.origin),
+        );
+        camera.matrix = self.matrix();
+        camera.tilt_deg = self.tilt_deg;
+        camera
+    }
+
+    /// Font units → pixels, before the tilt: image = origin + linear · (x, y).
+    fn linear(&self, units_per_em: f64) -> DMat2 {
+        let s = self.size_px_per_em / units_per_em;
+        DMat2::from_cols(DVec2::new(s, 0.0), DVec2::new(0.0, -s)) * self.matrix()
+    }
+
+    /// Applies `change`, keeping the scene point under `anchor` (pixels) where it is.
+    fn keeping(&mut self, anchor: DVec2, units_per_em: f64, change: impl FnOnce(&mut Self)) {
+        let before = self.linear(units_per_em);
+        let world = before.inverse() * (anchor - DVec2::from_array(self.origin));
+        change(self);
+        let after = self.linear(units_per_em);
+        if after.determinant().is_finite() && after.determinant() != 0.0 {
+            self.origin = (anchor - after * world).to_array();
+        }
+    }
+
+    pub fn pan(&mut self, delta: DVec2) {
+        self.origin = (DVec2::from_array(self.origin) + delta).to_array();
+    }
+
+    /// Multiplies the size by `factor` (clamped to the zoom range) about `anchor`.
+    pub fn zoom(&mut self, factor: f64, anchor: DVec2, units_per_em: f64) {
+        self.keeping(anchor, units_per_em, |c| {
+            c.size_px_per_em =
+                (c.size_px_per_em * factor).clamp(MIN_SIZE_PX_PER_EM, MAX_SIZE_PX_PER_EM);
+        });
+    }
+
+    /// Sets the size, zooming about `anchor`.
+    pub fn set_size(&mut self, size: f64, anchor: DVec2, units_per_em: f64) {
+        self.zoom(size / self.size_px_per_em, anchor, units_per_em);
+    }
+
+    pub fn rotate(&mut self, degrees: f64, anchor: DVec2, units_per_em: f64) {
+        self.keeping(anchor, units_per_em, |c| {
+            c.rotation_deg = (c.rotation_deg + degrees + 180.0).rem_euclid(360.0) - 180.0;
+        });
+    }
+
+    pub fn set_skew(&mut self, skew: f64, anchor: DVec2, units_per_em: f64) {
+        self.keeping(anchor, units_per_em, |c| c.skew = skew);
+    }
+
+    /// Back to no rotation, skew or tilt, the size kept, the text's top-left corner at
+    /// the margin.
+    pub fn reset(&mut self, scene: &Scene) {
+        *self = CameraSettings {
+            size_px_per_em: self.size_px_per_em,
+            ..CameraSettings::default()
+        };
+        self.place_ink_at_margin(scene);
+    }
+
+    /// Resets and picks the size at which the whole scene fits a pane of `size` pixels.
+    pub fn fit(&mut self, scene: &Scene, size: DVec2) {
+        self.reset(scene);
+        let Some(ink) = scene.ink_bounds() else {
+            return;
+        };
+        let room = (size - 2.0 * FIT_MARGIN_PX).max(DVec2::ONE);
+        let em = ink.size().max(DVec2::splat(1.0)) / scene.units_per_em;
+        self.size_px_per_em = (room / em)
+            .min_element()
+            .clamp(MIN_SIZE_PX_PER_EM, MAX_SIZE_PX_PER_EM);
+        self.place_ink_at_margin(scene);
+    }
+
+    fn place_ink_at_margin(&mut self, scene: &Scene) {
+        if let Some(ink) = scene.ink_bounds() {
+            let s = self.size_px_per_em / scene.units_per_em;
+            self.origin = [FIT_MARGIN_PX - ink.min.x * s, FIT_MARGIN_PX + ink.max.y * s];
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::project;
+
+    /// Where font point `p` of a glyph at the origin lands.
+    fn image_of(c: &CameraSettings, p: DVec2) -> DVec2 {
+        project(&c.camera(800, 600).glyph_to_image(1000.0, DVec2::ZERO), p)
+    }
+
+    #[test]
+    fn zoom_and_rotation_keep_the_anchor_fixed() {
+        let mut c = CameraSettings::default();
+        let anchor = DVec2::new(321.5, 123.25);
+        let linear = c.linear(1000.0);
+        let world = linear.inverse() * (anchor - DVec2::from_array(c.origin));
+        c.zoom(7.5, anchor, 1000.0);
+        assert!((image_of(&c, world) - anchor).length() < 1e-9);
+        c.rotate(33.0, anchor, 1000.0);
+        c.set_skew(0.4, anchor, 1000.0);
+        assert!((image_of(&c, world) - anchor).length() < 1e-9);
+    }
+
+    #[test]
+    fn zoom_in_and_out_by_powers_of_two_returns_exactly() {
+        let start = CameraSettings::default();
+        let mut c = start;
+        let anchor = DVec2::new(400.0, 300.0);
+        for _ in 0..11 {
+            c.zoom(2.0, anchor, 2048.0);
+        }
+        assert_eq!(c.size_px_per_em, 48.0 * 2048.0);
+        for _ in 0..11 {
+            c.zoom(0.5, anchor, 2048.0);
+        }
+        assert_eq!(c, start);
+    }
+
+    #[test]
+    fn zoom_stays_within_range() {
+        let mut c = CameraSettings::default();
+        c.zoom(1e9, DVec2::ZERO, 1000.0);
+        assert_eq!(c.size_px_per_em, MAX_SIZE_PX_PER_EM);
+        c.zoom(1e-12, DVec2::ZERO, 1000.0);
+        assert_eq!(c.size_px_per_em, MIN_SIZE_PX_PER_EM);
+    }
+}

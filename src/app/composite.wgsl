@@ -1,0 +1,73 @@
+// Draws a pane of the explorer: a coverage texture (a method's target, or the reference
+// uploaded into one) turned into the picture to show, at one texel per framebuffer
+// pixel. Prefixed with shaders/common.wgsl for `heat_color`.
+
+struct Composite {
+    // The pane's top-left corner in framebuffer pixels, and its size.
+    origin: vec2<f32>,
+    size: vec2<f32>,
+    // Linear-light colours.
+    text: vec4<f32>,
+    background: vec4<f32>,
+    // 0 coverage, 1 the method's overlay picture, 2 signed difference first − second,
+    // 3 the cost heat map's colour scale (left to right).
+    mode: u32,
+    // 1 where the framebuffer encodes sRGB itself.
+    srgb_target: u32,
+    // Difference at full intensity.
+    difference_scale: f32,
+    _pad: f32,
+}
+
+@group(0) @binding(0) var<uniform> composite: Composite;
+@group(0) @binding(1) var first: texture_2d<f32>;
+@group(0) @binding(2) var second: texture_2d<f32>;
+
+@vertex
+fn vs_main(@builtin(vertex_index) vertex: u32) -> @builtin(position) vec4<f32> {
+    // One triangle covering the viewport, which egui sets to the pane.
+    let uv = vec2<f32>(f32((vertex << 1u) & 2u), f32(vertex & 2u));
+    return vec4<f32>(uv * vec2<f32>(2.0, -2.0) + vec2<f32>(-1.0, 1.0), 0.0, 1.0);
+}
+
+fn srgb_encode(linear: vec3<f32>) -> vec3<f32> {
+    let c = clamp(linear, vec3<f32>(0.0), vec3<f32>(1.0));
+    return select(1.055 * pow(c, vec3<f32>(1.0 / 2.4)) - 0.055, 12.92 * c, c <= vec3<f32>(0.0031308));
+}
+
+fn srgb_decode(encoded: vec3<f32>) -> vec3<f32> {
+    let c = clamp(encoded, vec3<f32>(0.0), vec3<f32>(1.0));
+    return select(pow((c + 0.055) / 1.055, vec3<f32>(2.4)), c / 12.92, c <= vec3<f32>(0.04045));
+}
+
+// `value` holds what the pixel should read as stored bytes (/255); an sRGB framebuffer
+// would encode it again, so it gets the decoded value.
+fn as_stored(value: vec3<f32>) -> vec4<f32> {
+    if composite.srgb_target == 1u {
+        return vec4<f32>(srgb_decode(value), 1.0);
+    }
+    return vec4<f32>(clamp(value, vec3<f32>(0.0), vec3<f32>(1.0)), 1.0);
+}
+
+@fragment
+fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
+    let local = position.xy - composite.origin;
+    if composite.mode == 3u {
+        return as_stored(heat_color(local.x / composite.size.x));
+    }
+    let texel = vec2<i32>(floor(local));
+    let a = textureLoad(first, texel, 0);
+    if composite.mode == 1u {
+        // Overlay pictures are written as display values, as the CLI saves them.
+        return as_stored(a.rgb);
+    }
+    if composite.mode == 2u {
+        // The colours of `metrics::error_image`: red where `first` covers more.
+        let b = textureLoad(second, texel, 0);
+        let e = clamp((clamp(a.a, 0.0, 1.0) - clamp(b.a, 0.0, 1.0)) / composite.difference_scale, -1.0, 1.0);
+        return as_stored(vec3<f32>(max(e, 0.0), 0.0, max(-e, 0.0)));
+    }
+    // Coverage blends text over background in linear light.
+    let linear = mix(composite.background.rgb, composite.text.rgb, clamp(a.a, 0.0, 1.0));
+    return as_stored(srgb_encode(linear));
+}

@@ -1,0 +1,342 @@
+//! The side panel (scene, camera, view, panes), the status bar with the pixel inspector,
+//! and the windows (help, open font, speed vs error).
+
+use eframe::egui;
+use glam::DVec2;
+
+use super::camera_control::{MAX_SIZE_PX_PER_EM, MAX_TILT_DEG, MIN_SIZE_PX_PER_EM};
+use super::panes::pane_controls;
+use super::settings::{FontChoice, Layout, PaneSource};
+use super::{Explorer, SHORTCUTS, pane_letter};
+use crate::font::SHIPPED_FONTS;
+
+impl Explorer {
+    pub(super) fn controls(&mut self, ui: &mut egui::Ui) {
+        ui.heading("Scene");
+        self.scene_controls(ui);
+        ui.separator();
+        ui.heading("Camera");
+        self.camera_controls(ui);
+        ui.separator();
+        ui.heading("View");
+        self.view_controls(ui);
+        ui.separator();
+        let visible = self.settings.layout.panes();
+        for index in 0..visible {
+            egui::CollapsingHeader::new(format!("Pane {}", pane_letter(index)))
+                .default_open(true)
+                .show(ui, |ui| {
+                    pane_controls(
+                        ui,
+                        index,
+                        &mut self.settings.panes[index],
+                        &self.catalog,
+                        visible,
+                    );
+                });
+        }
+        ui.separator();
+        ui.horizontal(|ui| {
+            if ui.button("Speed vs error…").on_hover_text("P").clicked() {
+                self.sweep.open = true;
+            }
+            if ui
+                .button("Screenshot")
+                .on_hover_text("S: PNG in the current folder")
+                .clicked()
+            {
+                self.screenshot(ui.ctx());
+            }
+            if ui.button("Help").on_hover_text("H").clicked() {
+                self.help_open = true;
+            }
+        });
+    }
+
+    fn scene_controls(&mut self, ui: &mut egui::Ui) {
+        let scene = &mut self.settings.scene;
+        ui.horizontal(|ui| {
+            ui.label("font");
+            egui::ComboBox::from_id_salt("font")
+                .selected_text(scene.font.label())
+                .width(170.0)
+                .show_ui(ui, |ui| {
+                    for (i, (name, _, _)) in SHIPPED_FONTS.iter().enumerate() {
+                        if ui
+                            .selectable_label(scene.font == FontChoice::Shipped(i), *name)
+                            .clicked()
+                        {
+                            scene.font = FontChoice::Shipped(i);
+                            scene.variations.clear();
+                        }
+                    }
+                });
+            if ui
+                .button("Open…")
+                .on_hover_text("Ctrl+O, or drop a font file")
+                .clicked()
+            {
+                self.font_dialog.open = true;
+            }
+        });
+        if let Some(font) = self.scene.font() {
+            for axis in font.axes() {
+                let mut value = scene
+                    .variations
+                    .iter()
+                    .find(|(t, _)| *t == axis.tag)
+                    .map_or(axis.default, |(_, v)| *v);
+                let slider = egui::Slider::new(&mut value, axis.min..=axis.max).text(&axis.tag);
+                if ui.add(slider).changed() {
+                    scene.variations.retain(|(t, _)| *t != axis.tag);
+                    scene.variations.push((axis.tag.clone(), value));
+                }
+            }
+        }
+        ui.horizontal(|ui| {
+            ui.checkbox(&mut scene.glyph_mode, "one glyph")
+                .on_hover_text("G: a single glyph, big; a character, or # and a glyph id");
+            ui.add_enabled(
+                scene.glyph_mode,
+                egui::TextEdit::singleline(&mut scene.glyph)
+                    .desired_width(80.0)
+                    .id_salt("glyph"),
+            );
+        });
+        ui.add_enabled(
+            !scene.glyph_mode,
+            egui::TextEdit::multiline(&mut scene.text)
+                .desired_rows(4)
+                .desired_width(f32::INFINITY)
+                .id_salt("text"),
+        );
+        if let Some(problem) = self.scene.problem() {
+            ui.colored_label(ui.visuals().error_fg_color, problem);
+        } else if let Some(scene) = self.scene.scene() {
+            ui.weak(format!(
+                "{} glyphs, {} distinct",
+                scene.instances.len(),
+                scene.glyphs.len()
+            ));
+        }
+    }
+
+    fn camera_controls(&mut self, ui: &mut egui::Ui) {
+        let upem = self.scene.units_per_em();
+        let centre = self.view.camera.map_or(DVec2::ZERO, |c| {
+            DVec2::new(f64::from(c.width), f64::from(c.height)) / 2.0
+        });
+        let camera = &mut self.settings.camera;
+        let mut size = camera.size_px_per_em;
+        ui.horizontal(|ui| {
+            ui.label("size");
+            let speed = size * 0.01;
+            let drag = egui::DragValue::new(&mut size)
+                .range(MIN_SIZE_PX_PER_EM..=MAX_SIZE_PX_PER_EM)
+                .speed(speed)
+                .max_decimals(3)
+                .suffix(" px/em");
+            if ui
+                .add(drag)
+                .on_hover_text("wheel over the view zooms about the cursor")
+                .changed()
+            {
+                camera.set_size(size, centre, upem);
+            }
+        });
+        let mut rotation = camera.rotation_deg;
+        if ui
+            .add(egui::Slider::new(&mut rotation, -180.0..=180.0).text("rotate °"))
+            .changed()
+        {
+            camera.rotate(rotation - camera.rotation_deg, centre, upem);
+        }
+        let mut skew = camera.skew;
+        if ui
+            .add(egui::Slider::new(&mut skew, -1.0..=1.0).text("skew"))
+            .changed()
+        {
+            camera.set_skew(skew, centre, upem);
+        }
+        ui.add(
+            egui::Slider::new(&mut camera.tilt_deg, -MAX_TILT_DEG..=MAX_TILT_DEG).text("tilt °"),
+        )
+        .on_hover_text("perspective: the image plane turns about its horizontal centre line");
+        ui.horizontal(|ui| {
+            let scene = self.scene.scene().cloned();
+            if ui
+                .add_enabled(scene.is_some(), egui::Button::new("Reset"))
+                .on_hover_text("R")
+                .clicked()
+                && let Some(scene) = &scene
+            {
+                self.settings.camera.reset(scene);
+            }
+            if ui
+                .add_enabled(scene.is_some(), egui::Button::new("Fit"))
+                .on_hover_text("F")
+                .clicked()
+                && let Some(scene) = &scene
+            {
+                self.settings.camera.fit(scene, centre * 2.0);
+            }
+        });
+    }
+
+    fn view_controls(&mut self, ui: &mut egui::Ui) {
+        let settings = &mut self.settings;
+        ui.horizontal(|ui| {
+            for (layout, key) in Layout::ALL.into_iter().zip(["1", "2", "4"]) {
+                ui.selectable_value(&mut settings.layout, layout, layout.label())
+                    .on_hover_text(key);
+            }
+        });
+        ui.horizontal(|ui| {
+            ui.label("text");
+            ui.color_edit_button_srgb(&mut settings.text_color);
+            ui.label("background");
+            ui.color_edit_button_srgb(&mut settings.background);
+        });
+        ui.add(
+            egui::Slider::new(&mut settings.difference_scale, 0.01..=1.0)
+                .logarithmic(true)
+                .text("difference scale"),
+        )
+        .on_hover_text("coverage error drawn at full red or blue");
+        ui.checkbox(&mut settings.continuous, "draw continuously")
+            .on_hover_text("C: redraw every frame, for live GPU time; otherwise panes are drawn only when something changes");
+    }
+
+    pub(super) fn status_bar(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal_wrapped(|ui| {
+            ui.label(self.inspector_text());
+            ui.separator();
+            let mut intervals: Vec<f64> = self.frame_intervals.iter().copied().collect();
+            intervals.sort_by(f64::total_cmp);
+            if let Some(median) = intervals.get(intervals.len() / 2) {
+                ui.weak(format!("frame interval {median:.1} ms"))
+                    .on_hover_text(
+                        "median of the last 60 frames; in continuous mode, the frame time",
+                    );
+            }
+            if let Some(ms) = self.reference.cpu_ms {
+                ui.weak(format!("reference {ms:.0} ms (CPU, background)"));
+            }
+            if self.analysis.busy() {
+                ui.spinner();
+            }
+            let status = self
+                .status
+                .lock()
+                .unwrap_or_else(|p| p.into_inner())
+                .clone();
+            if !status.is_empty() {
+                ui.separator();
+                ui.label(status);
+            }
+            if let Some((gpu, _)) = &self.gpu {
+                ui.separator();
+                ui.weak(gpu.adapter_name());
+            } else {
+                ui.colored_label(
+                    ui.visuals().error_fg_color,
+                    "no wgpu device: the explorer needs eframe's wgpu renderer",
+                );
+            }
+        });
+    }
+
+    /// The pixel inspector: coverage under the cursor in every pane and the reference.
+    fn inspector_text(&self) -> String {
+        let Some((pane, x, y)) = self.view.hovered else {
+            return "pixel inspector: point at a pane".into();
+        };
+        let mut parts = vec![format!("pixel ({x}, {y}) in {}", pane_letter(pane))];
+        for index in 0..self.settings.layout.panes() {
+            let name = match &self.settings.panes[index].source {
+                PaneSource::Method { name, .. } => name.clone(),
+                PaneSource::Difference { .. } => continue,
+            };
+            let value = self
+                .pane_capture(index)
+                .or_else(|| {
+                    (name == super::REFERENCE)
+                        .then(|| self.reference_image())
+                        .flatten()
+                })
+                .map_or("…".into(), |img| format!("{:.4}", img.get(x, y)));
+            parts.push(format!("{} {name} {value}", pane_letter(index)));
+        }
+        let reference = self
+            .reference_image()
+            .map_or("…".into(), |img| format!("{:.4}", img.get(x, y)));
+        parts.push(format!("reference {reference}"));
+        parts.join(" · ")
+    }
+
+    pub(super) fn windows(&mut self, ctx: &egui::Context) {
+        egui::Window::new("Keyboard and mouse")
+            .open(&mut self.help_open)
+            .resizable(false)
+            .show(ctx, |ui| {
+                egui::Grid::new("shortcuts").striped(true).show(ui, |ui| {
+                    for (keys, what) in SHORTCUTS {
+                        ui.strong(*keys);
+                        ui.label(*what);
+                        ui.end_row();
+                    }
+                });
+            });
+        if let Some(path) = self.font_dialog.show(ctx) {
+            self.open_font(path);
+        }
+        let mut open = self.sweep.open;
+        let mut start = false;
+        let mut apply = None;
+        egui::Window::new("Speed vs error")
+            .open(&mut open)
+            .default_pos([360.0, 120.0])
+            .default_size([720.0, 480.0])
+            .show(ctx, |ui| {
+                ui.horizontal(|ui| {
+                    if self.sweep.running() {
+                        if ui.button("Cancel").clicked() {
+                            self.sweep.cancel();
+                        }
+                    } else if ui
+                        .button("Run sweep")
+                        .on_hover_text(
+                            "every parameter combination of every method, on this scene and view",
+                        )
+                        .clicked()
+                    {
+                        start = true;
+                    }
+                    if let Some((done, total)) = self.sweep.progress() {
+                        ui.add(
+                            egui::ProgressBar::new(done as f32 / total.max(1) as f32)
+                                .text(format!("{done} / {total}"))
+                                .desired_width(200.0),
+                        );
+                    } else if !self.sweep.points.is_empty() {
+                        ui.weak(format!("measured on {}", self.sweep.measured_on));
+                    }
+                });
+                for problem in &self.sweep.problems {
+                    ui.colored_label(ui.visuals().warn_fg_color, problem);
+                }
+                ui.weak("Click a point to give its parameters to pane A.");
+                apply = self.sweep.plot(ui);
+            });
+        self.sweep.open = open;
+        if start {
+            self.start_sweep(ctx);
+        }
+        if let Some(point) = apply {
+            self.settings.panes[0].source = PaneSource::Method {
+                name: point.method.into(),
+                params: point.params,
+            };
+        }
+    }
+}

@@ -1,0 +1,421 @@
+//! The panes: which methods there are and what each can show (the catalog), each pane's
+//! method kept prepared for the scene (prepared again only when the scene or its
+//! parameters change), and the controls that choose them.
+
+use std::sync::Arc;
+use std::time::Instant;
+
+use eframe::egui;
+
+use super::gpu_view::{PaneSurface, SharedSurface, lock};
+use super::settings::{PaneOverlay, PaneSettings, PaneSource};
+use crate::camera::Camera;
+use crate::coverage::CoverageImage;
+use crate::gpu::GpuContext;
+use crate::methods::{self, CurveCost, METHOD_NAMES, Overlay, ParamSpec};
+use crate::metrics::ErrorStats;
+use crate::scene::Scene;
+
+/// The CPU reference's name among the methods.
+pub const REFERENCE: &str = "reference";
+
+/// Every method of this build, and what each can do.
+pub struct Catalog {
+    pub methods: Vec<MethodEntry>,
+}
+
+pub struct MethodEntry {
+    pub name: &'static str,
+    /// Why it cannot be used ("not implemented yet (issue #N)").
+    pub unavailable: Option<String>,
+    pub overlays: &'static [Overlay],
+}
+
+impl Catalog {
+    /// Asks each method of [`METHOD_NAMES`] for itself with default parameters.
+    pub fn discover() -> Catalog {
+        let methods = METHOD_NAMES
+            .iter()
+            .map(|&name| {
+                if name == REFERENCE {
+                    return MethodEntry {
+                        name,
+                        unavailable: None,
+                        overlays: &[],
+                    };
+                }
+                match methods::create(name, &[]) {
+                    Ok(method) => MethodEntry {
+                        name,
+                        unavailable: None,
+                        overlays: method.overlays(),
+                    },
+                    Err(e) => MethodEntry {
+                        name,
+                        unavailable: Some(e.to_string()),
+                        overlays: &[],
+                    },
+                }
+            })
+            .collect();
+        Catalog { methods }
+    }
+
+    pub fn get(&self, name: &str) -> Option<&MethodEntry> {
+        self.methods.iter().find(|m| m.name == name)
+    }
+
+    /// The methods that can be drawn, on the GPU.
+    pub fn gpu_methods(&self) -> impl Iterator<Item = &MethodEntry> {
+        self.methods
+            .iter()
+            .filter(|m| m.unavailable.is_none() && m.name != REFERENCE)
+    }
+
+    /// Why method `name` cannot draw `overlay`, or None if it can.
+    pub fn overlay_unavailable(&self, name: &str, overlay: Overlay) -> Option<String> {
+        if self
+            .get(name)
+            .is_some_and(|m| m.overlays.contains(&overlay))
+        {
+            return None;
+        }
+        let able: Vec<&str> = self
+            .gpu_methods()
+            .filter(|m| m.overlays.contains(&overlay))
+            .map(|m| m.name)
+            .collect();
+        Some(if able.is_empty() {
+            format!(
+                "'{name}' cannot draw {}; no method in this build draws it yet",
+                overlay_description(overlay)
+            )
+        } else {
+            format!(
+                "'{name}' cannot draw {}; {} can",
+                overlay_description(overlay),
+                able.join(", ")
+            )
+        })
+    }
+}
+
+/// What an overlay shows, for labels and tooltips.
+pub fn overlay_description(overlay: Overlay) -> &'static str {
+    match overlay {
+        Overlay::EqualDistance => "the purple equal-distance regions",
+        Overlay::CellGrid => "the cell grid, cells tinted by how many curves they list",
+        Overlay::CurveClasses => "each curve's sign class for the ray through the pixel",
+        Overlay::CostHeatMap => "curves evaluated per pixel, on a colour scale",
+        Overlay::TriangleWireframe => "the triangles as wireframe",
+        Overlay::SubdivisionPoints => "where curves were subdivided",
+    }
+}
+
+/// A pane at run time: its GPU surface and the numbers shown with it.
+pub struct Pane {
+    pub surface: SharedSurface,
+    /// What the surface's method was made from: the pane's source and overlay, and the
+    /// scene generation it was prepared for.
+    built: Option<(PaneSource, PaneOverlay, u64)>,
+    /// Why the pane shows nothing (method unavailable, bad parameters, preparing failed).
+    pub problem: Option<String>,
+    pub gpu_bytes: u64,
+    pub prepare_ms: f64,
+    pub curves: Option<(Camera, CurveCost)>,
+    pub error: Option<(Camera, ErrorStats)>,
+    /// This pane's coverage for a resting camera, read back for the error and the
+    /// pixel inspector.
+    pub capture: Option<(Camera, Arc<CoverageImage>)>,
+}
+
+impl Pane {
+    pub fn new() -> Pane {
+        Pane {
+            surface: PaneSurface::new(),
+            built: None,
+            problem: None,
+            gpu_bytes: 0,
+            prepare_ms: 0.0,
+            curves: None,
+            error: None,
+            capture: None,
+        }
+    }
+
+    /// Makes the pane's method match its settings and the scene: creates and prepares
+    /// it when either changed, and does nothing otherwise (so never per frame).
+    pub fn sync(
+        &mut self,
+        gpu: &GpuContext,
+        catalog: &Catalog,
+        settings: &PaneSettings,
+        scene: Option<(&Scene, u64)>,
+    ) {
+        let generation = scene.map_or(0, |(_, g)| g);
+        let wanted = (
+            settings.source.clone(),
+            settings.overlay.clone(),
+            generation,
+        );
+        if self.built.as_ref() == Some(&wanted) {
+            return;
+        }
+        self.built = Some(wanted);
+        self.problem = None;
+        self.gpu_bytes = 0;
+        self.curves = None;
+        self.error = None;
+        self.capture = None;
+        let mut surface = lock(&self.surface);
+        surface.method = None;
+        surface.generation += 1;
+        surface.timer.clear();
+        let PaneSource::Method { name, params } = &settings.source else {
+            return;
+        };
+        if name == REFERENCE {
+            return;
+        }
+        if let Some(reason) = catalog.get(name).and_then(|m| m.unavailable.clone()) {
+            self.problem = Some(reason);
+            return;
+        }
+        let Some((scene, _)) = scene else {
+            return;
+        };
+        let mut params = params.clone();
+        if let PaneOverlay::Method(overlay) = &settings.overlay {
+            params.push(("overlay".into(), overlay.clone()));
+        }
+        let start = Instant::now();
+        let made = methods::create(name, &params).and_then(|mut method| {
+            method.prepare(gpu, scene)?;
+            Ok(method)
+        });
+        self.prepare_ms = start.elapsed().as_secs_f64() * 1e3;
+        match made {
+            Ok(method) => {
+                self.gpu_bytes = method.gpu_bytes();
+                surface.method = Some(method);
+            }
+            Err(e) => self.problem = Some(e.to_string()),
+        }
+    }
+
+    /// Whether the pane's picture is this method's own (not the reference or a difference).
+    pub fn has_method(&self) -> bool {
+        lock(&self.surface).method.is_some()
+    }
+}
+
+/// The current value of a parameter (its default when not given).
+fn param_value(params: &[(String, String)], spec: &ParamSpec) -> String {
+    methods::param(params, spec.key)
+        .unwrap_or(spec.choices[0])
+        .to_string()
+}
+
+fn set_param(params: &mut Vec<(String, String)>, spec: &ParamSpec, value: String) {
+    params.retain(|(k, _)| k != spec.key);
+    if value != spec.choices[0] {
+        params.push((spec.key.to_string(), value));
+    }
+}
+
+/// The controls of pane `index`: method (or difference), parameters, overlays.
+pub fn pane_controls(
+    ui: &mut egui::Ui,
+    index: usize,
+    pane: &mut PaneSettings,
+    catalog: &Catalog,
+    visible_panes: usize,
+) {
+    let current = match &pane.source {
+        PaneSource::Method { name, .. } => name.clone(),
+        PaneSource::Difference { .. } => "difference".into(),
+    };
+    egui::ComboBox::from_id_salt((index, "method"))
+        .selected_text(&current)
+        .width(150.0)
+        .show_ui(ui, |ui| {
+            for entry in &catalog.methods {
+                let response = ui
+                    .add_enabled(
+                        entry.unavailable.is_none(),
+                        egui::Button::selectable(current == entry.name, entry.name),
+                    )
+                    .on_disabled_hover_text(entry.unavailable.clone().unwrap_or_default());
+                if response.clicked() && current != entry.name {
+                    pane.source = PaneSource::Method {
+                        name: entry.name.into(),
+                        params: Vec::new(),
+                    };
+                    pane.overlay = PaneOverlay::None;
+                }
+            }
+            let response = ui
+                .add_enabled(
+                    index > 0,
+                    egui::Button::selectable(current == "difference", "difference"),
+                )
+                .on_hover_text("signed difference of two panes, or of a pane and the reference")
+                .on_disabled_hover_text("the first pane always shows a method");
+            if response.clicked() && current != "difference" {
+                pane.source = PaneSource::Difference {
+                    first: 0,
+                    second: None,
+                };
+                pane.overlay = PaneOverlay::None;
+            }
+        });
+    if let Some(reason) = catalog.get(&current).and_then(|m| m.unavailable.as_ref()) {
+        ui.colored_label(ui.visuals().weak_text_color(), reason);
+    }
+    match &mut pane.source {
+        PaneSource::Method { name, params } => {
+            for spec in methods::param_specs(name) {
+                // Overlays have their own row.
+                if spec.key == "overlay" {
+                    continue;
+                }
+                param_control(ui, index, spec, params);
+            }
+        }
+        PaneSource::Difference { first, second } => {
+            difference_controls(ui, index, first, second, visible_panes);
+        }
+    }
+    overlay_controls(ui, pane, catalog);
+}
+
+fn param_control(
+    ui: &mut egui::Ui,
+    index: usize,
+    spec: &ParamSpec,
+    params: &mut Vec<(String, String)>,
+) {
+    let mut value = param_value(params, spec);
+    let before = value.clone();
+    ui.horizontal(|ui| {
+        ui.label(spec.key).on_hover_text(spec.help);
+        egui::ComboBox::from_id_salt((index, spec.key))
+            .selected_text(&value)
+            .show_ui(ui, |ui| {
+                for choice in spec.choices {
+                    ui.selectable_value(&mut value, choice.to_string(), *choice);
+                }
+            })
+            .response
+            .on_hover_text(spec.help);
+        if let Some((lo, hi)) = spec.range {
+            let mut n = value.parse::<u32>().unwrap_or(lo);
+            let response = ui
+                .add(egui::DragValue::new(&mut n).range(lo..=hi))
+                .on_hover_text(format!("{}: or a number {lo}–{hi}", spec.key));
+            if response.changed() {
+                value = n.to_string();
+            }
+        }
+    });
+    if value != before {
+        set_param(params, spec, value);
+    }
+}
+
+fn pane_letter(index: usize) -> char {
+    (b'A' + index as u8) as char
+}
+
+fn difference_controls(
+    ui: &mut egui::Ui,
+    index: usize,
+    first: &mut usize,
+    second: &mut Option<usize>,
+    visible_panes: usize,
+) {
+    let others: Vec<usize> = (0..visible_panes).filter(|&i| i != index).collect();
+    ui.horizontal(|ui| {
+        egui::ComboBox::from_id_salt((index, "first"))
+            .selected_text(pane_letter(*first).to_string())
+            .width(40.0)
+            .show_ui(ui, |ui| {
+                for &i in &others {
+                    ui.selectable_value(first, i, pane_letter(i).to_string());
+                }
+            });
+        ui.label("−");
+        let label = |s: Option<usize>| {
+            s.map_or_else(|| REFERENCE.to_string(), |i| pane_letter(i).to_string())
+        };
+        egui::ComboBox::from_id_salt((index, "second"))
+            .selected_text(label(*second))
+            .width(80.0)
+            .show_ui(ui, |ui| {
+                ui.selectable_value(second, None, REFERENCE);
+                for &i in &others {
+                    ui.selectable_value(second, Some(i), pane_letter(i).to_string());
+                }
+            });
+    });
+}
+
+/// One toggle per overlay: the method's own (greyed with the reason where it has none),
+/// the error against the reference, and the outline on top.
+fn overlay_controls(ui: &mut egui::Ui, pane: &mut PaneSettings, catalog: &Catalog) {
+    let method = match &pane.source {
+        PaneSource::Method { name, .. } => Some(name.clone()),
+        PaneSource::Difference { .. } => None,
+    };
+    let is_reference = method.as_deref() == Some(REFERENCE);
+    ui.horizontal_wrapped(|ui| {
+        ui.label("overlay");
+        let mut choose = |ui: &mut egui::Ui,
+                          overlay: PaneOverlay,
+                          label: &str,
+                          unavailable: Option<String>,
+                          help: &str| {
+            let selected = pane.overlay == overlay;
+            let response = ui
+                .add_enabled(
+                    unavailable.is_none(),
+                    egui::Button::selectable(selected, label),
+                )
+                .on_hover_text(help)
+                .on_disabled_hover_text(unavailable.unwrap_or_default());
+            if response.clicked() {
+                pane.overlay = if selected { PaneOverlay::None } else { overlay };
+            }
+        };
+        for overlay in Overlay::ALL {
+            let unavailable = match &method {
+                Some(name) => catalog.overlay_unavailable(name, overlay),
+                None => Some("a difference pane draws no method overlay".into()),
+            };
+            choose(
+                ui,
+                PaneOverlay::Method(overlay.name().into()),
+                overlay.name(),
+                unavailable,
+                overlay_description(overlay),
+            );
+        }
+        let error_unavailable = if is_reference {
+            Some("the reference is what the error is measured against".into())
+        } else if method.is_none() {
+            Some("a difference pane already shows a difference".into())
+        } else {
+            None
+        };
+        choose(
+            ui,
+            PaneOverlay::Error,
+            "error",
+            error_unavailable,
+            "signed error against the reference, once the view rests (red: too much \
+             coverage, blue: too little)",
+        );
+        ui.checkbox(&mut pane.outline, "outline")
+            .on_hover_text("the font's outline: on-curve points filled, off-curve hollow");
+    });
+}

@@ -1,0 +1,159 @@
+//! `glyphscope screenshots`: the README's pictures of the explorer, made headlessly by
+//! the real app — the methods side by side, each debug overlay, the speed-vs-error plot.
+
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+use super::Explorer;
+use super::headless::Headless;
+use super::panes::{Catalog, REFERENCE};
+use super::settings::{Layout, PaneOverlay, PaneSettings, PaneSource, Settings};
+use crate::Error;
+use crate::methods::Overlay;
+
+/// Screen size of every screenshot, pixels.
+const WIDTH: u32 = 1400;
+const HEIGHT: u32 = 860;
+/// Longest wait for the background work of one screenshot.
+const PATIENCE: Duration = Duration::from_secs(300);
+
+/// Writes every screenshot into `dir`; returns the files written.
+pub fn write_all(dir: &Path) -> Result<Vec<String>, Error> {
+    std::fs::create_dir_all(dir)
+        .map_err(|e| Error::Output(format!("cannot create '{}': {e}", dir.display())))?;
+    let mut screen = Headless::new(WIDTH, HEIGHT)?;
+    let catalog = Catalog::discover();
+    let mut written = Vec::new();
+    let mut save = |name: String, settings: Settings, sweep: bool| -> Result<(), Error> {
+        let path = dir.join(&name);
+        let image = photograph(&mut screen, settings, sweep)?;
+        image
+            .save(&path)
+            .map_err(|e| Error::Output(format!("cannot write '{}': {e}", path.display())))?;
+        eprintln!("wrote {}", path.display());
+        written.push(name);
+        Ok(())
+    };
+    save(
+        "app-methods.png".into(),
+        methods_side_by_side(&catalog),
+        false,
+    )?;
+    for overlay in Overlay::ALL {
+        let Some(method) = catalog
+            .gpu_methods()
+            .find(|m| m.overlays.contains(&overlay))
+        else {
+            continue;
+        };
+        let mut pane = PaneSettings::method(method.name);
+        pane.overlay = PaneOverlay::Method(overlay.name().into());
+        save(
+            format!("app-overlay-{}.png", overlay.name()),
+            one_glyph(pane),
+            false,
+        )?;
+    }
+    if let Some(method) = catalog.gpu_methods().find(|m| m.name != "bounds") {
+        let mut pane = PaneSettings::method(method.name);
+        pane.overlay = PaneOverlay::Error;
+        let mut settings = one_pane(pane);
+        settings.camera.size_px_per_em = 14.0;
+        settings.camera.origin = [16.0, 90.0];
+        settings.difference_scale = 0.1;
+        save("app-overlay-error.png".into(), settings, false)?;
+        let mut pane = PaneSettings::method(method.name);
+        pane.outline = true;
+        save("app-overlay-outline.png".into(), one_glyph(pane), false)?;
+    }
+    let mut settings = methods_side_by_side(&catalog);
+    settings.layout = Layout::Single;
+    settings.camera.size_px_per_em = 24.0;
+    save("app-sweep.png".into(), settings, true)?;
+    Ok(written)
+}
+
+/// The GPU methods in a 2×2 grid (the diagnostic `bounds` last), the reference and a
+/// difference filling any panes left.
+fn methods_side_by_side(catalog: &Catalog) -> Settings {
+    let mut names: Vec<&str> = catalog
+        .gpu_methods()
+        .map(|m| m.name)
+        .filter(|n| *n != "bounds")
+        .collect();
+    names.push(REFERENCE);
+    names.push("bounds");
+    let mut settings = Settings {
+        layout: Layout::Grid,
+        ..Settings::default()
+    };
+    for (pane, name) in settings.panes.iter_mut().zip(names.iter().take(3)) {
+        *pane = PaneSettings::method(name);
+    }
+    settings.panes[3] = if names.len() > 4 {
+        PaneSettings::method(names[3])
+    } else {
+        PaneSettings {
+            source: PaneSource::Difference {
+                first: 0,
+                second: None,
+            },
+            ..PaneSettings::default()
+        }
+    };
+    settings.camera.size_px_per_em = 40.0;
+    settings.camera.origin = [12.0, 110.0];
+    settings
+}
+
+fn one_pane(pane: PaneSettings) -> Settings {
+    let mut settings = Settings {
+        layout: Layout::Single,
+        ..Settings::default()
+    };
+    settings.panes[0] = pane;
+    settings
+}
+
+/// One big glyph in one pane.
+fn one_glyph(pane: PaneSettings) -> Settings {
+    let mut settings = one_pane(pane);
+    settings.scene.glyph_mode = true;
+    settings.scene.glyph = "g".into();
+    settings.camera.size_px_per_em = 700.0;
+    settings.camera.origin = [420.0, 560.0];
+    settings
+}
+
+/// Runs the explorer with `settings` until its numbers are in (and, if asked, a sweep has
+/// run), and returns the last frame.
+fn photograph(
+    screen: &mut Headless,
+    settings: Settings,
+    sweep: bool,
+) -> Result<image::RgbaImage, Error> {
+    let mut app: Explorer = screen.explorer(settings);
+    let start = Instant::now();
+    let mut frames = 0;
+    let mut sweep_started = false;
+    loop {
+        screen.frame(&mut app)?;
+        frames += 1;
+        let settled = frames > 3 && app.settled();
+        if sweep && settled && !sweep_started {
+            app.start_sweep(&screen.context().clone());
+            sweep_started = true;
+        }
+        let done = settled && (!sweep || (sweep_started && !app.sweep_running()));
+        if done {
+            break;
+        }
+        if start.elapsed() > PATIENCE {
+            return Err(Error::Gpu("the explorer did not settle in time".into()));
+        }
+        std::thread::sleep(Duration::from_millis(30));
+    }
+    // One more frame shows what arrived last.
+    screen.frame(&mut app)?;
+    screen.screenshot(&mut app)
+}

@@ -1,0 +1,218 @@
+//! Everything the explorer remembers between runs: the scene, the camera, the layout and
+//! each pane's method, parameters and overlays. Plain data, saved by eframe's storage.
+
+use std::path::PathBuf;
+
+use serde::{Deserialize, Serialize};
+
+use crate::font::SHIPPED_FONTS;
+
+/// Shown at first start: a pangram and the classic type-proofing word.
+pub const DEFAULT_TEXT: &str = "Hamburgefonstiv\nThe quick brown fox jumps over the lazy dog.";
+
+/// Panes there are room for; the layout shows the first 1, 2 or 4.
+pub const PANES: usize = 4;
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Settings {
+    pub scene: SceneSettings,
+    pub camera: CameraSettings,
+    pub layout: Layout,
+    pub panes: [PaneSettings; PANES],
+    /// Text and background colours, sRGB, unmultiplied.
+    pub text_color: [u8; 3],
+    pub background: [u8; 3],
+    /// Full intensity of the signed error and difference pictures, in coverage.
+    pub difference_scale: f32,
+    /// Draw every frame (for live GPU time) rather than only when something changed.
+    pub continuous: bool,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            scene: SceneSettings::default(),
+            camera: CameraSettings::default(),
+            layout: Layout::SideBySide,
+            panes: [
+                PaneSettings::method("winding"),
+                PaneSettings::method("reference"),
+                PaneSettings::method("bounds"),
+                PaneSettings {
+                    source: PaneSource::Difference {
+                        first: 0,
+                        second: None,
+                    },
+                    ..PaneSettings::method("winding")
+                },
+            ],
+            text_color: [255, 255, 255],
+            background: [0, 0, 0],
+            difference_scale: 0.5,
+            continuous: false,
+        }
+    }
+}
+
+/// What the scene is made of. A change rebuilds the scene and re-prepares the methods;
+/// nothing else does.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct SceneSettings {
+    pub text: String,
+    pub font: FontChoice,
+    /// Variable-font axis values (tag, value); axes not listed keep their default.
+    pub variations: Vec<(String, f32)>,
+    /// Glyph mode: one glyph, by character or `#id`, instead of the text.
+    pub glyph_mode: bool,
+    pub glyph: String,
+}
+
+impl Default for SceneSettings {
+    fn default() -> Self {
+        SceneSettings {
+            text: DEFAULT_TEXT.into(),
+            font: FontChoice::Shipped(0),
+            variations: Vec::new(),
+            glyph_mode: false,
+            glyph: "g".into(),
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum FontChoice {
+    /// An index into [`SHIPPED_FONTS`].
+    Shipped(usize),
+    /// A .ttf/.otf opened from disk.
+    File(PathBuf),
+}
+
+impl FontChoice {
+    pub fn label(&self) -> String {
+        match self {
+            FontChoice::Shipped(i) => SHIPPED_FONTS
+                .get(*i)
+                .map_or_else(|| "?".into(), |f| f.0.to_string()),
+            FontChoice::File(path) => path.file_name().map_or_else(
+                || path.display().to_string(),
+                |n| n.to_string_lossy().into(),
+            ),
+        }
+    }
+}
+
+/// The one camera every pane shares, in the terms a person steers it by; the render
+/// core's [`crate::camera::Camera`] is built from it for each frame.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct CameraSettings {
+    pub size_px_per_em: f64,
+    /// The first baseline's origin, in pixels from a pane's top-left corner.
+    pub origin: [f64; 2],
+    /// Counter-clockwise, degrees.
+    pub rotation_deg: f64,
+    /// Horizontal shear: x += skew·y before the rotation.
+    pub skew: f64,
+    pub tilt_deg: f64,
+}
+
+impl Default for CameraSettings {
+    fn default() -> Self {
+        CameraSettings {
+            size_px_per_em: 48.0,
+            origin: [16.0, 120.0],
+            rotation_deg: 0.0,
+            skew: 0.0,
+            tilt_deg: 0.0,
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Layout {
+    Single,
+    SideBySide,
+    Grid,
+}
+
+impl Layout {
+    pub const ALL: [Layout; 3] = [Layout::Single, Layout::SideBySide, Layout::Grid];
+
+    pub fn panes(self) -> usize {
+        match self {
+            Layout::Single => 1,
+            Layout::SideBySide => 2,
+            Layout::Grid => 4,
+        }
+    }
+
+    /// (columns, rows).
+    pub fn grid(self) -> (usize, usize) {
+        match self {
+            Layout::Single => (1, 1),
+            Layout::SideBySide => (2, 1),
+            Layout::Grid => (2, 2),
+        }
+    }
+
+    pub fn label(self) -> &'static str {
+        match self {
+            Layout::Single => "one pane",
+            Layout::SideBySide => "side by side",
+            Layout::Grid => "2×2",
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct PaneSettings {
+    pub source: PaneSource,
+    /// The picture drawn instead of plain coverage.
+    pub overlay: PaneOverlay,
+    /// The font's outline with its on- and off-curve points, drawn on top.
+    pub outline: bool,
+}
+
+impl Default for PaneSettings {
+    fn default() -> Self {
+        PaneSettings::method("winding")
+    }
+}
+
+impl PaneSettings {
+    pub fn method(name: &str) -> PaneSettings {
+        PaneSettings {
+            source: PaneSource::Method {
+                name: name.into(),
+                params: Vec::new(),
+            },
+            overlay: PaneOverlay::None,
+            outline: false,
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum PaneSource {
+    /// A method of [`crate::methods::METHOD_NAMES`] (the reference included) with its
+    /// parameters other than `overlay`, as `--param` would give them.
+    Method {
+        name: String,
+        params: Vec<(String, String)>,
+    },
+    /// Signed difference of pane `first` and pane `second` (the reference when None).
+    Difference { first: usize, second: Option<usize> },
+}
+
+/// What a pane draws instead of plain coverage.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum PaneOverlay {
+    None,
+    /// A method overlay, by its `overlay=` name.
+    Method(String),
+    /// Signed error against the reference (red: too much coverage, blue: too little).
+    Error,
+}

@@ -1,0 +1,382 @@
+//! Speed against error: every parameter combination of every method, timed with
+//! timestamp queries and compared with the reference on the current scene and view, on a
+//! background thread, plotted with the Pareto front (no other point is both faster and
+//! more accurate than a point on it).
+
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::mpsc::{Receiver, channel};
+
+use eframe::egui;
+use egui_plot::{Legend, Line, MarkerShape, Plot, PlotPoints, Points};
+
+use super::panes::Catalog;
+use crate::camera::Camera;
+use crate::gpu::{self, CoverageTarget, GpuContext};
+use crate::methods::{self, ParamSpec};
+use crate::metrics;
+use crate::reference;
+use crate::scene::Scene;
+
+/// Frames timed per combination, after untimed warm-up frames (shaders compile lazily).
+const WARMUP_FRAMES: usize = 3;
+const TIMED_FRAMES: usize = 9;
+
+/// One measured combination.
+#[derive(Clone, Debug)]
+pub struct SweepPoint {
+    pub method: &'static str,
+    pub params: Vec<(String, String)>,
+    /// Median GPU time of a frame, ms.
+    pub gpu_ms: f64,
+    pub mae_255: f64,
+    pub max: f64,
+}
+
+impl SweepPoint {
+    pub fn label(&self) -> String {
+        let params: Vec<String> = self
+            .params
+            .iter()
+            .map(|(k, v)| format!("{k}={v}"))
+            .collect();
+        format!("{} {}", self.method, params.join(" "))
+    }
+}
+
+enum Message {
+    Point(SweepPoint),
+    Problem(String),
+    Finished,
+}
+
+struct Running {
+    done: Arc<AtomicUsize>,
+    total: usize,
+    cancel: Arc<AtomicBool>,
+    messages: Receiver<Message>,
+}
+
+/// The sweep window's state.
+#[derive(Default)]
+pub struct Sweep {
+    pub open: bool,
+    running: Option<Running>,
+    pub points: Vec<SweepPoint>,
+    pub problems: Vec<String>,
+    /// The view the points were measured on.
+    pub measured_on: String,
+}
+
+/// Every combination of the listed values of a method's parameters (overlays aside).
+pub fn combinations(specs: &[ParamSpec]) -> Vec<Vec<(String, String)>> {
+    let mut all = vec![Vec::new()];
+    for spec in specs.iter().filter(|s| s.key != "overlay") {
+        all = all
+            .into_iter()
+            .flat_map(|params: Vec<(String, String)>| {
+                spec.choices.iter().map(move |choice| {
+                    let mut p = params.clone();
+                    p.push((spec.key.to_string(), choice.to_string()));
+                    p
+                })
+            })
+            .collect();
+    }
+    all
+}
+
+/// Indices of the points no other point beats on both time and error, fastest first.
+pub fn pareto_front(points: &[SweepPoint]) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..points.len()).collect();
+    order.sort_by(|&a, &b| {
+        points[a]
+            .gpu_ms
+            .total_cmp(&points[b].gpu_ms)
+            .then(points[a].mae_255.total_cmp(&points[b].mae_255))
+    });
+    let mut front = Vec::new();
+    let mut best_error = f64::INFINITY;
+    for i in order {
+        if points[i].mae_255 < best_error {
+            best_error = points[i].mae_255;
+            front.push(i);
+        }
+    }
+    front
+}
+
+impl Sweep {
+    pub fn running(&self) -> bool {
+        self.running.is_some()
+    }
+
+    /// (done, total) while running.
+    pub fn progress(&self) -> Option<(usize, usize)> {
+        self.running
+            .as_ref()
+            .map(|r| (r.done.load(Ordering::Relaxed), r.total))
+    }
+
+    /// Starts measuring every combination of every GPU method on `scene` seen by `camera`.
+    pub fn start(
+        &mut self,
+        ctx: &egui::Context,
+        gpu: &GpuContext,
+        catalog: &Catalog,
+        scene: Arc<Scene>,
+        camera: Camera,
+    ) {
+        self.cancel();
+        let jobs: Vec<(&'static str, Vec<(String, String)>)> = catalog
+            .gpu_methods()
+            .flat_map(|m| {
+                combinations(methods::param_specs(m.name))
+                    .into_iter()
+                    .map(move |p| (m.name, p))
+            })
+            .collect();
+        let done = Arc::new(AtomicUsize::new(0));
+        let cancel = Arc::new(AtomicBool::new(false));
+        let (sender, messages) = channel();
+        self.points.clear();
+        self.problems.clear();
+        self.measured_on = format!(
+            "{}×{} px at {:.4} px/em, {} glyphs",
+            camera.width,
+            camera.height,
+            camera.size_px_per_em,
+            scene.instances.len()
+        );
+        self.running = Some(Running {
+            done: done.clone(),
+            total: jobs.len(),
+            cancel: cancel.clone(),
+            messages,
+        });
+        let gpu = gpu.clone();
+        let ctx = ctx.clone();
+        std::thread::Builder::new()
+            .name("sweep".into())
+            .spawn(move || {
+                let send = |m| {
+                    // The window may be gone; then nobody wants the numbers.
+                    let _ = sender.send(m);
+                    ctx.request_repaint();
+                };
+                let prepared = reference::rasterize(&scene, &camera)
+                    .map_err(|e| format!("reference: {e}"))
+                    .and_then(|r| {
+                        let target = CoverageTarget::new(&gpu, camera.width, camera.height)
+                            .map_err(|e| e.to_string())?;
+                        Ok((r, target))
+                    });
+                match prepared {
+                    Err(problem) => send(Message::Problem(problem)),
+                    Ok((reference, target)) => {
+                        for (method, params) in jobs {
+                            if cancel.load(Ordering::Relaxed) {
+                                break;
+                            }
+                            let measured =
+                                measure(&gpu, &scene, &camera, &target, &reference, method, params);
+                            send(match measured {
+                                Ok(point) => Message::Point(point),
+                                Err(e) => Message::Problem(format!("{method}: {e}")),
+                            });
+                            done.fetch_add(1, Ordering::Relaxed);
+                        }
+                    }
+                }
+                send(Message::Finished);
+            })
+            .expect("a thread can be started");
+    }
+
+    pub fn cancel(&mut self) {
+        if let Some(running) = self.running.take() {
+            running.cancel.store(true, Ordering::Relaxed);
+        }
+    }
+
+    /// Takes what the thread sent; ends the run when everything is measured.
+    pub fn poll(&mut self) {
+        let Some(running) = &self.running else {
+            return;
+        };
+        let mut finished = false;
+        for message in running.messages.try_iter() {
+            match message {
+                Message::Point(p) => self.points.push(p),
+                Message::Problem(p) => self.problems.push(p),
+                Message::Finished => finished = true,
+            }
+        }
+        if finished {
+            self.running = None;
+        }
+    }
+
+    /// The plot; returns a point the user clicked, to apply to the first pane.
+    pub fn plot(&self, ui: &mut egui::Ui) -> Option<SweepPoint> {
+        let front = pareto_front(&self.points);
+        let points = &self.points;
+        let labels = move |position: &egui_plot::HoverPosition<'_>| -> Option<String> {
+            let egui_plot::HoverPosition::NearDataPoint { position, .. } = position else {
+                return None;
+            };
+            let nearest = nearest(points, position.x, position.y)?;
+            let p = &points[nearest];
+            Some(format!(
+                "{}\n{:.3} ms, MAE {:.3}/255, max {:.3}",
+                p.label(),
+                p.gpu_ms,
+                p.mae_255,
+                p.max
+            ))
+        };
+        // Both axes are logarithmic: times and errors span decades.
+        let power_of_ten = |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| {
+            format!("{}", 10f64.powf(mark.value))
+        };
+        let response = Plot::new("speed vs error")
+            .legend(Legend::default())
+            .x_axis_label("GPU time per frame, ms (median, log scale)")
+            .y_axis_label("mean error vs reference, 1/255 (log scale)")
+            .x_axis_formatter(power_of_ten)
+            .y_axis_formatter(power_of_ten)
+            .x_grid_spacer(egui_plot::log_grid_spacer(10))
+            .y_grid_spacer(egui_plot::log_grid_spacer(10))
+            .label_formatter(labels)
+            .show(ui, |plot| {
+                for (k, method) in unique_methods(points).into_iter().enumerate() {
+                    let series: PlotPoints = points
+                        .iter()
+                        .filter(|p| p.method == method)
+                        .map(plotted)
+                        .collect();
+                    plot.points(
+                        Points::new(method, series)
+                            .radius(4.0)
+                            .shape(MarkerShape::Circle)
+                            .color(method_color(k)),
+                    );
+                }
+                let line: PlotPoints = front.iter().map(|&i| plotted(&points[i])).collect();
+                plot.line(
+                    Line::new("Pareto front", line)
+                        .color(egui::Color32::from_gray(200))
+                        .width(1.5),
+                );
+                plot.response()
+                    .clicked()
+                    .then(|| plot.pointer_coordinate())
+                    .flatten()
+            });
+        let clicked = response.inner?;
+        nearest(points, clicked.x, clicked.y).map(|i| points[i].clone())
+    }
+}
+
+fn unique_methods(points: &[SweepPoint]) -> Vec<&'static str> {
+    let mut names: Vec<&'static str> = Vec::new();
+    for p in points {
+        if !names.contains(&p.method) {
+            names.push(p.method);
+        }
+    }
+    names
+}
+
+fn method_color(k: usize) -> egui::Color32 {
+    const COLORS: [egui::Color32; 6] = [
+        egui::Color32::from_rgb(80, 170, 255),
+        egui::Color32::from_rgb(255, 140, 60),
+        egui::Color32::from_rgb(120, 220, 120),
+        egui::Color32::from_rgb(230, 90, 200),
+        egui::Color32::from_rgb(240, 220, 80),
+        egui::Color32::from_rgb(160, 160, 160),
+    ];
+    COLORS[k % COLORS.len()]
+}
+
+/// Where a point is drawn: log10 of its time and error (a perfect score sits at 1e-3/255).
+fn plotted(p: &SweepPoint) -> [f64; 2] {
+    [p.gpu_ms.max(1e-6).log10(), p.mae_255.max(1e-3).log10()]
+}
+
+/// The point drawn nearest to plot position (x, y).
+fn nearest(points: &[SweepPoint], x: f64, y: f64) -> Option<usize> {
+    (0..points.len()).min_by(|&a, &b| {
+        let d = |p: &SweepPoint| {
+            let [px, py] = plotted(p);
+            (px - x).powi(2) + (py - y).powi(2)
+        };
+        d(&points[a]).total_cmp(&d(&points[b]))
+    })
+}
+
+fn measure(
+    gpu: &GpuContext,
+    scene: &Scene,
+    camera: &Camera,
+    target: &CoverageTarget,
+    reference: &crate::coverage::CoverageImage,
+    method: &'static str,
+    params: Vec<(String, String)>,
+) -> Result<SweepPoint, crate::Error> {
+    let mut m = methods::create(method, &params)?;
+    m.prepare(gpu, scene)?;
+    let mut times = gpu::time_frames(gpu, m.as_mut(), target, camera, WARMUP_FRAMES, TIMED_FRAMES)?
+        .ok_or_else(|| crate::Error::Gpu("this GPU has no timestamp queries".into()))?;
+    times.sort_by(f64::total_cmp);
+    gpu::render_frame(gpu, m.as_mut(), target, camera)?;
+    let stats = metrics::compare(&target.readback(gpu)?, reference)?;
+    Ok(SweepPoint {
+        method,
+        params,
+        gpu_ms: times[times.len() / 2],
+        mae_255: stats.mae_255,
+        max: stats.max,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn point(gpu_ms: f64, mae_255: f64) -> SweepPoint {
+        SweepPoint {
+            method: "m",
+            params: Vec::new(),
+            gpu_ms,
+            mae_255,
+            max: 0.0,
+        }
+    }
+
+    #[test]
+    fn pareto_front_keeps_only_unbeaten_points() {
+        let points = [
+            point(1.0, 5.0),
+            point(2.0, 6.0), // slower and worse than the first
+            point(3.0, 1.0),
+            point(0.5, 9.0),
+            point(4.0, 1.0), // as good as the third, slower
+        ];
+        assert_eq!(pareto_front(&points), vec![3, 0, 2]);
+    }
+
+    #[test]
+    fn combinations_cover_every_choice_but_overlays() {
+        let all = combinations(methods::param_specs("winding"));
+        let product: usize = methods::param_specs("winding")
+            .iter()
+            .filter(|s| s.key != "overlay")
+            .map(|s| s.choices.len())
+            .product();
+        assert_eq!(all.len(), product);
+        assert!(all.iter().all(|p| p.iter().all(|(k, _)| k != "overlay")));
+        assert_eq!(combinations(&[]), vec![Vec::new()]);
+    }
+}

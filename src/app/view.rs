@@ -1,0 +1,520 @@
+//! The central view: the panes laid out on whole pixels, the shared camera steered by
+//! the pointer, each pane's paint callback, and what is drawn over the panes (labels
+//! and numbers, legends, outlines). When the view rests, each pane's coverage is read
+//! back once and the reference and errors are asked for in the background.
+
+use std::sync::Arc;
+
+use eframe::egui;
+use glam::DVec2;
+
+use super::analysis::Request;
+use super::gpu_view::{CompositeMode, PanePaint, Source, lock};
+use super::outline;
+use super::panes::REFERENCE;
+use super::settings::{PaneOverlay, PaneSource};
+use super::{COST_SCALE_CURVES, Explorer, REST_SECONDS, ViewKey, color, pane_letter};
+use crate::camera::Camera;
+use crate::methods::Overlay;
+
+/// Space between panes, points.
+const GAP: f32 = 2.0;
+/// Wheel zoom: factor per point scrolled.
+const WHEEL_ZOOM_PER_POINT: f64 = 0.004;
+
+impl Explorer {
+    pub(super) fn view(&mut self, ui: &mut egui::Ui) {
+        let area = ui.available_rect_before_wrap();
+        let ppp = ui.ctx().pixels_per_point();
+        let (columns, rows) = self.settings.layout.grid();
+        let cell = egui::vec2(
+            (area.width() - GAP * (columns - 1) as f32) / columns as f32,
+            (area.height() - GAP * (rows - 1) as f32) / rows as f32,
+        );
+        // Panes are whole pixels, so a target texel is a framebuffer pixel.
+        let width = (cell.x * ppp).floor().max(1.0) as u32;
+        let height = (cell.y * ppp).floor().max(1.0) as u32;
+        let size = egui::vec2(width as f32, height as f32) / ppp;
+        let snap = |p: egui::Pos2| (p.to_vec2() * ppp).round().to_pos2() / ppp;
+        let rects: Vec<egui::Rect> = (0..columns * rows)
+            .map(|k| {
+                let (c, r) = (k % columns, k / columns);
+                let min =
+                    area.min + egui::vec2(c as f32 * (size.x + GAP), r as f32 * (size.y + GAP));
+                egui::Rect::from_min_size(snap(min), size)
+            })
+            .collect();
+
+        self.steer(ui, area, &rects, ppp);
+        let camera = self.settings.camera.camera(width, height);
+        self.view.camera = Some(camera);
+
+        let Some((gpu, _)) = self.gpu.clone() else {
+            return;
+        };
+        let scene = self.scene.scene().cloned();
+        let generation = self.scene.generation;
+        for (index, pane) in self.panes.iter_mut().enumerate().take(rects.len()) {
+            pane.sync(
+                &gpu,
+                &self.catalog,
+                &self.settings.panes[index],
+                scene.as_deref().map(|s| (s, generation)),
+            );
+        }
+
+        // Methods draw first, so that a difference pane reads this frame's targets.
+        let mut order: Vec<usize> = (0..rects.len()).collect();
+        order.sort_by_key(|&i| {
+            matches!(self.settings.panes[i].source, PaneSource::Difference { .. })
+        });
+        let painter = ui.painter();
+        painter.rect_filled(area, 0.0, ui.visuals().extreme_bg_color);
+        self.view.notes = vec![String::new(); rects.len()];
+        for index in order {
+            let rect = rects[index];
+            painter.rect_filled(rect, 0.0, color(self.settings.background));
+            let (paint, note) = self.pane_paint(index, &camera, rect);
+            self.view.notes[index] = note;
+            if let Some(paint) = paint {
+                painter.add(egui_wgpu::Callback::new_paint_callback(rect, paint));
+            }
+        }
+        for (index, rect) in rects.iter().enumerate() {
+            self.decorate(ui, index, *rect, &camera, ppp);
+        }
+    }
+
+    /// Pan by dragging, zoom with the wheel about the cursor, and find the pixel under it.
+    fn steer(&mut self, ui: &mut egui::Ui, area: egui::Rect, rects: &[egui::Rect], ppp: f32) {
+        let response = ui.interact(
+            area,
+            ui.scope_id().with("view"),
+            egui::Sense::click_and_drag(),
+        );
+        let upem = self.scene.units_per_em();
+        if response.dragged() {
+            let d = response.drag_delta() * ppp;
+            self.settings
+                .camera
+                .pan(DVec2::new(f64::from(d.x), f64::from(d.y)));
+        }
+        self.view.hovered = None;
+        let Some(pointer) = response.hover_pos() else {
+            return;
+        };
+        let Some((index, rect)) = rects.iter().enumerate().find(|(_, r)| r.contains(pointer))
+        else {
+            return;
+        };
+        let local = (pointer - rect.min) * ppp;
+        let anchor = DVec2::new(f64::from(local.x), f64::from(local.y));
+        let (scroll, pinch) = ui.input(|i| (i.smooth_scroll_delta.y, i.zoom_delta()));
+        let factor = f64::from(pinch) * (f64::from(scroll) * WHEEL_ZOOM_PER_POINT).exp();
+        if factor != 1.0 {
+            self.settings.camera.zoom(factor, anchor, upem);
+        }
+        let (x, y) = (local.x.floor(), local.y.floor());
+        if x >= 0.0 && y >= 0.0 && x < rect.width() * ppp && y < rect.height() * ppp {
+            self.view.hovered = Some((index, x as u32, y as u32));
+        }
+    }
+
+    /// A pane that shows a method's coverage, or the reference, as a source for others.
+    fn source_of(&self, index: usize) -> Option<Source> {
+        match &self.settings.panes[index].source {
+            PaneSource::Method { name, .. } if name == REFERENCE => self
+                .reference_is_current()
+                .then(|| Source::Reference(self.reference.texture.clone())),
+            PaneSource::Method { .. } => self.panes[index]
+                .has_method()
+                .then(|| Source::Pane(self.panes[index].surface.clone())),
+            PaneSource::Difference { .. } => None,
+        }
+    }
+
+    /// What pane `index` draws this frame (the GPU handles are filled in by the caller),
+    /// and a note to show on it.
+    fn pane_paint(
+        &self,
+        index: usize,
+        camera: &Camera,
+        rect: egui::Rect,
+    ) -> (Option<PanePaint>, String) {
+        let settings = &self.settings.panes[index];
+        let pane = &self.panes[index];
+        let paint = |camera: Option<Camera>, first, second, mode| PanePaint {
+            gpu: self.gpu.as_ref().expect("checked by the caller").0.clone(),
+            compositor: self.gpu.as_ref().expect("checked by the caller").1.clone(),
+            surface: pane.surface.clone(),
+            camera,
+            always: self.settings.continuous,
+            first,
+            second,
+            mode,
+            text: color(self.settings.text_color).into(),
+            background: color(self.settings.background).into(),
+            difference_scale: self.settings.difference_scale,
+            rect,
+        };
+        let waiting = "error: shown once the view rests and the reference is ready".to_string();
+        match &settings.source {
+            PaneSource::Method { name, .. } if name == REFERENCE => {
+                if self.reference.image.is_none() {
+                    let note = self
+                        .reference
+                        .problem
+                        .clone()
+                        .unwrap_or("reference: working…".into());
+                    return (None, note);
+                }
+                let note = if self.reference_is_current() {
+                    String::new()
+                } else {
+                    "reference: working…".into()
+                };
+                let source = Source::Reference(self.reference.texture.clone());
+                (
+                    Some(paint(None, Some(source), None, CompositeMode::Coverage)),
+                    note,
+                )
+            }
+            PaneSource::Method { .. } => {
+                if !pane.has_method() {
+                    return (None, String::new());
+                }
+                match &settings.overlay {
+                    PaneOverlay::Method(_) => (
+                        Some(paint(
+                            Some(*camera),
+                            None,
+                            None,
+                            CompositeMode::OverlayPicture,
+                        )),
+                        String::new(),
+                    ),
+                    PaneOverlay::Error if self.reference_is_current() => (
+                        Some(paint(
+                            Some(*camera),
+                            None,
+                            Some(Source::Reference(self.reference.texture.clone())),
+                            CompositeMode::Difference,
+                        )),
+                        String::new(),
+                    ),
+                    PaneOverlay::Error => (
+                        Some(paint(Some(*camera), None, None, CompositeMode::Coverage)),
+                        waiting,
+                    ),
+                    PaneOverlay::None => (
+                        Some(paint(Some(*camera), None, None, CompositeMode::Coverage)),
+                        String::new(),
+                    ),
+                }
+            }
+            PaneSource::Difference { first, second } => {
+                let first = self.source_of(*first);
+                let second = match second {
+                    Some(i) => self.source_of(*i),
+                    None => self
+                        .reference_is_current()
+                        .then(|| Source::Reference(self.reference.texture.clone())),
+                };
+                match (first, second) {
+                    (Some(a), Some(b)) => (
+                        Some(paint(None, Some(a), Some(b), CompositeMode::Difference)),
+                        String::new(),
+                    ),
+                    _ => (None, "difference: waiting for both sides (a method pane, or the reference once the view rests)".into()),
+                }
+            }
+        }
+    }
+
+    /// Labels, numbers, legends, outline and notes over pane `index`.
+    fn decorate(
+        &self,
+        ui: &mut egui::Ui,
+        index: usize,
+        rect: egui::Rect,
+        camera: &Camera,
+        ppp: f32,
+    ) {
+        let settings = &self.settings.panes[index];
+        let painter = ui.painter_at(rect);
+        let mut notes: Vec<String> = Vec::new();
+        if settings.outline
+            && let Some(scene) = self.scene.scene()
+            && let Err(e) = outline::paint(&painter, scene, camera, ppp)
+        {
+            notes.push(e);
+        }
+        let mut lines = vec![self.pane_title(index)];
+        lines.extend(self.pane_numbers(index));
+        let text = lines.join("\n");
+        let font = egui::FontId::monospace(11.0);
+        let galley = painter.layout_no_wrap(text, font, egui::Color32::from_gray(230));
+        let label = egui::Rect::from_min_size(
+            rect.min + egui::vec2(4.0, 4.0),
+            galley.size() + egui::vec2(8.0, 6.0),
+        );
+        painter.rect_filled(label, 3.0, egui::Color32::from_black_alpha(170));
+        painter.galley(
+            label.min + egui::vec2(4.0, 3.0),
+            galley,
+            egui::Color32::WHITE,
+        );
+
+        if let Some(problem) = self.pane_problem(index) {
+            notes.push(problem);
+        }
+        if !self.view.notes[index].is_empty() {
+            notes.push(self.view.notes[index].clone());
+        }
+        if let Some(scene_problem) = self.scene.problem() {
+            notes.push(scene_problem);
+        }
+        if !notes.is_empty() {
+            painter.text(
+                rect.center(),
+                egui::Align2::CENTER_CENTER,
+                notes.join("\n"),
+                egui::FontId::proportional(14.0),
+                egui::Color32::from_gray(150),
+            );
+        }
+        self.legend(ui, index, rect);
+    }
+
+    fn pane_title(&self, index: usize) -> String {
+        let settings = &self.settings.panes[index];
+        let mut title = match &settings.source {
+            PaneSource::Method { name, params } => {
+                let params: Vec<String> = params.iter().map(|(k, v)| format!("{k}={v}")).collect();
+                format!("{} {name} {}", pane_letter(index), params.join(" "))
+            }
+            PaneSource::Difference { first, second } => format!(
+                "{} difference {} − {}",
+                pane_letter(index),
+                pane_letter(*first),
+                second.map_or(REFERENCE.to_string(), |s| pane_letter(s).to_string())
+            ),
+        };
+        match &settings.overlay {
+            PaneOverlay::Method(name) => title += &format!(" · overlay {name}"),
+            PaneOverlay::Error => title += " · error vs reference",
+            PaneOverlay::None => {}
+        }
+        title.trim_end().to_string()
+    }
+
+    /// The live numbers of a pane, one line each.
+    fn pane_numbers(&self, index: usize) -> Vec<String> {
+        let pane = &self.panes[index];
+        let mut lines = Vec::new();
+        if matches!(&self.settings.panes[index].source, PaneSource::Method { name, .. } if name == REFERENCE)
+        {
+            if let Some(ms) = self.reference.cpu_ms {
+                lines.push(format!("CPU {ms:.0} ms (exact, background)"));
+            }
+            return lines;
+        }
+        if !pane.has_method() {
+            return lines;
+        }
+        let surface = lock(&pane.surface);
+        let time = match surface.timer.median_ms() {
+            Some((ms, n)) => format!("GPU {ms:.3} ms (median of {n})"),
+            None if self.gpu.as_ref().is_some_and(|(g, _)| !g.has_timestamps()) => {
+                "GPU time: no timestamp queries".into()
+            }
+            None => "GPU time: …".into(),
+        };
+        drop(surface);
+        lines.push(format!(
+            "{time} · {} · prepare {:.0} ms",
+            bytes(pane.gpu_bytes),
+            pane.prepare_ms
+        ));
+        match self.pane_error(index) {
+            Some(e) => lines.push(format!(
+                "MAE {:.3}/255 · max {:.3} · >0.5: {} px",
+                e.mae_255, e.max, e.pixels_over_05
+            )),
+            None => lines.push("error vs reference: …".into()),
+        }
+        if let Some((c, cost)) = &pane.curves
+            && Some(*c) == self.view.camera
+        {
+            lines.push(format!("curves/px {:.2} mean, {} max", cost.mean, cost.max));
+        }
+        lines
+    }
+
+    /// The colour scale of the picture a pane shows, if it has one.
+    fn legend(&self, ui: &mut egui::Ui, index: usize, rect: egui::Rect) {
+        let settings = &self.settings.panes[index];
+        let bar = egui::Rect::from_min_size(
+            egui::pos2(rect.min.x + 12.0, rect.max.y - 30.0),
+            egui::vec2((rect.width() * 0.4).min(240.0), 10.0),
+        );
+        let painter = ui.painter_at(rect);
+        let label = |x: f32, align: egui::Align2, text: String| {
+            painter.text(
+                egui::pos2(x, bar.max.y + 2.0),
+                align,
+                text,
+                egui::FontId::monospace(10.0),
+                egui::Color32::from_gray(220),
+            );
+        };
+        let cost = settings.overlay == PaneOverlay::Method(Overlay::CostHeatMap.name().into());
+        let signed = settings.overlay == PaneOverlay::Error
+            || matches!(settings.source, PaneSource::Difference { .. });
+        if cost && let Some((gpu, compositor)) = &self.gpu {
+            let paint = PanePaint {
+                gpu: gpu.clone(),
+                compositor: compositor.clone(),
+                surface: self.legend_surface(index),
+                camera: None,
+                always: false,
+                first: None,
+                second: None,
+                mode: CompositeMode::HeatScale,
+                text: egui::Rgba::WHITE,
+                background: egui::Rgba::BLACK,
+                difference_scale: 1.0,
+                rect: bar,
+            };
+            painter.add(egui_wgpu::Callback::new_paint_callback(bar, paint));
+            label(bar.min.x, egui::Align2::LEFT_TOP, "0".into());
+            label(
+                bar.max.x,
+                egui::Align2::RIGHT_TOP,
+                format!("{COST_SCALE_CURVES}+ curves/px"),
+            );
+        } else if signed {
+            // Linear in value, like `metrics::error_image`: blue, black, red.
+            let mut mesh = egui::Mesh::default();
+            let stops = [
+                (0.0, egui::Color32::from_rgb(0, 0, 255)),
+                (0.5, egui::Color32::BLACK),
+                (1.0, egui::Color32::from_rgb(255, 0, 0)),
+            ];
+            for pair in stops.windows(2) {
+                let (t0, c0) = pair[0];
+                let (t1, c1) = pair[1];
+                let x0 = bar.min.x + bar.width() * t0;
+                let x1 = bar.min.x + bar.width() * t1;
+                let base = mesh.vertices.len() as u32;
+                mesh.colored_vertex(egui::pos2(x0, bar.min.y), c0);
+                mesh.colored_vertex(egui::pos2(x1, bar.min.y), c1);
+                mesh.colored_vertex(egui::pos2(x1, bar.max.y), c1);
+                mesh.colored_vertex(egui::pos2(x0, bar.max.y), c0);
+                mesh.add_triangle(base, base + 1, base + 2);
+                mesh.add_triangle(base, base + 2, base + 3);
+            }
+            painter.add(mesh);
+            let s = self.settings.difference_scale;
+            label(
+                bar.min.x,
+                egui::Align2::LEFT_TOP,
+                format!("−{s:.2} too little"),
+            );
+            label(bar.center().x, egui::Align2::CENTER_TOP, "0".into());
+            label(
+                bar.max.x,
+                egui::Align2::RIGHT_TOP,
+                format!("+{s:.2} too much"),
+            );
+        }
+    }
+}
+
+/// A human size: B, KiB or MiB.
+fn bytes(n: u64) -> String {
+    match n {
+        0..1024 => format!("{n} B"),
+        1024..1_048_576 => format!("{:.1} KiB", n as f64 / 1024.0),
+        _ => format!("{:.1} MiB", n as f64 / 1_048_576.0),
+    }
+}
+
+impl Explorer {
+    /// The surface a pane's heat-scale legend draws with (its own uniform and bind group).
+    fn legend_surface(&self, index: usize) -> super::gpu_view::SharedSurface {
+        self.legends[index].clone()
+    }
+
+    /// Once the view has rested: reads each pane's coverage back once, measures curves
+    /// per pixel, and asks the background worker for the reference and the errors.
+    pub(super) fn settle(&mut self, ctx: &egui::Context) {
+        let (Some(camera), Some(scene)) = (self.view.camera, self.scene.scene().cloned()) else {
+            return;
+        };
+        let Some((gpu, _)) = self.gpu.clone() else {
+            return;
+        };
+        let visible = self.settings.layout.panes();
+        let key = ViewKey {
+            camera,
+            scene: self.scene.generation,
+            panes: self.panes[..visible]
+                .iter()
+                .map(|p| {
+                    let surface = lock(&p.surface);
+                    (surface.generation, surface.method.is_some())
+                })
+                .collect(),
+        };
+        let now = ctx.input(|i| i.time);
+        if self.view.key.as_ref() != Some(&key) {
+            self.view.key = Some(key.clone());
+            self.view.changed_at = now;
+        }
+        if self.view.analysed.as_ref() == Some(&key) {
+            return;
+        }
+        let waited = now - self.view.changed_at;
+        if waited < REST_SECONDS {
+            ctx.request_repaint_after(std::time::Duration::from_secs_f64(REST_SECONDS - waited));
+            return;
+        }
+        let mut captures = Vec::new();
+        for (index, pane) in self.panes[..visible].iter_mut().enumerate() {
+            let mut surface = lock(&pane.surface);
+            if surface.method.is_none() || surface.draw_error.is_some() {
+                continue;
+            }
+            if !surface.shows(&camera) {
+                // Not drawn yet for this view: look again next frame.
+                drop(surface);
+                ctx.request_repaint();
+                return;
+            }
+            let target = surface.target.as_ref().expect("drawn, so it has a target");
+            match target.readback(&gpu) {
+                Ok(image) => {
+                    let image = Arc::new(image);
+                    pane.capture = Some((camera, image.clone()));
+                    captures.push((index, image));
+                }
+                Err(e) => pane.problem = Some(e.to_string()),
+            }
+            let method = surface.method.as_mut().expect("checked above");
+            match method.curves_per_pixel(&gpu, &camera) {
+                Ok(Some(cost)) => pane.curves = Some((camera, cost)),
+                Ok(None) => pane.curves = None,
+                Err(e) => pane.problem = Some(e.to_string()),
+            }
+        }
+        self.analysis.send(Request {
+            id: 0,
+            scene,
+            scene_generation: self.scene.generation,
+            camera,
+            captures,
+        });
+        self.view.analysed = Some(key);
+    }
+}
