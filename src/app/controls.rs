@@ -56,7 +56,7 @@ impl Explorer {
     fn scene_controls(&mut self, ui: &mut egui::Ui) {
         let scene = &mut self.settings.scene;
         ui.horizontal(|ui| {
-            ui.label("font");
+            let label = ui.label("font");
             egui::ComboBox::from_id_salt("font")
                 .selected_text(scene.font.label())
                 .width(170.0)
@@ -70,7 +70,9 @@ impl Explorer {
                             scene.variations.clear();
                         }
                     }
-                });
+                })
+                .response
+                .labelled_by(label.id);
             if ui
                 .button("Open…")
                 .on_hover_text("Ctrl+O, or drop a font file")
@@ -94,22 +96,26 @@ impl Explorer {
             }
         }
         ui.horizontal(|ui| {
-            ui.checkbox(&mut scene.glyph_mode, "one glyph")
+            let toggle = ui
+                .checkbox(&mut scene.glyph_mode, "one glyph")
                 .on_hover_text("G: a single glyph, big; a character, or # and a glyph id");
             ui.add_enabled(
                 scene.glyph_mode,
                 egui::TextEdit::singleline(&mut scene.glyph)
                     .desired_width(80.0)
                     .id_salt("glyph"),
-            );
+            )
+            .labelled_by(toggle.id);
         });
+        let label = ui.label("text");
         ui.add_enabled(
             !scene.glyph_mode,
             egui::TextEdit::multiline(&mut scene.text)
                 .desired_rows(4)
                 .desired_width(f32::INFINITY)
                 .id_salt("text"),
-        );
+        )
+        .labelled_by(label.id);
         if let Some(problem) = self.scene.problem() {
             ui.colored_label(ui.visuals().error_fg_color, problem);
         } else if let Some(scene) = self.scene.scene() {

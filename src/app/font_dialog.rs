@@ -59,12 +59,14 @@ impl FontDialog {
             .default_width(420.0)
             .show(ctx, |ui| {
                 ui.horizontal(|ui| {
-                    ui.label("path");
-                    let field = ui.add(
-                        egui::TextEdit::singleline(&mut self.path)
-                            .desired_width(300.0)
-                            .id_salt("font path"),
-                    );
+                    let label = ui.label("path");
+                    let field = ui
+                        .add(
+                            egui::TextEdit::singleline(&mut self.path)
+                                .desired_width(300.0)
+                                .id_salt("font path"),
+                        )
+                        .labelled_by(label.id);
                     let entered =
                         field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
                     if ui.button("Open").clicked() || entered {
@@ -78,7 +80,7 @@ impl FontDialog {
                     here.parent().map(Path::to_path_buf).unwrap_or_default()
                 };
                 if let Some(parent) = dir.parent()
-                    && ui.button("⬆ up").clicked()
+                    && ui.button("Up one folder").clicked()
                 {
                     self.path = parent.display().to_string();
                 }
@@ -91,7 +93,7 @@ impl FontDialog {
                                 .map(|n| n.to_string_lossy().into_owned())
                                 .unwrap_or_default();
                             let label = if path.is_dir() {
-                                format!("📁 {name}")
+                                format!("{name}/")
                             } else {
                                 name
                             };

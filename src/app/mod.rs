@@ -212,8 +212,10 @@ struct ViewState {
     analysed: Option<ViewKey>,
     /// Pane index and pixel under the pointer.
     hovered: Option<(usize, u32, u32)>,
-    /// Outline problems to show, per pane.
+    /// Notes to show, per pane.
     notes: Vec<String>,
+    /// Where the visible panes are, in points.
+    rects: Vec<egui::Rect>,
 }
 
 /// The explorer app.
@@ -284,6 +286,11 @@ impl Explorer {
         self.view.camera
     }
 
+    /// Where the visible panes are on the screen, in points.
+    pub fn pane_rects(&self) -> &[egui::Rect] {
+        &self.view.rects
+    }
+
     /// The scene shown, if it could be built.
     pub fn scene(&self) -> Option<&Arc<Scene>> {
         self.scene.scene()
@@ -317,9 +324,19 @@ impl Explorer {
             .flatten()
     }
 
-    /// Whether the reference and every pane's numbers are worked out for this view.
+    /// Whether the reference and every pane's numbers are worked out for this view, and
+    /// the view is what the settings say (nothing changed since it was laid out).
     pub fn settled(&self) -> bool {
-        self.view.key.is_some()
+        let up_to_date = self.scene.built_for.as_ref() == Some(&self.settings.scene)
+            && self
+                .view
+                .camera
+                .is_some_and(|c| c == self.settings.camera.camera(c.width, c.height))
+            && (0..self.settings.layout.panes()).all(|i| {
+                self.panes[i].is_built_for(&self.settings.panes[i], self.scene.generation)
+            });
+        up_to_date
+            && self.view.key.is_some()
             && self.view.analysed == self.view.key
             && !self.analysis.busy()
             && self.reference_is_current()

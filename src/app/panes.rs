@@ -203,6 +203,13 @@ impl Pane {
         }
     }
 
+    /// Whether the pane's method was made from `settings` for scene `generation`.
+    pub fn is_built_for(&self, settings: &PaneSettings, generation: u64) -> bool {
+        self.built.as_ref().is_some_and(|(source, overlay, g)| {
+            (source, overlay, *g) == (&settings.source, &settings.overlay, generation)
+        })
+    }
+
     /// Whether the pane's picture is this method's own (not the reference or a difference).
     pub fn has_method(&self) -> bool {
         lock(&self.surface).method.is_some()
@@ -235,7 +242,7 @@ pub fn pane_controls(
         PaneSource::Method { name, .. } => name.clone(),
         PaneSource::Difference { .. } => "difference".into(),
     };
-    egui::ComboBox::from_id_salt((index, "method"))
+    egui::ComboBox::new((index, "method"), "method")
         .selected_text(&current)
         .width(150.0)
         .show_ui(ui, |ui| {

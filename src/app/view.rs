@@ -46,6 +46,7 @@ impl Explorer {
             .collect();
 
         self.steer(ui, area, &rects, ppp);
+        self.view.rects = rects.clone();
         let camera = self.settings.camera.camera(width, height);
         self.view.camera = Some(camera);
 

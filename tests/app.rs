@@ -1,0 +1,456 @@
+//! The explorer, built as eframe builds it and driven through egui_kittest on the real
+//! wgpu device (lavapipe in CI): every method in every layout, every overlay, a font
+//! from disk, zoom to 100 000 px/em and back, the speed-vs-error sweep, persistence —
+//! each checked on the pixels it puts on the screen.
+//!
+//! Without a GPU adapter these tests fail (the harness cannot make its device).
+
+use std::path::PathBuf;
+use std::time::{Duration, Instant};
+
+use egui_kittest::kittest::{NodeT, Queryable};
+use egui_kittest::{Harness, wgpu::WgpuTestRenderer};
+use glyphscope::app::Explorer;
+use glyphscope::app::settings::{Layout, PaneOverlay, PaneSettings, PaneSource, Settings};
+use glyphscope::coverage::CoverageImage;
+use glyphscope::methods::{self, METHOD_NAMES, Overlay};
+use glyphscope::metrics;
+
+const SIZE: [f32; 2] = [1200.0, 700.0];
+
+/// The real app (as `Explorer::new` makes it for eframe) with `settings`.
+fn harness(settings: Settings) -> Harness<'static, Explorer> {
+    let mut harness = Harness::builder()
+        .with_size(SIZE)
+        .renderer(WgpuTestRenderer::from_setup(glyphscope::app::wgpu_setup()))
+        .build_eframe(|cc| {
+            let mut app = Explorer::new(cc);
+            app.settings = settings;
+            app
+        });
+    harness.step();
+    harness
+}
+
+/// Steps and draws frames until the view has rested and its numbers are in, two frames
+/// running (a click's events can span frames); returns the screen.
+fn settle(harness: &mut Harness<'static, Explorer>) -> image::RgbaImage {
+    let start = Instant::now();
+    let mut was_settled = false;
+    loop {
+        harness.step();
+        let screen = harness.render().expect("the harness draws with wgpu");
+        let settled = harness.state().settled();
+        if settled && was_settled {
+            return screen;
+        }
+        was_settled = settled;
+        assert!(
+            start.elapsed() < Duration::from_secs(60),
+            "the view never settled"
+        );
+        std::thread::sleep(Duration::from_millis(10));
+    }
+}
+
+/// The stored byte a coverage shows as, white text on black (sRGB of linear coverage).
+fn shown(coverage: f32) -> f32 {
+    let c = coverage.clamp(0.0, 1.0);
+    let v = if c <= 0.003_130_8 {
+        12.92 * c
+    } else {
+        1.055 * c.powf(1.0 / 2.4) - 0.055
+    };
+    v * 255.0
+}
+
+/// The part of pane `index` free of its label and legend, in pane pixels.
+fn clear_area(
+    harness: &Harness<'static, Explorer>,
+    index: usize,
+) -> (egui::Rect, u32, u32, u32, u32) {
+    let rect = harness.state().pane_rects()[index];
+    let (w, h) = (rect.width() as u32, rect.height() as u32);
+    (rect, 0, 80, w, h - 50)
+}
+
+/// Largest difference between the screen over pane `index` and `coverage` shown there.
+fn screen_vs_coverage(
+    harness: &Harness<'static, Explorer>,
+    screen: &image::RgbaImage,
+    index: usize,
+    coverage: &CoverageImage,
+) -> f32 {
+    let (rect, x0, y0, x1, y1) = clear_area(harness, index);
+    let mut worst = 0.0f32;
+    for y in y0..y1 {
+        for x in x0..x1 {
+            let p = screen.get_pixel(rect.min.x as u32 + x, rect.min.y as u32 + y);
+            let expected = shown(coverage.get(x, y));
+            for channel in 0..3 {
+                worst = worst.max((f32::from(p[channel]) - expected).abs());
+            }
+        }
+    }
+    worst
+}
+
+fn gpu_methods() -> Vec<&'static str> {
+    METHOD_NAMES
+        .iter()
+        .copied()
+        .filter(|&n| n != "reference" && methods::create(n, &[]).is_ok())
+        .collect()
+}
+
+#[test]
+fn every_method_in_every_layout_shows_its_own_coverage() {
+    let mut harness = harness(Settings::default());
+    let mut names = gpu_methods();
+    names.push("reference");
+    for (layout, key) in [
+        (Layout::Single, egui::Key::Num1),
+        (Layout::SideBySide, egui::Key::Num2),
+        (Layout::Grid, egui::Key::Num4),
+    ] {
+        harness.key_press(key);
+        harness.step();
+        assert_eq!(harness.state().settings.layout, layout);
+        for name in &names {
+            for pane in 0..layout.panes() {
+                harness.state_mut().settings.panes[pane] = PaneSettings::method(name);
+            }
+            let screen = settle(&mut harness);
+            let app = harness.state();
+            assert_eq!(app.pane_rects().len(), layout.panes());
+            let reference = app.reference_image().expect("settled");
+            assert!(reference.sum() > 500.0, "the reference shows the text");
+            for pane in 0..layout.panes() {
+                assert_eq!(app.pane_problem(pane), None, "{name} in pane {pane}");
+                let coverage = if *name == "reference" {
+                    reference.clone()
+                } else {
+                    app.pane_capture(pane).expect("read back at rest")
+                };
+                assert!(coverage.sum() > 500.0, "{name}: pane {pane} is empty");
+                let worst = screen_vs_coverage(&harness, &screen, pane, &coverage);
+                assert!(
+                    worst <= 1.5,
+                    "{name}, {layout:?}, pane {pane}: screen off by {worst}"
+                );
+                if *name != "reference" {
+                    let error = app.pane_error(pane).expect("measured at rest");
+                    // `bounds` draws boxes, far from the glyphs; a real method is close.
+                    if *name != "bounds" {
+                        assert!(error.mae_255 < 2.0, "{name}: {error:?}");
+                    }
+                    assert!(error.pixels > 0);
+                }
+            }
+        }
+    }
+    // Methods that are not implemented yet are offered greyed, with the reason.
+    for name in METHOD_NAMES.iter().filter(|&&n| n != "reference") {
+        if let Err(e) = methods::create(name, &[]) {
+            harness.state_mut().settings.panes[0] = PaneSettings::method(name);
+            harness.step();
+            harness.render().unwrap();
+            assert_eq!(harness.state().pane_problem(0), Some(e.to_string()));
+        }
+    }
+}
+
+#[test]
+fn the_method_picker_switches_the_pane_and_greys_what_is_missing() {
+    let mut harness = harness(Settings {
+        layout: Layout::Single,
+        ..Settings::default()
+    });
+    harness.run_ok();
+    harness.get_by_value("winding").click();
+    harness.run_ok();
+    harness.get_by_label("bounds").click();
+    harness.run_ok();
+    assert_eq!(
+        harness.state().settings.panes[0].source,
+        PaneSource::Method {
+            name: "bounds".into(),
+            params: Vec::new()
+        }
+    );
+    harness.get_by_value("bounds").click();
+    harness.run_ok();
+    for name in METHOD_NAMES {
+        let disabled = harness.get_by_label(name).accesskit_node().is_disabled();
+        assert_eq!(
+            disabled,
+            methods::create(name, &[]).is_err() && *name != "reference",
+            "{name}"
+        );
+    }
+}
+
+#[test]
+fn every_overlay_toggles_and_draws_or_is_greyed_with_a_reason() {
+    let mut settings = Settings {
+        layout: Layout::Single,
+        ..Settings::default()
+    };
+    settings.scene.glyph_mode = true;
+    settings.scene.glyph = "g".into();
+    settings.camera.size_px_per_em = 400.0;
+    settings.camera.origin = [300.0, 420.0];
+    for method in gpu_methods() {
+        settings.panes[0] = PaneSettings::method(method);
+        let mut harness = harness(settings.clone());
+        let plain = settle(&mut harness);
+        let supported = methods::create(method, &[]).unwrap().overlays();
+        for overlay in Overlay::ALL {
+            let button = harness.get_by_label(overlay.name());
+            if !supported.contains(&overlay) {
+                assert!(
+                    button.accesskit_node().is_disabled(),
+                    "{method}: {overlay:?}"
+                );
+                continue;
+            }
+            button.click();
+            let screen = settle(&mut harness);
+            assert_eq!(
+                harness.state().settings.panes[0].overlay,
+                PaneOverlay::Method(overlay.name().into())
+            );
+            let coloured = screen
+                .pixels()
+                .filter(|p| p[0].abs_diff(p[1]) > 40 || p[1].abs_diff(p[2]) > 40)
+                .count();
+            assert!(
+                coloured > 1000,
+                "{method} {overlay:?}: {coloured} coloured pixels"
+            );
+            harness.get_by_label(overlay.name()).click();
+            harness.step();
+        }
+        // The error against the reference, coloured exactly like `metrics::error_image`.
+        harness.get_by_label("error").click();
+        let screen = settle(&mut harness);
+        let app = harness.state();
+        let error = metrics::error_image(
+            &app.pane_capture(0).unwrap(),
+            &app.reference_image().unwrap(),
+            app.settings.difference_scale,
+        );
+        let (rect, x0, y0, x1, y1) = clear_area(&harness, 0);
+        let mut worst = 0u8;
+        for y in y0..y1 {
+            for x in x0..x1 {
+                let p = screen.get_pixel(rect.min.x as u32 + x, rect.min.y as u32 + y);
+                let e = error.get_pixel(x, y);
+                worst = worst.max(p[0].abs_diff(e[0])).max(p[2].abs_diff(e[2]));
+            }
+        }
+        assert!(worst <= 1, "{method}: error overlay off by {worst}");
+        harness.get_by_label("error").click();
+        // The outline, on top of coverage.
+        harness.get_by_label("outline").click();
+        let outlined = settle(&mut harness);
+        let orange = |img: &image::RgbaImage| {
+            img.pixels()
+                .filter(|p| p[0] > 200 && (120..220).contains(&p[1]) && p[2] < 80)
+                .count()
+        };
+        assert!(
+            orange(&outlined) > 300 && orange(&plain) == 0,
+            "{method}: no outline drawn"
+        );
+    }
+}
+
+#[test]
+fn a_font_opens_from_disk() {
+    let mut harness = harness(Settings {
+        layout: Layout::Single,
+        ..Settings::default()
+    });
+    let before = settle(&mut harness);
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("fonts/lmroman10-regular.otf");
+    harness.get_by_label("Open…").click();
+    harness.run_ok();
+    let text_input = egui::accesskit::Role::TextInput;
+    harness.get_by_role_and_label(text_input, "path").focus();
+    harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    harness
+        .get_by_role_and_label(text_input, "path")
+        .type_text(path.to_str().unwrap());
+    harness.run_ok();
+    harness.get_by_label("Open").click();
+    let after = settle(&mut harness);
+    let app = harness.state();
+    assert_eq!(app.settings.scene.font.label(), "lmroman10-regular.otf");
+    assert_eq!(app.pane_problem(0), None);
+    assert!(app.pane_error(0).unwrap().mae_255 < 2.0);
+    let changed = before
+        .pixels()
+        .zip(after.pixels())
+        .filter(|(a, b)| a != b)
+        .count();
+    assert!(
+        changed > 5000,
+        "the text looks the same in the new font ({changed} px changed)"
+    );
+}
+
+#[test]
+fn zoom_to_100000_px_per_em_and_back() {
+    let mut settings = Settings {
+        layout: Layout::SideBySide,
+        ..Settings::default()
+    };
+    settings.panes[0] = PaneSettings::method(gpu_methods()[gpu_methods().len() - 1]);
+    settings.panes[1] = PaneSettings::method("reference");
+    settings.scene.glyph_mode = true;
+    settings.scene.glyph = "l".into();
+    // Eleven doublings reach exactly 100 000 px/em.
+    settings.camera.size_px_per_em = 100_000.0 / 2048.0;
+    let mut harness = harness(settings);
+    harness.step();
+    // Put the stem's left edge 0.05 px right of the pane's centre, where the zoom keys
+    // zoom about.
+    let app = harness.state();
+    let rect = app.pane_rects()[0];
+    let scene = app.scene().unwrap().clone();
+    let bounds = scene.glyphs[0].bounds;
+    let s = app.settings.camera.size_px_per_em / scene.units_per_em;
+    let centre = glam::DVec2::new(rect.width() as f64, rect.height() as f64) / 2.0;
+    harness.state_mut().settings.camera.origin = [
+        centre.x + 0.05 - bounds.min.x * s,
+        centre.y + (bounds.min.y + bounds.max.y) / 2.0 * s,
+    ];
+    let start = settle(&mut harness);
+    for _ in 0..11 {
+        harness.key_press(egui::Key::Plus);
+    }
+    let deep = settle(&mut harness);
+    let app = harness.state();
+    assert_eq!(app.settings.camera.size_px_per_em, 100_000.0);
+    // The edge is now 102.4 px right of the centre: empty to its left, ink to its right,
+    // 0.6 of the pixel it runs through.
+    let capture = app.pane_capture(0).unwrap();
+    let row = capture.height / 2;
+    let cx = capture.width / 2;
+
+    assert_eq!(capture.get(cx + 90, row), 0.0);
+    assert_eq!(capture.get(cx + 115, row), 1.0);
+    let edge = capture.get(cx + 102, row);
+    assert!((edge - 0.6).abs() < 0.02, "edge pixel {edge}");
+    let error = app.pane_error(0).unwrap();
+    assert!(
+        error.max < 0.05 && error.mae_255 < 0.1,
+        "at 100 000 px/em: {error:?}"
+    );
+    assert!(screen_vs_coverage(&harness, &deep, 0, &capture) <= 1.5);
+    for _ in 0..11 {
+        harness.key_press(egui::Key::Minus);
+    }
+    let back = settle(&mut harness);
+    assert_eq!(
+        harness.state().settings.camera.size_px_per_em,
+        100_000.0 / 2048.0
+    );
+    let rect = harness.state().pane_rects()[0];
+    let mut worst = 0u8;
+    for y in rect.min.y as u32 + 80..rect.max.y as u32 - 50 {
+        for x in rect.min.x as u32..rect.max.x as u32 {
+            let (a, b) = (start.get_pixel(x, y), back.get_pixel(x, y));
+            worst = worst.max(a[0].abs_diff(b[0]));
+        }
+    }
+    assert!(worst <= 1, "the view did not come back: off by {worst}");
+}
+
+#[test]
+fn live_gpu_time_and_the_speed_vs_error_sweep() {
+    let mut settings = Settings {
+        layout: Layout::Single,
+        continuous: true,
+        ..Settings::default()
+    };
+    settings.scene.glyph_mode = true;
+    settings.camera.size_px_per_em = 64.0;
+    let mut harness = harness(settings);
+    for _ in 0..6 {
+        harness.step();
+        harness.render().unwrap();
+    }
+    let ms = harness
+        .state()
+        .pane_gpu_ms(0)
+        .expect("timestamps read back");
+    assert!(ms > 0.0 && ms.is_finite(), "{ms}");
+    harness.state_mut().settings.continuous = false;
+    settle(&mut harness);
+    harness.key_press(egui::Key::P);
+    harness.step();
+    harness.get_by_label("Run sweep").click();
+    let start = Instant::now();
+    harness.step();
+    while harness.state().sweep_running() {
+        assert!(
+            start.elapsed() < Duration::from_secs(90),
+            "the sweep never ended"
+        );
+        std::thread::sleep(Duration::from_millis(50));
+        harness.step();
+    }
+    let points = harness.state().sweep_points().to_vec();
+    let expected: usize = gpu_methods()
+        .iter()
+        .map(|m| {
+            methods::param_specs(m)
+                .iter()
+                .filter(|s| s.key != "overlay")
+                .map(|s| s.choices.len())
+                .product::<usize>()
+        })
+        .sum();
+    assert_eq!(points.len(), expected);
+    assert!(
+        points
+            .iter()
+            .all(|p| p.gpu_ms > 0.0 && p.mae_255.is_finite())
+    );
+    let screen = harness.render().unwrap();
+    let plotted = screen
+        .pixels()
+        .filter(|p| p[0] > 200 && p[1] > 100 && p[1] < 180 && p[2] < 100)
+        .count();
+    assert!(plotted > 20, "no points drawn in the plot");
+}
+
+#[test]
+fn settings_are_saved_and_restored() {
+    #[derive(Default)]
+    struct Memory(std::collections::HashMap<String, String>);
+    impl eframe::Storage for Memory {
+        fn get_string(&self, key: &str) -> Option<String> {
+            self.0.get(key).cloned()
+        }
+        fn set_string(&mut self, key: &str, value: String) {
+            self.0.insert(key.into(), value);
+        }
+        fn remove_string(&mut self, key: &str) {
+            self.0.remove(key);
+        }
+        fn flush(&mut self) {}
+    }
+    let mut harness = harness(Settings::default());
+    harness.key_press(egui::Key::Num4);
+    harness.key_press(egui::Key::Plus);
+    harness.step();
+    let mut memory = Memory::default();
+    eframe::App::save(harness.state_mut(), &mut memory);
+    let restored: Settings = eframe::get_value(&memory, eframe::APP_KEY).unwrap();
+    assert_eq!(restored, harness.state().settings);
+    assert_eq!(restored.layout, Layout::Grid);
+    assert_eq!(restored.camera.size_px_per_em, 96.0);
+}
