@@ -33,7 +33,7 @@ pub struct Cli {
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Render text or a glyph to an 8-bit grayscale PNG of linear coverage.
-    Render(RenderArgs),
+    Render(Box<RenderArgs>),
     /// Regenerate the README's screenshots of the explorer, headlessly.
     Screenshots(ScreenshotsArgs),
 }

@@ -58,9 +58,10 @@ pub fn write_all(dir: &Path) -> Result<Vec<String>, Error> {
         let mut pane = PaneSettings::method(method.name);
         pane.overlay = PaneOverlay::Error;
         let mut settings = one_pane(pane);
-        settings.camera.size_px_per_em = 14.0;
+        settings.camera.size_px_per_em = 20.0;
         settings.camera.origin = [16.0, 90.0];
-        settings.difference_scale = 0.1;
+        // Good methods err by little: a fine scale shows where.
+        settings.difference_scale = 0.02;
         save("app-overlay-error.png".into(), settings, false)?;
         let mut pane = PaneSettings::method(method.name);
         pane.outline = true;

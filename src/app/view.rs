@@ -293,6 +293,8 @@ impl Explorer {
             PaneSource::Method { name, params } => {
                 let params: Vec<String> = params.iter().map(|(k, v)| format!("{k}={v}")).collect();
                 format!("{} {name} {}", pane_letter(index), params.join(" "))
+                    .trim_end()
+                    .to_string()
             }
             PaneSource::Difference { first, second } => format!(
                 "{} difference {} − {}",
@@ -306,7 +308,7 @@ impl Explorer {
             PaneOverlay::Error => title += " · error vs reference",
             PaneOverlay::None => {}
         }
-        title.trim_end().to_string()
+        title
     }
 
     /// The live numbers of a pane, one line each.

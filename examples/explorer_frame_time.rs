@@ -1,0 +1,65 @@
+//! Frame time of the explorer's 2×2 view on the standard page of text, drawn exactly as
+//! the window draws it (egui_wgpu, paint callbacks, every pane's method) but offscreen:
+//!
+//!     cargo run --release --example explorer_frame_time
+//!
+//! Prints the wall time of whole frames (UI, every pane redrawn, GPU finished) in
+//! continuous mode, each pane's GPU time from its timestamps, and the time of frames in
+//! which only the UI changes (panes are not redrawn then).
+
+use std::time::{Duration, Instant};
+
+use glyphscope::app::headless::Headless;
+use glyphscope::app::settings::{Layout, Settings};
+
+const FRAMES: usize = 40;
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+fn main() -> Result<(), glyphscope::Error> {
+    let mut screen = Headless::new(1920, 1080)?;
+    let mut settings = Settings {
+        layout: Layout::Grid,
+        ..Settings::default()
+    };
+    settings.scene.text = include_str!("../tests/data/page.txt").into();
+    settings.camera.size_px_per_em = 16.0;
+    settings.camera.origin = [8.0, 100.0];
+    // The default panes: winding, the reference, bounds, winding − reference.
+    let mut app = screen.explorer(settings);
+    // Warm up: shaders compile on first use, the reference is worked out once.
+    let start = Instant::now();
+    while !(app.settled() && start.elapsed() > Duration::from_secs(2)) {
+        screen.frame(&mut app)?;
+    }
+    let camera = app.camera().expect("laid out");
+    println!(
+        "2×2 on the standard page ({} glyphs), panes {}×{} px, {}",
+        app.scene().map_or(0, |s| s.instances.len()),
+        camera.width,
+        camera.height,
+        screen.gpu().adapter_name()
+    );
+    for (continuous, what) in [
+        (true, "every pane redrawn"),
+        (false, "UI only, panes cached"),
+    ] {
+        app.settings.continuous = continuous;
+        let mut times = Vec::new();
+        for _ in 0..FRAMES {
+            let t = Instant::now();
+            screen.frame(&mut app)?;
+            times.push(t.elapsed().as_secs_f64() * 1e3);
+        }
+        println!("frame, {what}: median {:.1} ms", median(times));
+    }
+    for pane in 0..4 {
+        if let Some(ms) = app.pane_gpu_ms(pane) {
+            println!("pane {pane}: GPU {ms:.2} ms (median of the recent frames)");
+        }
+    }
+    Ok(())
+}
