@@ -95,6 +95,12 @@ fn screen_vs_coverage(
     worst
 }
 
+/// A device of the core's own, to work out what the app should show.
+fn gpu() -> &'static glyphscope::gpu::GpuContext {
+    static GPU: std::sync::OnceLock<glyphscope::gpu::GpuContext> = std::sync::OnceLock::new();
+    GPU.get_or_init(|| glyphscope::gpu::GpuContext::new().unwrap_or_else(|e| panic!("{e}")))
+}
+
 fn gpu_methods() -> Vec<&'static str> {
     METHOD_NAMES
         .iter()
@@ -139,6 +145,13 @@ fn every_method_in_every_layout_shows_its_own_coverage() {
                     "{name}, {layout:?}, pane {pane}: screen off by {worst}"
                 );
                 if *name != "reference" {
+                    // Counted in the background by the method itself, as the CLI does.
+                    let mut method = methods::create(name, &[]).unwrap();
+                    method.prepare(gpu(), app.scene().unwrap()).unwrap();
+                    let expected = method
+                        .curves_per_pixel(gpu(), &app.camera().unwrap())
+                        .unwrap();
+                    assert_eq!(app.pane_curves(pane), expected, "{name}: curves per pixel");
                     let error = app.pane_error(pane).expect("measured at rest");
                     // `bounds` draws boxes, far from the glyphs; a real method is close.
                     if *name != "bounds" {

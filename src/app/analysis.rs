@@ -1,7 +1,10 @@
-//! The numbers that need the CPU reference — the reference picture itself, and each
-//! pane's error against it — worked out on a background thread once the view rests,
-//! never per frame. A newer request supersedes any still waiting.
+//! The numbers too slow for a frame — the CPU reference, each pane's error against it,
+//! and curves evaluated per pixel (a counting pass of the method's own) — worked out on
+//! a background thread once the view rests. A newer request supersedes any still
+//! waiting. The thread keeps its own prepared copy of each pane's method for counting,
+//! made again only when the scene or the parameters change.
 
+use std::collections::HashMap;
 use std::sync::Arc;
 use std::sync::mpsc::{Receiver, Sender, channel};
 use std::time::Instant;
@@ -10,6 +13,8 @@ use eframe::egui;
 
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
+use crate::gpu::GpuContext;
+use crate::methods::{self, CurveCost, Method};
 use crate::metrics::{self, ErrorStats};
 use crate::reference;
 use crate::scene::Scene;
@@ -23,6 +28,8 @@ pub struct Request {
     pub camera: Camera,
     /// (pane, its coverage for `camera`).
     pub captures: Vec<(usize, Arc<CoverageImage>)>,
+    /// (pane, method, parameters) to count curves per pixel for.
+    pub counts: Vec<(usize, String, Vec<(String, String)>)>,
 }
 
 pub struct Outcome {
@@ -34,7 +41,11 @@ pub struct Outcome {
     /// CPU time of the reference, ms (None when an earlier one was reused).
     pub reference_ms: Option<f64>,
     pub errors: Vec<(usize, Result<ErrorStats, String>)>,
+    pub curves: Vec<(usize, Result<Option<CurveCost>, String>)>,
 }
+
+/// The worker's prepared copy of a pane's method: (scene generation, name, parameters).
+type Counter = (u64, String, Vec<(String, String)>, Box<dyn Method>);
 
 /// The background worker and its mailboxes.
 pub struct Analysis {
@@ -45,19 +56,23 @@ pub struct Analysis {
 }
 
 impl Analysis {
-    pub fn start(ctx: egui::Context) -> Analysis {
+    pub fn start(ctx: egui::Context, gpu: Option<GpuContext>) -> Analysis {
         let (requests, inbox) = channel::<Request>();
         let (outbox, outcomes) = channel();
         std::thread::Builder::new()
             .name("reference and error".into())
             .spawn(move || {
                 let mut last: Option<(u64, Camera, Arc<CoverageImage>)> = None;
+                let mut counters: HashMap<usize, Counter> = HashMap::new();
                 while let Ok(mut request) = inbox.recv() {
                     // Only the newest view matters.
                     while let Ok(newer) = inbox.try_recv() {
                         request = newer;
                     }
-                    let outcome = analyse(&request, &mut last);
+                    let mut outcome = analyse(&request, &mut last);
+                    if let Some(gpu) = &gpu {
+                        outcome.curves = count_curves(gpu, &request, &mut counters);
+                    }
                     if outbox.send(outcome).is_err() {
                         return;
                     }
@@ -135,5 +150,43 @@ fn analyse(request: &Request, last: &mut Option<(u64, Camera, Arc<CoverageImage>
         reference,
         reference_ms,
         errors,
+        curves: Vec::new(),
     }
+}
+
+fn count_curves(
+    gpu: &GpuContext,
+    request: &Request,
+    counters: &mut HashMap<usize, Counter>,
+) -> Vec<(usize, Result<Option<CurveCost>, String>)> {
+    counters.retain(|pane, _| request.counts.iter().any(|(p, _, _)| p == pane));
+    request
+        .counts
+        .iter()
+        .map(|(pane, name, params)| {
+            let fresh = counters.get(pane).is_some_and(|(generation, n, p, _)| {
+                (*generation, n, p) == (request.scene_generation, name, params)
+            });
+            if !fresh {
+                let made = methods::create(name, params).and_then(|mut m| {
+                    m.prepare(gpu, &request.scene)?;
+                    Ok(m)
+                });
+                match made {
+                    Ok(m) => {
+                        counters.insert(
+                            *pane,
+                            (request.scene_generation, name.clone(), params.clone(), m),
+                        );
+                    }
+                    Err(e) => return (*pane, Err(e.to_string())),
+                }
+            }
+            let method = &mut counters.get_mut(pane).expect("made above").3;
+            let counted = method
+                .curves_per_pixel(gpu, &request.camera)
+                .map_err(|e| e.to_string());
+            (*pane, counted)
+        })
+        .collect()
 }

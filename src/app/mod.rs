@@ -263,6 +263,7 @@ impl Explorer {
         });
         let mut settings = settings;
         sanitize(&mut settings);
+        let analysis = Analysis::start(ctx.clone(), gpu.as_ref().map(|(g, _)| g.clone()));
         Explorer {
             settings,
             gpu,
@@ -270,7 +271,7 @@ impl Explorer {
             scene: SceneState::default(),
             panes: (0..PANES).map(|_| Pane::new()).collect(),
             reference: ReferenceState::default(),
-            analysis: Analysis::start(ctx.clone()),
+            analysis,
             view: ViewState::default(),
             sweep: Sweep::default(),
             font_dialog: FontDialog::default(),
@@ -315,6 +316,14 @@ impl Explorer {
         let camera = self.view.camera?;
         let (c, stats) = self.panes[index].error.as_ref()?;
         (*c == camera).then_some(*stats)
+    }
+
+    /// Curves evaluated per pixel in pane `index` for the resting view, for methods that
+    /// count them.
+    pub fn pane_curves(&self, index: usize) -> Option<crate::methods::CurveCost> {
+        let camera = self.view.camera?;
+        let (c, cost) = self.panes[index].curves.as_ref()?;
+        (*c == camera).then_some(*cost)
     }
 
     /// The reference for the current view, once worked out.
@@ -477,6 +486,12 @@ impl Explorer {
         for (pane, result) in outcome.errors {
             match result {
                 Ok(stats) => self.panes[pane].error = Some((outcome.camera, stats)),
+                Err(e) => self.panes[pane].problem = Some(e),
+            }
+        }
+        for (pane, result) in outcome.curves {
+            match result {
+                Ok(cost) => self.panes[pane].curves = cost.map(|c| (outcome.camera, c)),
                 Err(e) => self.panes[pane].problem = Some(e),
             }
         }

@@ -449,8 +449,8 @@ impl Explorer {
         self.legends[index].clone()
     }
 
-    /// Once the view has rested: reads each pane's coverage back once, measures curves
-    /// per pixel, and asks the background worker for the reference and the errors.
+    /// Once the view has rested: reads each pane's coverage back once and asks the
+    /// background worker for the reference, the errors and the curves per pixel.
     pub(super) fn settle(&mut self, ctx: &egui::Context) {
         let (Some(camera), Some(scene)) = (self.view.camera, self.scene.scene().cloned()) else {
             return;
@@ -484,8 +484,9 @@ impl Explorer {
             return;
         }
         let mut captures = Vec::new();
+        let mut counts = Vec::new();
         for (index, pane) in self.panes[..visible].iter_mut().enumerate() {
-            let mut surface = lock(&pane.surface);
+            let surface = lock(&pane.surface);
             if surface.method.is_none() || surface.draw_error.is_some() {
                 continue;
             }
@@ -504,11 +505,8 @@ impl Explorer {
                 }
                 Err(e) => pane.problem = Some(e.to_string()),
             }
-            let method = surface.method.as_mut().expect("checked above");
-            match method.curves_per_pixel(&gpu, &camera) {
-                Ok(Some(cost)) => pane.curves = Some((camera, cost)),
-                Ok(None) => pane.curves = None,
-                Err(e) => pane.problem = Some(e.to_string()),
+            if let PaneSource::Method { name, params } = &self.settings.panes[index].source {
+                counts.push((index, name.clone(), params.clone()));
             }
         }
         self.analysis.send(Request {
@@ -517,6 +515,7 @@ impl Explorer {
             scene_generation: self.scene.generation,
             camera,
             captures,
+            counts,
         });
         self.view.analysed = Some(key);
     }
