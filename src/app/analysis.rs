@@ -28,9 +28,12 @@ pub struct Request {
     pub camera: Camera,
     /// (pane, its coverage for `camera`).
     pub captures: Vec<(usize, Arc<CoverageImage>)>,
-    /// (pane, method, parameters) to count curves per pixel for.
-    pub counts: Vec<(usize, String, Vec<(String, String)>)>,
+    /// The panes to count curves per pixel for.
+    pub counts: Vec<Count>,
 }
+
+/// (pane, method, parameters).
+pub type Count = (usize, String, Vec<(String, String)>);
 
 pub struct Outcome {
     /// The request answered.
