@@ -129,6 +129,8 @@ pub struct RenderStats {
     pub error: Option<ErrorStats>,
     /// Curves evaluated per covered pixel, for methods with that notion.
     pub curves_per_pixel: Option<methods::CurveCost>,
+    /// The meshes built, for methods that draw meshes.
+    pub mesh: Option<methods::MeshStats>,
 }
 
 /// A rendered image, its statistics, and the reference it was compared with (if any).
@@ -247,6 +249,7 @@ pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
         covered_area_px: 0.0,
         error: None,
         curves_per_pixel: None,
+        mesh: None,
     };
     let mut overlay = None;
     let image = if args.method == "reference" {
@@ -283,6 +286,7 @@ pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
             stats.gpu_ms = Some(times[times.len() / 2]);
             stats.gpu_ms_range = Some((times[0], times[times.len() - 1]));
         }
+        stats.mesh = method.mesh_stats();
         image
     };
     stats.covered_area_px = image.sum();

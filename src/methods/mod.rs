@@ -48,6 +48,39 @@ pub trait Method {
     ) -> Result<Option<CurveCost>, Error> {
         Ok(None)
     }
+
+    /// The meshes a method built from the outlines on the CPU, for methods that draw
+    /// meshes: per glyph points, triangles and error figures, and the time spent.
+    fn mesh_stats(&self) -> Option<MeshStats> {
+        None
+    }
+}
+
+/// Meshes a method holds for the current scene (see [`Method::mesh_stats`]).
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
+pub struct MeshStats {
+    /// Totals over `glyphs`.
+    pub points: usize,
+    pub triangles: usize,
+    /// CPU time spent building meshes since `prepare`, whenever it was spent, ms.
+    pub cpu_build_ms: f64,
+    /// One entry per mesh held: per distinct glyph, and per scale bucket where the mesh
+    /// depends on the scale.
+    pub glyphs: Vec<GlyphMeshStats>,
+}
+
+/// One glyph's mesh.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct GlyphMeshStats {
+    /// The glyph's id in its font.
+    pub glyph_id: u16,
+    /// log2 of the pixels per font unit the mesh was built for, if it depends on scale.
+    pub scale_bucket: Option<i32>,
+    /// Outline points the mesh is built on.
+    pub points: usize,
+    pub triangles: usize,
+    /// The method's own area-error figure, if it has one.
+    pub area_error: Option<f64>,
 }
 
 /// Curves a method evaluated per pixel with nonzero coverage.
