@@ -185,7 +185,7 @@ pub fn create(name: &str, params: &Params) -> Result<Box<dyn Method>, Error> {
         "winding" => 3,
         "sdf-cells" => 4,
         "xor-stencil" => 5,
-        "tessellation" => 6,
+        "tessellation" => return Ok(Box::new(tessellation::Tessellation::new(params)?)),
         _ => {
             return Err(Error::Input(format!(
                 "unknown method '{name}'; choose one of: {}",
@@ -217,3 +217,4 @@ pub fn reject_unknown_params(method: &str, params: &Params, known: &[&str]) -> R
 
 pub mod bounds;
 pub mod instances;
+pub mod tessellation;
