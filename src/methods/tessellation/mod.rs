@@ -15,7 +15,7 @@
 //! screen-space mode depends on the scale, so its meshes are built per glyph and per
 //! scale bucket — the power of two at or above the most pixels a font unit spans
 //! anywhere on the instance — when a frame first needs them, with the tolerance that
-//! keeps the bucket's largest scale within D pixels ([`store`]).
+//! keeps the bucket's largest scale within D pixels (`store.rs`).
 
 pub mod mesh;
 mod store;

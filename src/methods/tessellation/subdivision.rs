@@ -118,7 +118,7 @@ impl TaggedContour {
     /// 11X  line (p0, p1]
     /// ```
     ///
-    /// The seed's text gives 11X as "[p2]", but its code (and every count in its table)
+    /// The seed's text gives 11X as "\[p2\]", but its code (and every count in its table)
     /// adds p1: p2 may be a control point. Cubics, which the seed lacks, follow the same
     /// idea: the first of two cubic controls after an on point starts the curve
     /// (p0, p3], and every other point next to a cubic control is skipped.
