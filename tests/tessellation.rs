@@ -574,7 +574,8 @@ fn the_command_line_reports_points_triangles_and_area_error() {
         stats: None,
         error_image: None,
     };
-    let asa = render(&args(&["subdivision", "asa", "threshold", "13"])).unwrap();
+    // A mode's own parameter picks the mode.
+    let asa = render(&args(&["threshold", "13"])).unwrap();
     let mesh = asa.stats.mesh.as_ref().unwrap();
     assert_eq!(mesh.glyphs.len(), 1, "two instances, one distinct glyph");
     let g = &mesh.glyphs[0];
@@ -611,11 +612,11 @@ fn bad_parameters_are_input_errors() {
         (&[("msaa", "8")], "msaa must be 1 or 4"),
         (
             &[("subdivision", "asa"), ("steps", "4")],
-            "steps does not apply to subdivision=asa",
+            "steps applies to subdivision=fsa, not to subdivision=asa",
         ),
         (
-            &[("threshold", "4")],
-            "threshold does not apply to subdivision=screen",
+            &[("steps", "4"), ("threshold", "4")],
+            "threshold applies to subdivision=asa, not to subdivision=fsa (implied by steps)",
         ),
         (&[("overlay", "cells")], "no overlay 'cells'"),
     ] {

@@ -5,7 +5,7 @@
 //! - `subdivision=fsa` (`steps=N`): N equal steps per curve; `asa` (`threshold=T`):
 //!   1 to 16 steps by the seed's average-area-error rule; `screen` (`tolerance_px=D`,
 //!   the default): never more than D pixels from the curve under the current
-//!   transform ([`subdivision`]).
+//!   transform ([`subdivision`]). A mode's own parameter, given alone, picks the mode.
 //! - Triangles from lyon's fill tessellator, nonzero, intersections handled ([`mesh`]).
 //! - `msaa=4` (default) or `1`: the samples per pixel of the method's own target.
 //! - Overlays: `wireframe` (triangle edges) and `points` (outline points, virtual
@@ -143,44 +143,40 @@ impl Tessellation {
                 )));
             }
         };
-        let mode = param(params, "subdivision").unwrap_or("screen");
-        let (setting, not_for_mode) = match mode {
-            "fsa" => (
-                Setting::Fixed {
-                    steps: steps.unwrap_or(DEFAULT_STEPS),
-                },
-                [
-                    ("threshold", threshold.is_some()),
-                    ("tolerance_px", tolerance_px.is_some()),
-                ],
-            ),
-            "asa" => (
-                Setting::Adaptive {
-                    threshold: threshold.unwrap_or(DEFAULT_THRESHOLD),
-                },
-                [
-                    ("steps", steps.is_some()),
-                    ("tolerance_px", tolerance_px.is_some()),
-                ],
-            ),
-            "screen" => (
-                Setting::Screen {
-                    tolerance_px: tolerance_px.unwrap_or(DEFAULT_TOLERANCE_PX),
-                },
-                [
-                    ("steps", steps.is_some()),
-                    ("threshold", threshold.is_some()),
-                ],
-            ),
+        // Each mode's own parameter; given without `subdivision`, it picks its mode.
+        let given: Vec<(&str, &str)> = [
+            ("steps", "fsa", steps.is_some()),
+            ("threshold", "asa", threshold.is_some()),
+            ("tolerance_px", "screen", tolerance_px.is_some()),
+        ]
+        .into_iter()
+        .filter(|&(_, _, is_given)| is_given)
+        .map(|(key, mode, _)| (key, mode))
+        .collect();
+        let (mode, why) = match (param(params, "subdivision"), given.first()) {
+            (Some(mode), _) => (mode, String::new()),
+            (None, Some(&(key, mode))) => (mode, format!(" (implied by {key})")),
+            (None, None) => ("screen", String::new()),
+        };
+        let setting = match mode {
+            "fsa" => Setting::Fixed {
+                steps: steps.unwrap_or(DEFAULT_STEPS),
+            },
+            "asa" => Setting::Adaptive {
+                threshold: threshold.unwrap_or(DEFAULT_THRESHOLD),
+            },
+            "screen" => Setting::Screen {
+                tolerance_px: tolerance_px.unwrap_or(DEFAULT_TOLERANCE_PX),
+            },
             other => {
                 return Err(Error::Input(format!(
                     "method '{NAME}': subdivision must be fsa, asa or screen, got '{other}'"
                 )));
             }
         };
-        if let Some((key, _)) = not_for_mode.iter().find(|(_, given)| *given) {
+        if let Some((key, owner)) = given.iter().find(|(_, owner)| *owner != mode) {
             return Err(Error::Input(format!(
-                "method '{NAME}': {key} does not apply to subdivision={mode}"
+                "method '{NAME}': {key} applies to subdivision={owner}, not to subdivision={mode}{why}"
             )));
         }
         Ok(Tessellation {
