@@ -51,13 +51,8 @@ impl Segment {
                     .flatten(tolerance, f)
             }
             Segment::Cubic(a, b, c, d) => {
-                let cubic = lyon_geom::CubicBezierSegment {
-                    from: to_lyon(a),
-                    ctrl1: to_lyon(b),
-                    ctrl2: to_lyon(c),
-                    to: to_lyon(d),
-                };
-                cubic.for_each_flattened(tolerance, &mut |line| f(from_lyon(line.to)));
+                lyon_cubic(a, b, c, d)
+                    .for_each_flattened(tolerance, &mut |line| f(from_lyon(line.to)));
             }
         }
     }
@@ -65,6 +60,21 @@ impl Segment {
 
 pub(crate) fn to_lyon(p: DVec2) -> lyon_geom::Point<f64> {
     lyon_geom::point(p.x, p.y)
+}
+
+/// The cubic with these control points, as lyon_geom's segment.
+pub(crate) fn lyon_cubic(
+    p0: DVec2,
+    p1: DVec2,
+    p2: DVec2,
+    p3: DVec2,
+) -> lyon_geom::CubicBezierSegment<f64> {
+    lyon_geom::CubicBezierSegment {
+        from: to_lyon(p0),
+        ctrl1: to_lyon(p1),
+        ctrl2: to_lyon(p2),
+        to: to_lyon(p3),
+    }
 }
 
 pub(crate) fn from_lyon(p: lyon_geom::Point<f64>) -> DVec2 {

@@ -8,6 +8,10 @@ pub const COMMON_WGSL: &str = include_str!("../../shaders/common.wgsl");
 pub const METHOD_SHADERS: &[(&str, &str)] = &[
     ("bounds.wgsl", include_str!("../../shaders/bounds.wgsl")),
     ("winding.wgsl", include_str!("../../shaders/winding.wgsl")),
+    (
+        "tessellation.wgsl",
+        include_str!("../../shaders/tessellation.wgsl"),
+    ),
 ];
 
 /// The full source of a method shader, common part included.

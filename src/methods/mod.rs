@@ -48,6 +48,39 @@ pub trait Method {
     ) -> Result<Option<CurveCost>, Error> {
         Ok(None)
     }
+
+    /// The meshes a method built from the outlines on the CPU, for methods that draw
+    /// meshes: per glyph points, triangles and error figures, and the time spent.
+    fn mesh_stats(&self) -> Option<MeshStats> {
+        None
+    }
+}
+
+/// Meshes a method holds for the current scene (see [`Method::mesh_stats`]).
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
+pub struct MeshStats {
+    /// Totals over `glyphs`.
+    pub points: usize,
+    pub triangles: usize,
+    /// CPU time spent building meshes since `prepare`, whenever it was spent, ms.
+    pub cpu_build_ms: f64,
+    /// One entry per mesh held: per distinct glyph, and per scale bucket where the mesh
+    /// depends on the scale.
+    pub glyphs: Vec<GlyphMeshStats>,
+}
+
+/// One glyph's mesh.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct GlyphMeshStats {
+    /// The glyph's id in its font.
+    pub glyph_id: u16,
+    /// log2 of the pixels per font unit the mesh was built for, if it depends on scale.
+    pub scale_bucket: Option<i32>,
+    /// Outline points the mesh is built on.
+    pub points: usize,
+    pub triangles: usize,
+    /// The method's own area-error figure, if it has one.
+    pub area_error: Option<f64>,
 }
 
 /// Curves a method evaluated per pixel with nonzero coverage.
@@ -152,7 +185,7 @@ pub fn create(name: &str, params: &Params) -> Result<Box<dyn Method>, Error> {
         "winding" => return Ok(Box::new(winding::Winding::new(params)?)),
         "sdf-cells" => 4,
         "xor-stencil" => 5,
-        "tessellation" => 6,
+        "tessellation" => return Ok(Box::new(tessellation::Tessellation::new(params)?)),
         _ => {
             return Err(Error::Input(format!(
                 "unknown method '{name}'; choose one of: {}",
@@ -181,6 +214,7 @@ pub struct ParamSpec {
 pub fn param_specs(name: &str) -> &'static [ParamSpec] {
     match name {
         "winding" => winding::PARAMS,
+        "tessellation" => tessellation::PARAMS,
         _ => &[],
     }
 }
@@ -204,6 +238,7 @@ pub fn reject_unknown_params(method: &str, params: &Params, known: &[&str]) -> R
 
 pub mod bounds;
 pub mod instances;
+pub mod tessellation;
 pub mod winding;
 
 #[cfg(test)]
