@@ -178,9 +178,7 @@ impl Method for Bounds {
         camera: &Camera,
     ) -> Result<(), Error> {
         let (Some(pipeline), Some(scene)) = (&self.pipeline, &mut self.prepared) else {
-            return Err(Error::Gpu(
-                "method 'bounds' was asked to draw before `prepare`".into(),
-            ));
+            return Err(super::not_prepared("bounds"));
         };
         let view = Rect {
             min: DVec2::ZERO,

@@ -219,6 +219,14 @@ pub fn param_specs(name: &str) -> &'static [ParamSpec] {
     }
 }
 
+/// The error of a method asked to draw before `prepare`: a caller's bug, reported
+/// rather than panicking.
+pub fn not_prepared(method: &str) -> Error {
+    Error::Gpu(format!(
+        "method '{method}' was asked to draw before `prepare`"
+    ))
+}
+
 /// Rejects parameters a method does not take, naming the ones it does.
 pub fn reject_unknown_params(method: &str, params: &Params, known: &[&str]) -> Result<(), Error> {
     for (key, _) in params {

@@ -529,9 +529,7 @@ impl Method for Tessellation {
         camera: &Camera,
     ) -> Result<(), Error> {
         let (Some(pipelines), Some(scene)) = (&self.pipelines, &mut self.scene) else {
-            return Err(Error::Gpu(format!(
-                "method '{NAME}' was asked to draw before `prepare`"
-            )));
+            return Err(super::not_prepared(NAME));
         };
         scene.frame += 1;
         let setting = self.setting;

@@ -297,9 +297,10 @@ impl Winding {
         camera: &Camera,
         output: Output,
     ) -> Result<(), Error> {
-        let prepared = self.prepared.as_mut().ok_or_else(|| {
-            Error::Gpu("method 'winding' was asked to draw before `prepare`".into())
-        })?;
+        let prepared = self
+            .prepared
+            .as_mut()
+            .ok_or_else(|| super::not_prepared("winding"))?;
         let visible = prepared.instances.update(gpu, camera, 0.0)?;
         let pipeline = self.pipeline(gpu, output).clone();
         let prepared = self.prepared.as_ref().expect("checked above");
