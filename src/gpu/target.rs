@@ -79,7 +79,7 @@ impl CoverageTarget {
     }
 
     /// Every texel as f32 rgba, row-major.
-    fn read_texels(&self, gpu: &GpuContext) -> Result<Vec<[f32; 4]>, Error> {
+    pub(crate) fn read_texels(&self, gpu: &GpuContext) -> Result<Vec<[f32; 4]>, Error> {
         let row_bytes = self.width * Self::TEXEL_BYTES;
         // Buffer rows of a texture copy must start on 256-byte boundaries.
         let padded_row_bytes = row_bytes.next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);

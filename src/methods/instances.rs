@@ -35,6 +35,8 @@ pub struct Instances {
     /// (pen position, distinct glyph index, local bounds) per instance.
     placed: Vec<(DVec2, u32, Rect)>,
     staging: Vec<GpuInstance>,
+    /// Which instances the last `update` wrote, in buffer order.
+    written: Vec<u32>,
     buffer: wgpu::Buffer,
     /// `Frame` of `common.wgsl`: the target size.
     frame: wgpu::Buffer,
@@ -63,6 +65,7 @@ impl Instances {
         Instances {
             units_per_em: scene.units_per_em,
             staging: Vec::with_capacity(placed.len()),
+            written: Vec::with_capacity(placed.len()),
             placed,
             buffer,
             frame,
@@ -78,11 +81,13 @@ impl Instances {
             max: DVec2::new(f64::from(camera.width), f64::from(camera.height)) + 1.0 + margin,
         };
         self.staging.clear();
-        for &(pen, glyph, bounds) in &self.placed {
+        self.written.clear();
+        for (index, &(pen, glyph, bounds)) in self.placed.iter().enumerate() {
             let to_image = camera.glyph_to_image(self.units_per_em, pen);
             if !Camera::project_bounds(&to_image, &bounds)?.overlaps(&view) {
                 continue;
             }
+            self.written.push(index as u32);
             self.staging.push(GpuInstance {
                 to_image: columns(&to_image),
                 to_local: columns(&to_image.inverse()),
@@ -98,6 +103,13 @@ impl Instances {
                 .write_buffer(&self.buffer, 0, bytemuck::cast_slice(&self.staging));
         }
         Ok(self.staging.len() as u32)
+    }
+
+    /// The instances the last `update` wrote, in buffer order, as indices into the
+    /// scene's instances: methods that draw instances in runs (per glyph, per layer)
+    /// find their runs here.
+    pub fn written(&self) -> &[u32] {
+        &self.written
     }
 
     /// The `array<GlyphInstance>` storage buffer.
