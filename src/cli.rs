@@ -264,8 +264,9 @@ pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
         let start = Instant::now();
         method.prepare(&gpu, &scene)?;
         stats.cpu_prepare_ms += ms_since(start);
-        stats.gpu_bytes = method.gpu_bytes();
         gpu::render_frame(&gpu, method.as_mut(), &target, &camera)?;
+        // After a frame: the intermediate targets a method keeps (MSAA, stencil) count.
+        stats.gpu_bytes = method.gpu_bytes();
         let image = target.readback(&gpu)?;
         if methods::param(&args.params, "overlay").is_some_and(|v| v != "none") {
             overlay = Some(target.readback_color(&gpu)?);

@@ -30,7 +30,8 @@ pub trait Method {
         camera: &Camera,
     ) -> Result<(), Error>;
 
-    /// GPU memory held for the prepared scene, bytes.
+    /// GPU memory held for the prepared scene, and for the intermediate targets (MSAA,
+    /// stencil) kept from the last frame, bytes.
     fn gpu_bytes(&self) -> u64;
 
     /// The overlays this method can draw (chosen with the `overlay` parameter).
@@ -151,7 +152,7 @@ pub fn create(name: &str, params: &Params) -> Result<Box<dyn Method>, Error> {
         "bounds" => return Ok(Box::new(bounds::Bounds::new(params)?)),
         "winding" => 3,
         "sdf-cells" => 4,
-        "xor-stencil" => 5,
+        "xor-stencil" => return Ok(Box::new(xor_stencil::XorStencil::new(params)?)),
         "tessellation" => 6,
         _ => {
             return Err(Error::Input(format!(
@@ -184,3 +185,4 @@ pub fn reject_unknown_params(method: &str, params: &Params, known: &[&str]) -> R
 
 pub mod bounds;
 pub mod instances;
+pub mod xor_stencil;
