@@ -1,7 +1,9 @@
 //! The interactive explorer (UI only: every pixel it shows comes from the render core).
 //!
-//! For now it shows the exact reference rasterization of shaped text in any shipped
-//! font; the GPU methods, overlays and comparison panes join it as they land.
+//! It shows shaped text in any shipped font, drawn by the exact reference or by any GPU
+//! method with its parameters (an overlay's picture in colour), and the method's error
+//! against the reference. GPU methods render offscreen on a device of their own and
+//! are read back, exactly as the command line renders them.
 
 use eframe::egui;
 
@@ -9,6 +11,9 @@ use crate::camera::Camera;
 use crate::cli::FRAME_MARGIN_PX;
 use crate::coverage::CoverageImage;
 use crate::font::{Font, SHIPPED_FONTS};
+use crate::gpu::{self, CoverageTarget, GpuContext};
+use crate::methods::{self, METHOD_NAMES};
+use crate::metrics;
 use crate::reference;
 use crate::scene::Scene;
 
@@ -34,13 +39,27 @@ struct Settings {
     text: String,
     font: usize,
     size_px_per_em: f64,
+    method: &'static str,
+    /// `KEY=VALUE` pairs separated by spaces, as `--param` takes them.
+    params: String,
 }
 
 struct Explorer {
     settings: Settings,
     shown: Option<Settings>,
-    texture: Option<egui::TextureHandle>,
+    /// The picture, and whether it is coverage (tinted like text) or an overlay's
+    /// colours.
+    texture: Option<(egui::TextureHandle, bool)>,
     status: String,
+    /// Opened on the first GPU method.
+    gpu: Option<GpuContext>,
+}
+
+/// What a method drew: coverage, and the overlay's picture if one was asked for.
+struct Drawn {
+    coverage: CoverageImage,
+    overlay: Option<image::RgbImage>,
+    reference: CoverageImage,
 }
 
 impl Default for Explorer {
@@ -50,16 +69,19 @@ impl Default for Explorer {
                 text: DEFAULT_TEXT.into(),
                 font: 0,
                 size_px_per_em: 48.0,
+                method: "reference",
+                params: String::new(),
             },
             shown: None,
             texture: None,
             status: String::new(),
+            gpu: None,
         }
     }
 }
 
 impl Explorer {
-    fn rasterize(&self) -> Result<CoverageImage, crate::Error> {
+    fn draw(&mut self) -> Result<Drawn, crate::Error> {
         let s = &self.settings;
         let scene = Scene::from_text(&Font::shipped(s.font), &s.text)?;
         let ink = scene.ink_bounds().expect("a text scene has ink");
@@ -72,7 +94,41 @@ impl Explorer {
             s.size_px_per_em,
             origin,
         );
-        reference::rasterize(&scene, &camera)
+        let reference = reference::rasterize(&scene, &camera)?;
+        if s.method == "reference" {
+            return Ok(Drawn {
+                coverage: reference.clone(),
+                overlay: None,
+                reference,
+            });
+        }
+        let params: Vec<(String, String)> = s
+            .params
+            .split_whitespace()
+            .map(|pair| match pair.split_once('=') {
+                Some((k, v)) => Ok((k.to_string(), v.to_string())),
+                None => Err(crate::Error::Input(format!(
+                    "parameters are KEY=VALUE, got '{pair}'"
+                ))),
+            })
+            .collect::<Result<_, _>>()?;
+        let mut method = methods::create(s.method, &params)?;
+        if self.gpu.is_none() {
+            self.gpu = Some(GpuContext::new()?);
+        }
+        let gpu = self.gpu.as_ref().expect("opened above");
+        let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
+        method.prepare(gpu, &scene)?;
+        gpu::render_frame(gpu, method.as_mut(), &target, &camera)?;
+        let overlay = methods::param(&params, "overlay")
+            .is_some_and(|v| v != "none")
+            .then(|| target.readback_color(gpu))
+            .transpose()?;
+        Ok(Drawn {
+            coverage: target.readback(gpu)?,
+            overlay,
+            reference,
+        })
     }
 
     fn refresh(&mut self, ctx: &egui::Context) {
@@ -80,19 +136,35 @@ impl Explorer {
             return;
         }
         self.shown = Some(self.settings.clone());
-        match self.rasterize() {
-            Ok(image) => {
-                let pixels = image
-                    .data
-                    .iter()
-                    .map(|&c| egui::Color32::from_white_alpha((c * 255.0).round() as u8));
-                let color = egui::ColorImage::new(
-                    [image.width as usize, image.height as usize],
-                    pixels.collect(),
+        match self.draw() {
+            Ok(drawn) => {
+                let image = &drawn.coverage;
+                let size = [image.width as usize, image.height as usize];
+                let color = match &drawn.overlay {
+                    Some(picture) => egui::ColorImage::from_rgb(size, picture.as_raw()),
+                    None => egui::ColorImage::new(
+                        size,
+                        image
+                            .data
+                            .iter()
+                            .map(|&c| egui::Color32::from_white_alpha((c * 255.0).round() as u8))
+                            .collect(),
+                    ),
+                };
+                let texture = ctx.load_texture("glyphs", color, egui::TextureOptions::NEAREST);
+                self.texture = Some((texture, drawn.overlay.is_none()));
+                self.status = format!(
+                    "{}×{} px, {}",
+                    image.width, image.height, self.settings.method
                 );
-                self.texture =
-                    Some(ctx.load_texture("reference", color, egui::TextureOptions::NEAREST));
-                self.status = format!("{}×{} px, reference rasterizer", image.width, image.height);
+                if self.settings.method != "reference"
+                    && let Ok(e) = metrics::compare(image, &drawn.reference)
+                {
+                    self.status += &format!(
+                        "\nvs reference: mean {:.2}/255, max {:.3}",
+                        e.mae_255, e.max
+                    );
+                }
             }
             Err(e) => {
                 self.texture = None;
@@ -120,13 +192,29 @@ impl eframe::App for Explorer {
             );
             ui.text_edit_multiline(&mut self.settings.text);
             ui.separator();
+            ui.heading("Method");
+            egui::ComboBox::from_label("method")
+                .selected_text(self.settings.method)
+                .show_ui(ui, |ui| {
+                    for name in METHOD_NAMES {
+                        ui.selectable_value(&mut self.settings.method, *name, *name);
+                    }
+                });
+            ui.label("parameters (KEY=VALUE …)");
+            ui.text_edit_singleline(&mut self.settings.params);
+            ui.separator();
             ui.label(&self.status);
         });
         self.refresh(ui.ctx());
         egui::CentralPanel::default().show(ui, |ui| {
-            if let Some(texture) = &self.texture {
-                // Coverage is white alpha, tinted to whatever the theme draws text in.
-                let ink = ui.visuals().strong_text_color();
+            if let Some((texture, is_coverage)) = &self.texture {
+                // Coverage is white alpha, tinted to whatever the theme draws text in;
+                // an overlay's picture shows as it is.
+                let ink = if *is_coverage {
+                    ui.visuals().strong_text_color()
+                } else {
+                    egui::Color32::WHITE
+                };
                 egui::ScrollArea::both().show(ui, |ui| {
                     ui.add(egui::Image::new((texture.id(), texture.size_vec2())).tint(ink));
                 });
