@@ -206,45 +206,6 @@ fn check_samples_near(what: &str, scene: &Scene, camera: &Camera, settings: Sett
     assert!(expected.sum() > 20.0, "{what}: barely anything in view");
 }
 
-/// The transforms every scene is checked under.
-fn cameras(base: Camera) -> Vec<(&'static str, Camera)> {
-    let (sin, cos) = 30f64.to_radians().sin_cos();
-    let skew = 0.3;
-    let rotated = Camera::matrix_from_rows(cos, cos * skew - sin, sin, sin * skew + cos);
-    vec![
-        ("identity", base),
-        (
-            "rotation and skew",
-            Camera {
-                matrix: rotated,
-                ..base
-            },
-        ),
-        (
-            "mirrored",
-            Camera {
-                matrix: Camera::matrix_from_rows(-1.0, 0.0, 0.0, 1.0),
-                origin: DVec2::new(f64::from(base.width) - base.origin.x, base.origin.y),
-                ..base
-            },
-        ),
-        (
-            "tilt 30°",
-            Camera {
-                tilt_deg: 30.0,
-                ..base
-            },
-        ),
-        (
-            "far world offset",
-            Camera {
-                world_offset: DVec2::new(1e5, -1e5),
-                ..base
-            },
-        ),
-    ]
-}
-
 /// A camera framing `scene` at `size` with a margin and a sub-pixel offset.
 fn framed(scene: &Scene, size: f64, subpixel: DVec2) -> Camera {
     let ink = scene.ink_bounds().unwrap();
