@@ -12,6 +12,10 @@ pub const METHOD_SHADERS: &[(&str, &str)] = &[
         "tessellation.wgsl",
         include_str!("../../shaders/tessellation.wgsl"),
     ),
+    (
+        "xor_stencil.wgsl",
+        include_str!("../../shaders/xor_stencil.wgsl"),
+    ),
 ];
 
 /// The full source of a method shader, common part included.

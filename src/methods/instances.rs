@@ -37,6 +37,8 @@ pub struct Instances {
     /// (pen position, distinct glyph index, local bounds) per instance.
     placed: Vec<(DVec2, u32, Rect)>,
     staging: Vec<GpuInstance>,
+    /// Which instances the last update wrote, in buffer order.
+    written: Vec<u32>,
     buffer: wgpu::Buffer,
     /// `Frame` of `common.wgsl`: the target size.
     frame: wgpu::Buffer,
@@ -65,6 +67,7 @@ impl Instances {
         Instances {
             units_per_em: scene.units_per_em,
             staging: Vec::with_capacity(placed.len()),
+            written: Vec::with_capacity(placed.len()),
             placed,
             buffer,
             frame,
@@ -96,7 +99,7 @@ impl Instances {
             max: DVec2::new(f64::from(camera.width), f64::from(camera.height)) + 1.0 + margin,
         };
         let mut keyed = Vec::with_capacity(self.placed.len());
-        for &(pen, glyph, bounds) in &self.placed {
+        for (index, &(pen, glyph, bounds)) in (0u32..).zip(&self.placed) {
             let to_image = camera.glyph_to_image(self.units_per_em, pen);
             if !Camera::project_bounds(&to_image, &bounds)?.overlaps(&view) {
                 continue;
@@ -107,14 +110,16 @@ impl Instances {
                 glyph,
                 _pad: [0; 3],
             };
-            keyed.push((key(glyph, &to_image), instance));
+            keyed.push((key(glyph, &to_image), index, instance));
         }
         // Stable: within a group, instances keep the scene's order.
-        keyed.sort_by_key(|&(k, _)| k);
+        keyed.sort_by_key(|&(k, _, _)| k);
         let mut groups: Vec<(K, Range<u32>)> = Vec::new();
         self.staging.clear();
-        for (index, &(k, instance)) in (0u32..).zip(&keyed) {
+        self.written.clear();
+        for (index, &(k, scene_index, instance)) in (0u32..).zip(&keyed) {
             self.staging.push(instance);
+            self.written.push(scene_index);
             match groups.last_mut() {
                 Some((last, range)) if *last == k => range.end = index + 1,
                 _ => groups.push((k, index..index + 1)),
@@ -128,6 +133,13 @@ impl Instances {
                 .write_buffer(&self.buffer, 0, bytemuck::cast_slice(&self.staging));
         }
         Ok(groups)
+    }
+
+    /// The instances the last update wrote, in buffer order, as indices into the
+    /// scene's instances: methods that draw instances in runs (per glyph, per layer)
+    /// find their runs here.
+    pub fn written(&self) -> &[u32] {
+        &self.written
     }
 
     /// The `array<GlyphInstance>` storage buffer.

@@ -30,7 +30,8 @@ pub trait Method {
         camera: &Camera,
     ) -> Result<(), Error>;
 
-    /// GPU memory held for the prepared scene, bytes.
+    /// GPU memory held for the prepared scene, and for the intermediate targets (MSAA,
+    /// stencil) kept from the last frame, bytes.
     fn gpu_bytes(&self) -> u64;
 
     /// The overlays this method can draw (chosen with the `overlay` parameter).
@@ -184,7 +185,7 @@ pub fn create(name: &str, params: &Params) -> Result<Box<dyn Method>, Error> {
         "bounds" => return Ok(Box::new(bounds::Bounds::new(params)?)),
         "winding" => return Ok(Box::new(winding::Winding::new(params)?)),
         "sdf-cells" => 4,
-        "xor-stencil" => 5,
+        "xor-stencil" => return Ok(Box::new(xor_stencil::XorStencil::new(params)?)),
         "tessellation" => return Ok(Box::new(tessellation::Tessellation::new(params)?)),
         _ => {
             return Err(Error::Input(format!(
@@ -215,6 +216,7 @@ pub fn param_specs(name: &str) -> &'static [ParamSpec] {
     match name {
         "winding" => winding::PARAMS,
         "tessellation" => tessellation::PARAMS,
+        "xor-stencil" => xor_stencil::PARAMS,
         _ => &[],
     }
 }
@@ -248,6 +250,7 @@ pub mod bounds;
 pub mod instances;
 pub mod tessellation;
 pub mod winding;
+pub mod xor_stencil;
 
 #[cfg(test)]
 mod tests {
