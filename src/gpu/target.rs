@@ -78,6 +78,12 @@ impl CoverageTarget {
         Ok(image::RgbImage::from_raw(self.width, self.height, bytes).expect("size matches"))
     }
 
+    /// Every texel as f32 rgba, row-major, unclamped: for methods that write numbers
+    /// (counts, distances) rather than a picture.
+    pub fn readback_rgba(&self, gpu: &GpuContext) -> Result<Vec<[f32; 4]>, Error> {
+        self.read_texels(gpu)
+    }
+
     /// Every texel as f32 rgba, row-major.
     fn read_texels(&self, gpu: &GpuContext) -> Result<Vec<[f32; 4]>, Error> {
         let row_bytes = self.width * Self::TEXEL_BYTES;
