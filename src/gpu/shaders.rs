@@ -5,8 +5,13 @@
 pub const COMMON_WGSL: &str = include_str!("../../shaders/common.wgsl");
 
 /// Every method shader, by file name. A new shader is added here, and only here.
-pub const METHOD_SHADERS: &[(&str, &str)] =
-    &[("bounds.wgsl", include_str!("../../shaders/bounds.wgsl"))];
+pub const METHOD_SHADERS: &[(&str, &str)] = &[
+    ("bounds.wgsl", include_str!("../../shaders/bounds.wgsl")),
+    (
+        "sdf_cells.wgsl",
+        include_str!("../../shaders/sdf_cells.wgsl"),
+    ),
+];
 
 /// The full source of a method shader, common part included.
 pub fn source(file: &str) -> String {

@@ -150,7 +150,7 @@ pub fn create(name: &str, params: &Params) -> Result<Box<dyn Method>, Error> {
     let issue = match name {
         "bounds" => return Ok(Box::new(bounds::Bounds::new(params)?)),
         "winding" => 3,
-        "sdf-cells" => 4,
+        "sdf-cells" => return Ok(Box::new(sdf_cells::SdfCells::new(params)?)),
         "xor-stencil" => 5,
         "tessellation" => 6,
         _ => {
@@ -184,3 +184,4 @@ pub fn reject_unknown_params(method: &str, params: &Params, known: &[&str]) -> R
 
 pub mod bounds;
 pub mod instances;
+pub mod sdf_cells;
