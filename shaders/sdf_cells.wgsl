@@ -3,8 +3,8 @@
 //
 // Per distinct glyph (`GlyphCells`): a grid over the outline; the glyph's points in the
 // seed's layout (curve i starts at points[i], an even index; points[i - 2] is the
-// previous curve's start); per cell either the seed's packed u32 (three runs of
-// consecutive curves) or (offset, count) into a list of slots (slot = point index / 2).
+// previous curve's start); per cell one u32, either the seed's packed word (three runs
+// of consecutive curves) or an escape to a list of slots (slot = point index / 2).
 // Exact mode adds one band per grid row for the winding number. All math is in the
 // glyph's own font units, y up: the numbers stay small wherever the glyph is.
 
@@ -18,8 +18,6 @@ struct GlyphCells {
     word_base: u32,
     // Band headers, from word_base: (offset from word_base, count) per grid row.
     band_offset: u32,
-    // 1: cells are packed words; 0: (offset from word_base, count) pairs.
-    packed: u32,
 }
 
 struct Settings {
@@ -76,8 +74,10 @@ fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u
 // ---- Cells -------------------------------------------------------------------------
 
 struct CellCurves {
-    // Packed: the seed's word. List: the first index word.
+    // The seed's packed word, or 0 for a list.
     word: u32,
+    // Index in `words` of the list's first slot.
+    list: u32,
     count: u32,
 }
 
@@ -91,18 +91,20 @@ fn cell_index(g: GlyphCells, p: vec2<f32>) -> u32 {
 }
 
 fn cell_curves(g: GlyphCells, index: u32) -> CellCurves {
-    if g.packed == 1u {
-        let word = words[g.word_base + index];
-        return CellCurves(word, (word & 3u) + ((word >> 2u) & 7u) + ((word >> 5u) & 7u));
+    let word = words[g.word_base + index];
+    let lengths = vec3<u32>(word & 3u, (word >> 2u) & 7u, (word >> 5u) & 7u);
+    if (word & 0xFFu) == 0u && word != 0u {
+        // No lengths but an offset: the list encoding, `count` then the slots.
+        let at = g.word_base + (word >> 8u);
+        return CellCurves(0u, at + 1u, words[at]);
     }
-    let at = g.word_base + 2u * index;
-    return CellCurves(g.word_base + words[at], words[at + 1u]);
+    return CellCurves(word, 0u, lengths.x + lengths.y + lengths.z);
 }
 
 // The point index where the k-th curve of a cell starts.
 fn cell_curve(g: GlyphCells, cell: CellCurves, k: u32) -> u32 {
-    if g.packed == 0u {
-        return g.point_base + 2u * words[cell.word + k];
+    if cell.word == 0u {
+        return g.point_base + 2u * words[cell.list + k];
     }
     // The seed's three loops: lengths in bits 0-1, 2-4, 5-7; begins (slots) in the
     // bytes above.

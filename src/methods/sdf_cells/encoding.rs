@@ -1,7 +1,6 @@
-//! How a cell's curve list reaches the shader.
+//! How a cell's curve list reaches the shader: one u32 per cell.
 //!
-//! **Packed** (the seed's encoding, bit for bit): one u32 per cell holding three loops
-//! of consecutive curves,
+//! **Packed** (the seed's encoding, bit for bit): three loops of consecutive curves,
 //!
 //! ```text
 //!   bits 0–1 len0 · 2–4 len1 · 5–7 len2 · 8–15 begin0 · 16–23 begin1 · 24–31 begin2
@@ -11,8 +10,10 @@
 //! 3 + 7 + 7 = 17 curves in three runs, starting within the first 256 slots (the seed's
 //! 512 points). A run may take in curves the cell does not need, to bridge a gap.
 //!
-//! **List** (general): two u32 per cell, the offset of the cell's slots in an index list
-//! and their count. Any cell fits.
+//! **List** (general): where the seed's word cannot hold a cell, the word escapes to a
+//! list: all three lengths zero (a pattern the seed never needs, since every cell lists
+//! a curve) and bits 8–31 the offset, from the glyph's first word, of `count` followed
+//! by `count` slots. Any cell fits; `encoding=list` escapes every cell.
 
 use super::curves::CurveLayout;
 
@@ -107,74 +108,59 @@ pub fn pack_cell(slots: &[u32], layout: &CurveLayout) -> Option<(u32, u32)> {
     best.map(|(runs, total)| (pack(runs), total))
 }
 
-/// A glyph's cells, encoded.
+/// Escape words keep their offset in bits 8–31.
+const ESCAPE_SHIFT: u32 = 8;
+/// The largest offset an escape word can hold.
+pub const MAX_ESCAPE_OFFSET: usize = (1 << (32 - ESCAPE_SHIFT)) - 1;
+
+/// A glyph's cells as the shader reads them: one word per cell, then the escaped cells'
+/// lists.
 #[derive(Clone, Debug, PartialEq)]
-pub enum EncodedCells {
-    /// One packed word per cell.
-    Packed(Vec<u32>),
-    /// Per cell (offset into `indices`, count); the slots themselves in `indices`.
-    List {
-        cells: Vec<[u32; 2]>,
-        indices: Vec<u32>,
-    },
+pub struct EncodedCells {
+    pub words: Vec<u32>,
+    /// Cells whose word escapes to a list.
+    pub escaped: usize,
 }
 
 impl EncodedCells {
-    /// Every cell packed, or `None` if one does not fit.
-    pub fn packed(lists: &[Vec<u32>], layout: &CurveLayout) -> Option<EncodedCells> {
-        lists
-            .iter()
-            .map(|l| pack_cell(l, layout).map(|(word, _)| word))
-            .collect::<Option<Vec<u32>>>()
-            .map(EncodedCells::Packed)
-    }
-
-    pub fn list(lists: &[Vec<u32>]) -> EncodedCells {
-        let mut indices = Vec::with_capacity(lists.iter().map(Vec::len).sum());
-        let cells = lists
-            .iter()
-            .map(|l| {
-                let offset = indices.len() as u32;
-                indices.extend_from_slice(l);
-                [offset, l.len() as u32]
-            })
-            .collect();
-        EncodedCells::List { cells, indices }
-    }
-
-    pub fn is_packed(&self) -> bool {
-        matches!(self, EncodedCells::Packed(_))
+    /// Packs every cell of `lists` that the seed's word can hold (all of them when
+    /// `pack`, none otherwise) and lists the others. `None` when the lists are too long
+    /// for an escape word's offset (over 16 million words for one glyph).
+    pub fn new(lists: &[Vec<u32>], layout: &CurveLayout, pack: bool) -> Option<EncodedCells> {
+        let mut words = vec![0; lists.len()];
+        let mut escaped = 0;
+        for (index, list) in lists.iter().enumerate() {
+            match pack_cell(list, layout).filter(|_| pack) {
+                Some((word, _)) => words[index] = word,
+                None => {
+                    if words.len() > MAX_ESCAPE_OFFSET {
+                        return None;
+                    }
+                    words[index] = (words.len() as u32) << ESCAPE_SHIFT;
+                    words.push(list.len() as u32);
+                    words.extend_from_slice(list);
+                    escaped += 1;
+                }
+            }
+        }
+        Some(EncodedCells { words, escaped })
     }
 
     /// The slots the shader visits for cell `index`, in its order.
     pub fn cell_slots(&self, index: usize) -> Vec<u32> {
-        match self {
-            EncodedCells::Packed(words) => unpack(words[index])
-                .into_iter()
-                .flat_map(Run::slots)
-                .collect(),
-            EncodedCells::List { cells, indices } => {
-                let [offset, count] = cells[index];
-                indices[offset as usize..(offset + count) as usize].to_vec()
-            }
+        let word = self.words[index];
+        if is_escape(word) {
+            let at = (word >> ESCAPE_SHIFT) as usize;
+            let count = self.words[at] as usize;
+            return self.words[at + 1..at + 1 + count].to_vec();
         }
+        unpack(word).into_iter().flat_map(Run::slots).collect()
     }
+}
 
-    /// The u32 words as the shader reads them: the cells, then (list) the indices, whose
-    /// offsets count from the first cell word.
-    pub fn words(&self) -> Vec<u32> {
-        match self {
-            EncodedCells::Packed(words) => words.clone(),
-            EncodedCells::List { cells, indices } => {
-                let start = 2 * cells.len() as u32;
-                cells
-                    .iter()
-                    .flat_map(|&[offset, count]| [start + offset, count])
-                    .chain(indices.iter().copied())
-                    .collect()
-            }
-        }
-    }
+/// Whether a cell's word escapes to a list (`cell_curves` in the shader).
+pub fn is_escape(word: u32) -> bool {
+    word & 0xFF == 0 && word != 0
 }
 
 #[cfg(test)]
@@ -261,11 +247,23 @@ mod tests {
         let layout = layout(&[300]);
         assert!(pack_cell(&[250, 255], &layout).is_some());
         assert!(pack_cell(&[256], &layout).is_none());
-        let lists = vec![vec![3, 4], vec![280]];
-        assert!(EncodedCells::packed(&lists, &layout).is_none());
-        let list = EncodedCells::list(&lists);
-        assert_eq!(list.cell_slots(1), vec![280]);
-        // Offsets in the words count from the first cell word.
-        assert_eq!(list.words(), vec![4, 2, 6, 1, 3, 4, 280]);
+    }
+
+    #[test]
+    fn cells_the_word_cannot_hold_escape_to_a_list() {
+        let layout = layout(&[300]);
+        let lists = vec![vec![3, 4], vec![280], vec![], vec![5]];
+        let cells = EncodedCells::new(&lists, &layout, true).unwrap();
+        // The second cell escapes to its list after the four cell words.
+        assert_eq!(cells.escaped, 1);
+        assert_eq!(cells.words[1], 4 << 8);
+        assert_eq!(&cells.words[4..], &[1, 280]);
+        assert!(!is_escape(cells.words[0]) && !is_escape(cells.words[2]));
+        let everything = EncodedCells::new(&lists, &layout, false).unwrap();
+        assert_eq!(everything.escaped, 4);
+        for (index, list) in lists.iter().enumerate() {
+            assert_eq!(&cells.cell_slots(index), list);
+            assert_eq!(&everything.cell_slots(index), list);
+        }
     }
 }

@@ -7,13 +7,14 @@ use super::cells::{Grid, Mode, cell_lists, row_bands};
 use super::curves::CurveLayout;
 use super::encoding::EncodedCells;
 use super::params::{EncodingChoice, GridChoice, Settings};
+use crate::Error;
 use crate::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Rect};
 
 /// Border cells also serve points this far outside the grid (em): the pixels the quad
 /// is dilated by at small sizes (half a pixel's diagonal is 1/16 em at 11 px/em).
 pub const OUTSIDE_EM: f64 = 1.0 / 16.0;
 /// The automatic grid aims at this many cells per curve, in square-ish cells.
-const CELLS_PER_CURVE: f64 = 1.0;
+const CELLS_PER_CURVE: f64 = 4.0;
 /// The most cells along a side the automatic grid uses (a forced grid may use more).
 const MAX_AUTO_SIDE: u32 = 32;
 /// How far `encoding=packed` refines an automatic grid to make a glyph fit.
@@ -31,7 +32,13 @@ pub struct PreparedGlyph {
 }
 
 impl PreparedGlyph {
-    pub fn new(outline: &Outline, units_per_em: f64, settings: &Settings) -> PreparedGlyph {
+    /// Fails only for a glyph whose lists outgrow what an escape word can address
+    /// (some 16 million words: thousands of curves in each of thousands of cells).
+    pub fn new(
+        outline: &Outline,
+        units_per_em: f64,
+        settings: &Settings,
+    ) -> Result<PreparedGlyph, Error> {
         let quadratics = outline.to_quadratics(DEFAULT_QUAD_TOLERANCE_EM * units_per_em);
         let layout = CurveLayout::new(&quadratics);
         let curves = layout.curve_slots.len();
@@ -55,35 +62,36 @@ impl PreparedGlyph {
             GridChoice::Fixed(n) => Grid::covering(area, n, n),
             GridChoice::Auto => square_grid(area, auto_side(area, curves)),
         });
-        let cells = match settings.encoding {
-            EncodingChoice::List => EncodedCells::list(&lists),
-            EncodingChoice::Auto => {
-                EncodedCells::packed(&lists, &layout).unwrap_or_else(|| EncodedCells::list(&lists))
-            }
-            EncodingChoice::Packed => loop {
-                if let Some(packed) = EncodedCells::packed(&lists, &layout) {
-                    break packed;
-                }
-                let side = grid.cols.max(grid.rows);
-                if settings.grid != GridChoice::Auto || side >= MAX_PACKING_SIDE {
-                    break EncodedCells::list(&lists);
-                }
-                // Smaller cells list fewer curves: 1.5 times finer per step.
-                let finer = (f64::from(side) * 1.5).ceil() as u32;
-                (grid, lists) = build(square_grid(area, finer.min(MAX_PACKING_SIDE)));
-            },
+        let too_long = || {
+            Error::Input(format!(
+                "a glyph of {curves} curves lists more than the list encoding can address \
+                 with this grid; choose a coarser one"
+            ))
         };
+        let pack = settings.encoding != EncodingChoice::List;
+        let mut cells = EncodedCells::new(&lists, &layout, pack).ok_or_else(too_long)?;
+        // `packed`: refine an automatic grid until the seed's word holds every cell.
+        while settings.encoding == EncodingChoice::Packed
+            && settings.grid == GridChoice::Auto
+            && cells.escaped > 0
+            && grid.cols.max(grid.rows) < MAX_PACKING_SIDE
+        {
+            // Smaller cells list fewer curves: 1.5 times finer per step.
+            let finer = (f64::from(grid.cols.max(grid.rows)) * 1.5).ceil() as u32;
+            (grid, lists) = build(square_grid(area, finer.min(MAX_PACKING_SIDE)));
+            cells = EncodedCells::new(&lists, &layout, true).ok_or_else(too_long)?;
+        }
         let bands = match settings.mode {
             Mode::Exact => row_bands(&layout, &grid),
             Mode::Estimate => Vec::new(),
         };
-        PreparedGlyph {
+        Ok(PreparedGlyph {
             layout,
             grid,
             lists,
             cells,
             bands,
-        }
+        })
     }
 
     /// The rectangle the quad covers before pixel dilation (font units): the grid.

@@ -82,7 +82,7 @@ struct GpuGlyph {
     point_base: u32,
     word_base: u32,
     band_offset: u32,
-    packed: u32,
+    _pad: u32,
 }
 
 /// `Settings` in the shader; lengths in font units.
@@ -119,8 +119,9 @@ struct PreparedScene {
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
 pub struct Summary {
     pub glyphs: usize,
-    pub packed_glyphs: usize,
     pub cells: usize,
+    /// Cells the seed's packed word cannot hold, listed instead.
+    pub escaped_cells: usize,
     /// Curves listed, over all cells.
     pub listed: usize,
     pub cpu_bytes: usize,
@@ -321,7 +322,7 @@ impl SceneData {
             let word_base = data.words.len() as u32;
             data.points
                 .extend(glyph.layout.points.iter().map(|p| p.as_vec2().to_array()));
-            data.words.extend(glyph.cells.words());
+            data.words.extend(&glyph.cells.words);
             let band_offset = data.words.len() as u32 - word_base;
             // Band headers (offset from the glyph's first word, count), then the bands.
             let mut offset = band_offset + 2 * glyph.bands.len() as u32;
@@ -339,11 +340,11 @@ impl SceneData {
                 point_base,
                 word_base,
                 band_offset,
-                packed: u32::from(glyph.cells.is_packed()),
+                _pad: 0,
             });
             data.summary.glyphs += 1;
-            data.summary.packed_glyphs += usize::from(glyph.cells.is_packed());
             data.summary.cells += grid.cells();
+            data.summary.escaped_cells += glyph.cells.escaped;
             data.summary.listed += glyph.lists.iter().map(Vec::len).sum::<usize>();
         }
         data.summary.cpu_bytes = std::mem::size_of_val(data.glyphs.as_slice())
@@ -382,11 +383,11 @@ impl Method for SdfCells {
                 self.pipeline = Some(Pipeline::new(gpu));
             }
             let pipeline = self.pipeline.as_ref().expect("just built");
-            let prepared: Vec<PreparedGlyph> = scene
+            let prepared = scene
                 .glyphs
                 .iter()
                 .map(|g| PreparedGlyph::new(&g.outline, scene.units_per_em, &self.settings))
-                .collect();
+                .collect::<Result<Vec<_>, Error>>()?;
             let data = SceneData::new(&prepared);
             let instances = Instances::new(gpu, scene);
             let glyphs =
