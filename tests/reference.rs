@@ -259,25 +259,6 @@ fn supersample(scene: &Scene, cam: &Camera, n: usize) -> CoverageImage {
     }
 }
 
-/// A camera that frames `scene` with a margin, at `size`, under `matrix`.
-fn framed(scene: &Scene, size: f64, matrix: [f64; 4], subpixel: DVec2) -> Camera {
-    let mut cam = Camera::new(1, 1, size, DVec2::ZERO);
-    cam.matrix = Camera::matrix_from_rows(matrix[0], matrix[1], matrix[2], matrix[3]);
-    let mut lo = DVec2::splat(f64::INFINITY);
-    let mut hi = DVec2::splat(f64::NEG_INFINITY);
-    for inst in &scene.instances {
-        let m = cam.glyph_to_image(scene.units_per_em, inst.position);
-        let b = Camera::project_bounds(&m, &scene.glyphs[inst.glyph as usize].bounds).unwrap();
-        lo = lo.min(b.min);
-        hi = hi.max(b.max);
-    }
-    cam.origin = DVec2::splat(2.0) - lo + subpixel;
-    let extent = hi - lo + 5.0;
-    cam.width = extent.x.ceil() as u32;
-    cam.height = extent.y.ceil() as u32;
-    cam
-}
-
 #[test]
 fn converges_with_supersampling_on_real_glyphs() {
     let (s30, c30) = 30f64.to_radians().sin_cos();

@@ -1,11 +1,22 @@
 //! Helpers shared by the integration tests: synthetic outlines and scenes laid out so
-//! that one font unit is one pixel.
+//! that one font unit is one pixel, cameras that frame a scene, the GPU.
 #![allow(dead_code)] // each test binary uses its own subset
+
+use std::sync::OnceLock;
 
 use glam::DVec2;
 use glyphscope::camera::Camera;
 use glyphscope::geometry::{Contour, Outline, Segment};
+use glyphscope::gpu::GpuContext;
 use glyphscope::scene::Scene;
+
+/// The GPU, opened once per test binary. Without an adapter the tests that need it fail
+/// with the message that says how to get one (CI installs lavapipe) rather than skip
+/// and pass silently.
+pub fn gpu() -> &'static GpuContext {
+    static GPU: OnceLock<GpuContext> = OnceLock::new();
+    GPU.get_or_init(|| GpuContext::new().unwrap_or_else(|e| panic!("{e}")))
+}
 
 /// A closed polygon contour through `points` (font units, y up).
 pub fn polygon(points: &[(f64, f64)]) -> Contour {
@@ -38,4 +49,24 @@ pub fn single(outline: Outline) -> Scene {
 /// corner, so font (x, y) lands at image (x, height − y).
 pub fn unit_camera(width: u32, height: u32) -> Camera {
     Camera::new(width, height, 1000.0, DVec2::new(0.0, f64::from(height)))
+}
+
+/// A camera that frames `scene` with a margin, at `size`, under `matrix` (rows a, b, c,
+/// d), shifted by `subpixel`.
+pub fn framed(scene: &Scene, size: f64, matrix: [f64; 4], subpixel: DVec2) -> Camera {
+    let mut cam = Camera::new(1, 1, size, DVec2::ZERO);
+    cam.matrix = Camera::matrix_from_rows(matrix[0], matrix[1], matrix[2], matrix[3]);
+    let mut lo = DVec2::splat(f64::INFINITY);
+    let mut hi = DVec2::splat(f64::NEG_INFINITY);
+    for inst in &scene.instances {
+        let m = cam.glyph_to_image(scene.units_per_em, inst.position);
+        let b = Camera::project_bounds(&m, &scene.glyphs[inst.glyph as usize].bounds).unwrap();
+        lo = lo.min(b.min);
+        hi = hi.max(b.max);
+    }
+    cam.origin = DVec2::splat(2.0) - lo + subpixel;
+    let extent = hi - lo + 5.0;
+    cam.width = extent.x.ceil() as u32;
+    cam.height = extent.y.ceil() as u32;
+    cam
 }
