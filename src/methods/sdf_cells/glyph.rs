@@ -5,7 +5,7 @@ use glam::DVec2;
 
 use super::cells::{Grid, Mode, cell_lists, row_bands};
 use super::curves::CurveLayout;
-use super::encoding::EncodedCells;
+use super::encoding::{EncodedCells, MAX_BEGIN_SLOT};
 use super::params::{EncodingChoice, GridChoice, Settings};
 use crate::Error;
 use crate::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Rect};
@@ -70,9 +70,11 @@ impl PreparedGlyph {
         };
         let pack = settings.encoding != EncodingChoice::List;
         let mut cells = EncodedCells::new(&lists, &layout, pack).ok_or_else(too_long)?;
-        // `packed`: refine an automatic grid until the seed's word holds every cell.
+        // `packed`: refine an automatic grid until the seed's word holds every cell, for
+        // glyphs whose curves all begin within its reach.
         while settings.encoding == EncodingChoice::Packed
             && settings.grid == GridChoice::Auto
+            && layout.slots() <= MAX_BEGIN_SLOT + 1
             && cells.escaped > 0
             && grid.cols.max(grid.rows) < MAX_PACKING_SIDE
         {

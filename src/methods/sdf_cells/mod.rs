@@ -38,7 +38,7 @@ use glyph::PreparedGlyph;
 pub use params::Settings;
 
 /// The cost heat map's full scale: curves evaluated per pixel drawn white.
-pub const HEAT_SCALE: f32 = 48.0;
+pub const HEAT_SCALE: f32 = 32.0;
 
 pub struct SdfCells {
     settings: Settings,

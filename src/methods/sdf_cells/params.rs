@@ -33,12 +33,12 @@ pub enum GridChoice {
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum EncodingChoice {
-    /// Packed where the glyph's grid packs, the list elsewhere.
+    /// Packed for every cell the seed's word holds, the list for the others.
     Auto,
-    /// Packed wherever it can be, refining an automatic grid until the glyph fits;
-    /// the list only for glyphs that cannot fit (past the seed's 256 slots).
+    /// Packed wherever it can be: an automatic grid is refined until every cell fits,
+    /// except for glyphs past the seed's 256 slots, which no grid can fit.
     Packed,
-    /// The list for every glyph.
+    /// The list for every cell.
     List,
 }
 
