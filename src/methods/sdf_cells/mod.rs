@@ -187,22 +187,7 @@ impl SdfCells {
         let count = scene.instances.update(gpu, camera, reach_px)?;
         gpu.queue
             .write_buffer(&scene.settings, 0, bytemuck::bytes_of(&settings));
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("sdf-cells"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &target.view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
-            depth_stencil_attachment: None,
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
+        let mut pass = target.clear_pass(encoder, "sdf-cells");
         if count > 0 {
             pass.set_pipeline(&pipeline.pipeline);
             pass.set_bind_group(0, &scene.bind_group, &[]);
@@ -256,44 +241,8 @@ impl Pipeline {
             bind_group_layouts: &[Some(&bind_group_layout)],
             immediate_size: 0,
         });
-        // Coverage adds up, as in `bounds`: instances whose quads overlap sum their
-        // coverage (and their cost, which is what the cost pass wants).
-        let add = wgpu::BlendComponent {
-            src_factor: wgpu::BlendFactor::One,
-            dst_factor: wgpu::BlendFactor::One,
-            operation: wgpu::BlendOperation::Add,
-        };
-        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("sdf-cells"),
-            layout: Some(&layout),
-            vertex: wgpu::VertexState {
-                module: &shader,
-                entry_point: Some("vs_main"),
-                compilation_options: Default::default(),
-                buffers: &[],
-            },
-            primitive: wgpu::PrimitiveState {
-                topology: wgpu::PrimitiveTopology::TriangleStrip,
-                ..Default::default()
-            },
-            depth_stencil: None,
-            multisample: wgpu::MultisampleState::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: &shader,
-                entry_point: Some("fs_main"),
-                compilation_options: Default::default(),
-                targets: &[Some(wgpu::ColorTargetState {
-                    format: CoverageTarget::FORMAT,
-                    blend: Some(wgpu::BlendState {
-                        color: add,
-                        alpha: add,
-                    }),
-                    write_mask: wgpu::ColorWrites::ALL,
-                })],
-            }),
-            multiview_mask: None,
-            cache: None,
-        });
+        // Coverage adds up where quads overlap, and so does the cost the cost pass counts.
+        let pipeline = CoverageTarget::quad_pipeline(device, "sdf-cells", &layout, &shader, &[]);
         Pipeline {
             pipeline,
             bind_group_layout,
