@@ -231,9 +231,14 @@ fn page_report(gpu: &GpuContext) {
             t[t.len() / 2]
         })
         .collect();
+    let mut culprits = String::new();
     for (k, (name, method)) in methods.iter_mut().enumerate() {
         render_frame(gpu, method, &target, &camera).unwrap();
-        let e = compare(&target.readback(gpu).unwrap(), &expected).unwrap();
+        let image = target.readback(gpu).unwrap();
+        let e = compare(&image, &expected).unwrap();
+        if k == 0 {
+            culprits = page_culprits(&scene, &camera, &image, &expected, &text);
+        }
         let cost = method.curves_per_pixel(gpu, &camera).unwrap().unwrap();
         let summary = method.summary().unwrap();
         println!(
@@ -249,7 +254,51 @@ fn page_report(gpu: &GpuContext) {
         );
         eprintln!("{name}: {summary:?}, {} GPU bytes", method.gpu_bytes());
     }
+    println!("\nEstimate pixels over 0.5 by glyph: {culprits}.");
     println!("\nAdapter: {}.", gpu.adapter_name());
+}
+
+/// The glyphs whose quads hold the pixels off by more than 0.5, with their counts.
+fn page_culprits(
+    scene: &Scene,
+    camera: &Camera,
+    image: &glyphscope::coverage::CoverageImage,
+    expected: &glyphscope::coverage::CoverageImage,
+    text: &str,
+) -> String {
+    let font = Font::default_font();
+    let boxes: Vec<_> = scene
+        .instances
+        .iter()
+        .map(|i| {
+            let to_image = camera.glyph_to_image(scene.units_per_em, i.position);
+            let bounds = &scene.glyphs[i.glyph as usize].bounds;
+            (i.glyph, Camera::project_bounds(&to_image, bounds).unwrap())
+        })
+        .collect();
+    let mut counts: BTreeMap<String, usize> = BTreeMap::new();
+    for y in 0..camera.height {
+        for x in 0..camera.width {
+            if (image.get(x, y) - expected.get(x, y)).abs() <= 0.5 {
+                continue;
+            }
+            let centre = DVec2::new(f64::from(x) + 0.5, f64::from(y) + 0.5);
+            let owner = boxes
+                .iter()
+                .filter(|(_, b)| b.min.cmple(centre + 1.0).all() && b.max.cmpge(centre - 1.0).all())
+                .map(|(g, _)| glyph_label(&font, scene.glyphs[*g as usize].id, text))
+                .next()
+                .unwrap_or_else(|| "?".into());
+            *counts.entry(owner).or_default() += 1;
+        }
+    }
+    let mut sorted: Vec<_> = counts.into_iter().collect();
+    sorted.sort_by(|a, b| b.1.cmp(&a.1));
+    sorted
+        .iter()
+        .map(|(g, n)| format!("{g} {n}"))
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 fn main() {

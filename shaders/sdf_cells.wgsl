@@ -414,17 +414,20 @@ fn fs_main(in: Varyings) -> @location(0) vec4<f32> {
     let normal = slope / units_per_pixel;
     let value = field.value + settings.dilate;
     let fill = edge_coverage(value / units_per_pixel, normal);
+    // The fill and the outline's stroke together: the stroke runs outside the edge.
+    let outer = edge_coverage((value + settings.outline) / units_per_pixel, normal);
     var shape = fill;
     var color = INK * fill;
     if settings.outline > 0.0 {
-        // A stroke just outside the edge, in place of the fill.
-        shape = edge_coverage((value + settings.outline) / units_per_pixel, normal) - fill;
+        // The stroke alone: the glyph drawn hollow.
+        shape = outer - fill;
         color = OUTLINE_COLOR * shape;
     }
     var alpha = shape;
     if settings.glow > 0.0 {
-        let outside = clamp(-value / settings.glow, 0.0, 1.0);
-        let glow = 0.6 * (1.0 - outside) * (1.0 - outside) * (1.0 - shape);
+        // Fades from the outer edge to nothing `glow` farther out, behind the shape.
+        let fade = 1.0 - clamp(-(value + settings.outline) / settings.glow, 0.0, 1.0);
+        let glow = 0.6 * fade * fade * (1.0 - outer);
         alpha += glow;
         color += GLOW_COLOR * glow;
     }

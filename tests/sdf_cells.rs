@@ -681,6 +681,17 @@ fn effects_follow_the_exact_distance() {
             "glow at {centre}: {v}, not {expected}"
         );
     }
+    // With an outline the glyph is hollow and the glow starts at the stroke's outer edge.
+    let both = coverage(&[("outline", "0.01"), ("glow", "0.03")]);
+    let at = |x: u32, y: u32| both.get(x, 300 - 1 - y);
+    assert_eq!(at(150, 150), 0.0, "nothing inside the stroke");
+    assert!((at(150, 255) - 1.0).abs() < 2e-3, "the stroke");
+    let expected = 0.6 * (1.0 - 15.5 / 30.0f32).powi(2);
+    assert!(
+        (at(150, 275) - expected).abs() < 0.01,
+        "{} vs {expected}",
+        at(150, 275)
+    );
 }
 
 // ---- Overlapping contours ------------------------------------------------------------------

@@ -49,7 +49,7 @@ pub struct Effects {
     pub dilate: f64,
     /// Width of a stroke drawn outside the (dilated) edge, hollowing the shape: 0 = off.
     pub outline: f64,
-    /// Radius over which a glow fades out around the shape: 0 = off.
+    /// How far beyond the shape's outer edge a glow fades out: 0 = off.
     pub glow: f64,
 }
 
