@@ -293,7 +293,7 @@ fn page_culprits(
         }
     }
     let mut sorted: Vec<_> = counts.into_iter().collect();
-    sorted.sort_by(|a, b| b.1.cmp(&a.1));
+    sorted.sort_by_key(|(_, n)| std::cmp::Reverse(*n));
     sorted
         .iter()
         .map(|(g, n)| format!("{g} {n}"))
