@@ -221,7 +221,11 @@ fn page_report(gpu: &GpuContext) {
             methods
                 .iter_mut()
                 .map(|(_, method)| {
-                    median(time_frames(gpu, method, &target, &camera, 1, 7).unwrap().unwrap())
+                    median(
+                        time_frames(gpu, method, &target, &camera, 1, 7)
+                            .unwrap()
+                            .unwrap(),
+                    )
                 })
                 .collect()
         })

@@ -443,6 +443,7 @@ fn fs_main(in: Varyings) -> @location(0) vec4<f32> {
         case OUTPUT_CELL_GRID: {
             let cell = (p - g.grid_min) / g.cell_size;
             let count = cell_curves(g, cell_index(g, p)).count;
+            // White at the seed's most curves a packed cell holds.
             color = mix(color, heat_color(f32(count) / 17.0), 0.45);
             // Distance to the nearest cell border in pixels, per axis.
             let rate = vec2<f32>(length(vec2<f32>(dx.x, dy.x)), length(vec2<f32>(dx.y, dy.y))) / g.cell_size;

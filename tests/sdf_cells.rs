@@ -568,12 +568,21 @@ fn straight_edges_get_the_exact_box_filter_under_any_transform() {
                 ..base
             },
         ),
+        (
+            "mirrored",
+            Camera {
+                matrix: Camera::matrix_from_rows(-1.0, 0.0, 0.0, 1.0),
+                origin: DVec2::new(120.0, 100.0),
+                ..base
+            },
+        ),
     ];
     for mode in ["estimate", "exact"] {
         let mut renderer = Renderer::new(&[("mode", mode)]);
         for (name, camera) in &cameras {
             let image = renderer.coverage(&scene, camera);
             let expected = reference::rasterize(&scene, camera).unwrap();
+            assert!(expected.sum() > 2000.0, "{name}: the polygons are in view");
             let to_image = camera.glyph_to_image(scene.units_per_em, DVec2::ZERO);
             let corners: Vec<DVec2> = vertices.iter().map(|&v| project(&to_image, v)).collect();
             let (mut worst, mut worst_anywhere) = (0.0f32, 0.0f32);

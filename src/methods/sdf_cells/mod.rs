@@ -124,7 +124,8 @@ pub struct Summary {
     pub escaped_cells: usize,
     /// Curves listed, over all cells.
     pub listed: usize,
-    pub cpu_bytes: usize,
+    /// Glyph records, points and cell words uploaded.
+    pub glyph_bytes: usize,
 }
 
 impl SdfCells {
@@ -296,7 +297,7 @@ impl SceneData {
             data.summary.escaped_cells += glyph.cells.escaped;
             data.summary.listed += glyph.lists.iter().map(Vec::len).sum::<usize>();
         }
-        data.summary.cpu_bytes = std::mem::size_of_val(data.glyphs.as_slice())
+        data.summary.glyph_bytes = std::mem::size_of_val(data.glyphs.as_slice())
             + std::mem::size_of_val(data.points.as_slice())
             + std::mem::size_of_val(data.words.as_slice());
         data
