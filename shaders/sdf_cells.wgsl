@@ -136,6 +136,8 @@ struct Field {
     second: f32,
     // Curves evaluated.
     cost: u32,
+    // Estimate: where the curve that gave `value` starts in `points`.
+    owner: u32,
 }
 
 fn keep_two_smallest(field: ptr<function, Field>, d: f32) {
@@ -186,16 +188,26 @@ fn estimate_curve(p: vec2<f32>, i: u32, field: ptr<function, Field>) {
     // Gradient of dist_to_line with respect to p.
     let grad = vec2<f32>(dir.y, -dir.x);
     if udist >= min_udist - settings.bias {
-        // Which way does the outline turn from the previous curve into this one?
-        let prevd = dist_to_line(p0, p2, points[i - 2u]);
+        // A tie: which way does the outline turn at the join? The seed asks how the
+        // previous curve (points[i - 2]) turns into this one. When this curve is the one
+        // before the curve that gave the value (the last curve of a contour meeting its
+        // first, or runs visited out of order), that join is the other one: ask how
+        // this curve turns into that one.
+        let owner = (*field).owner;
+        var prevd = dist_to_line(p0, p2, points[i - 2u]);
+        if all(p2 == points[owner]) {
+            prevd = dist_to_line(points[owner], points[owner + 2u], p0);
+        }
         let merged = select(min(bez, (*field).value), max(bez, (*field).value), prevd <= 0.0);
         if merged == bez {
             (*field).gradient = grad;
+            (*field).owner = i;
         }
         (*field).value = merged;
     } else {
         (*field).value = bez;
         (*field).gradient = grad;
+        (*field).owner = i;
     }
 }
 
@@ -345,7 +357,7 @@ fn winding_number(g: GlyphCells, p: vec2<f32>) -> Winding {
 }
 
 fn signed_distance(g: GlyphCells, p: vec2<f32>) -> Field {
-    var field = Field(-FAR, vec2<f32>(1.0, 0.0), FAR, FAR, 0u);
+    var field = Field(-FAR, vec2<f32>(1.0, 0.0), FAR, FAR, 0u, 0u);
     let cell = cell_curves(g, cell_index(g, p));
     field.cost = cell.count;
     for (var k = 0u; k < cell.count; k++) {

@@ -217,9 +217,9 @@ fn the_standard_page_exact_clean_estimate_with_its_measured_artifacts() {
     eprintln!("page, estimate: {estimate:?}\npage, exact: {exact:?}");
     assert_eq!(exact.pixels_over_05, 0);
     assert!(exact.mae_255 < 0.35 && exact.max < 0.45, "{exact:?}");
-    // Measured: 127 pixels over 0.5, where the nearest chord belongs to a curve whose
-    // tangent line puts the pixel on the wrong side (README). More is a regression.
-    assert!((1..=160).contains(&estimate.pixels_over_05), "{estimate:?}");
+    // Measured: 2 pixels over 0.5 (on 'ç'), where the nearest chord belongs to a curve
+    // whose tangent line puts the pixel on the wrong side. More is a regression.
+    assert!(estimate.pixels_over_05 <= 10, "{estimate:?}");
     assert!(estimate.mae_255 < 0.45, "{estimate:?}");
 }
 
