@@ -3,8 +3,9 @@
 //!
 //! - **estimate** (seed 000): the curve nearest by its chord decides; the distance is to
 //!   its tangent line at the chord's projection parameter, and near-ties (`bias`) are
-//!   merged by min or max according to how the outline turns. Cheap; wrong where the
-//!   chord misjudges which curve is nearest or the tangent line misjudges the side.
+//!   merged by min or max according to how the outline turns at the tied curves' join.
+//!   Cheap; wrong where the chord misjudges which curve is nearest or the tangent line
+//!   misjudges the side.
 //! - **exact**: true distance to each quadratic (a cubic solved per curve) and the
 //!   inside/outside from the winding number along a ray to +x, never from the nearest
 //!   curve.
