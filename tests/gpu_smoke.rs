@@ -5,19 +5,23 @@
 //! These tests need an adapter. Without one they fail with the message that says how
 //! to get one (CI installs lavapipe), rather than skip and pass silently.
 
-mod common;
+use std::sync::OnceLock;
 
-use common::gpu;
 use glam::DVec2;
 use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
 use glyphscope::geometry::{Contour, Outline, Segment};
-use glyphscope::gpu::{CoverageTarget, render_frame, time_frames};
+use glyphscope::gpu::{CoverageTarget, GpuContext, render_frame, time_frames};
 use glyphscope::scene::Scene;
 use glyphscope::{Error, methods, reference};
 
 /// Half-float coverage holds about 3 decimal digits.
 const MAX_ERROR: f32 = 2e-3;
+
+fn gpu() -> &'static GpuContext {
+    static GPU: OnceLock<GpuContext> = OnceLock::new();
+    GPU.get_or_init(|| GpuContext::new().unwrap_or_else(|e| panic!("{e}")))
+}
 
 /// A closed rectangle of four lines, either way round (nonzero fills both alike).
 fn rectangle(min: DVec2, max: DVec2, clockwise: bool) -> Outline {

@@ -17,88 +17,26 @@ impl CoverageTarget {
     /// in between — finer than the 8 bits an image is saved with.
     pub const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
 
-    /// Bytes of one texel of [`Self::FORMAT`].
-    const TEXEL_BYTES: u32 = 8;
-
-    /// Blending that adds coverage (and overlay colour) up: instances that share an
-    /// edge sum to full coverage there, as the reference sums instances that do not
-    /// overlap.
-    pub const ADD: wgpu::BlendState = wgpu::BlendState {
-        color: wgpu::BlendComponent {
+    /// The colour state of pipelines that add their coverage up: where instances'
+    /// quads overlap, disjoint glyphs sum to the union's coverage, as in the reference.
+    pub const ADDITIVE: wgpu::ColorTargetState = {
+        let add = wgpu::BlendComponent {
             src_factor: wgpu::BlendFactor::One,
             dst_factor: wgpu::BlendFactor::One,
             operation: wgpu::BlendOperation::Add,
-        },
-        alpha: wgpu::BlendComponent {
-            src_factor: wgpu::BlendFactor::One,
-            dst_factor: wgpu::BlendFactor::One,
-            operation: wgpu::BlendOperation::Add,
-        },
+        };
+        wgpu::ColorTargetState {
+            format: Self::FORMAT,
+            blend: Some(wgpu::BlendState {
+                color: add,
+                alpha: add,
+            }),
+            write_mask: wgpu::ColorWrites::ALL,
+        }
     };
 
-    /// A pipeline drawing triangle strips with `shader`'s `vs_main` and `fs_main`
-    /// straight into a coverage target (one sample), adding up: what a method that
-    /// draws one quad per instance needs.
-    pub fn quad_pipeline(
-        device: &wgpu::Device,
-        label: &str,
-        layout: &wgpu::PipelineLayout,
-        shader: &wgpu::ShaderModule,
-        buffers: &[Option<wgpu::VertexBufferLayout>],
-    ) -> wgpu::RenderPipeline {
-        device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some(label),
-            layout: Some(layout),
-            vertex: wgpu::VertexState {
-                module: shader,
-                entry_point: Some("vs_main"),
-                compilation_options: Default::default(),
-                buffers,
-            },
-            primitive: wgpu::PrimitiveState {
-                topology: wgpu::PrimitiveTopology::TriangleStrip,
-                ..Default::default()
-            },
-            depth_stencil: None,
-            multisample: wgpu::MultisampleState::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: shader,
-                entry_point: Some("fs_main"),
-                compilation_options: Default::default(),
-                targets: &[Some(wgpu::ColorTargetState {
-                    format: Self::FORMAT,
-                    blend: Some(Self::ADD),
-                    write_mask: wgpu::ColorWrites::ALL,
-                })],
-            }),
-            multiview_mask: None,
-            cache: None,
-        })
-    }
-
-    /// Begins a pass that clears this target and draws into it.
-    pub fn clear_pass<'e>(
-        &self,
-        encoder: &'e mut wgpu::CommandEncoder,
-        label: &str,
-    ) -> wgpu::RenderPass<'e> {
-        encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some(label),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &self.view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
-            depth_stencil_attachment: None,
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        })
-    }
+    /// Bytes of one texel of [`Self::FORMAT`].
+    const TEXEL_BYTES: u32 = 8;
 
     pub fn new(gpu: &GpuContext, width: u32, height: u32) -> Result<CoverageTarget, Error> {
         let max = gpu.max_texture_side();
@@ -135,6 +73,31 @@ impl CoverageTarget {
         })
     }
 
+    /// A render pass drawing straight into this target, cleared to transparent: the
+    /// pass of methods that need no multisampling and no stencil.
+    pub fn clearing_pass<'e>(
+        &self,
+        encoder: &'e mut wgpu::CommandEncoder,
+        label: &str,
+    ) -> wgpu::RenderPass<'e> {
+        encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some(label),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: &self.view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: None,
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        })
+    }
+
     /// Copies the coverage (alpha) back as f32, clamped to [0, 1] like the reference:
     /// methods that add coverage up may overshoot where instances overlap.
     pub fn readback(&self, gpu: &GpuContext) -> Result<CoverageImage, Error> {
@@ -158,14 +121,8 @@ impl CoverageTarget {
         Ok(image::RgbImage::from_raw(self.width, self.height, bytes).expect("size matches"))
     }
 
-    /// Every texel as f32 rgba, row-major, unclamped: for methods that write numbers
-    /// (counts, distances) rather than a picture.
-    pub fn readback_rgba(&self, gpu: &GpuContext) -> Result<Vec<[f32; 4]>, Error> {
-        self.read_texels(gpu)
-    }
-
     /// Every texel as f32 rgba, row-major.
-    fn read_texels(&self, gpu: &GpuContext) -> Result<Vec<[f32; 4]>, Error> {
+    pub(crate) fn read_texels(&self, gpu: &GpuContext) -> Result<Vec<[f32; 4]>, Error> {
         let row_bytes = self.width * Self::TEXEL_BYTES;
         // Buffer rows of a texture copy must start on 256-byte boundaries.
         let padded_row_bytes = row_bytes.next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);

@@ -189,7 +189,7 @@ impl SdfCells {
         let count = scene.instances.update(gpu, camera, reach_px)?;
         gpu.queue
             .write_buffer(&scene.settings, 0, bytemuck::bytes_of(&settings));
-        let mut pass = target.clear_pass(encoder, "sdf-cells");
+        let mut pass = target.clearing_pass(encoder, "sdf-cells");
         if count > 0 {
             pass.set_pipeline(&pipeline.pipeline);
             pass.set_bind_group(0, &scene.bind_group, &[]);
@@ -243,8 +243,32 @@ impl Pipeline {
             bind_group_layouts: &[Some(&bind_group_layout)],
             immediate_size: 0,
         });
-        // Coverage adds up where quads overlap, and so does the cost the cost pass counts.
-        let pipeline = CoverageTarget::quad_pipeline(device, "sdf-cells", &layout, &shader, &[]);
+        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("sdf-cells"),
+            layout: Some(&layout),
+            vertex: wgpu::VertexState {
+                module: &shader,
+                entry_point: Some("vs_main"),
+                compilation_options: Default::default(),
+                buffers: &[],
+            },
+            primitive: wgpu::PrimitiveState {
+                topology: wgpu::PrimitiveTopology::TriangleStrip,
+                ..Default::default()
+            },
+            depth_stencil: None,
+            multisample: wgpu::MultisampleState::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &shader,
+                entry_point: Some("fs_main"),
+                compilation_options: Default::default(),
+                // Coverage adds up where quads overlap, and so does the cost the cost
+                // pass counts.
+                targets: &[Some(CoverageTarget::ADDITIVE)],
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
         Pipeline {
             pipeline,
             bind_group_layout,
@@ -431,7 +455,7 @@ impl Method for SdfCells {
             gpu.queue.submit([encoder.finish()]);
             gpu.wait_idle()
         })?;
-        let texels = target.readback_rgba(gpu)?;
+        let texels = target.read_texels(gpu)?;
         let (mut sum, mut covered, mut max) = (0.0f64, 0usize, 0u32);
         for t in texels.iter().filter(|t| t[3] > 0.0) {
             sum += f64::from(t[0]);
