@@ -245,11 +245,6 @@ fn bad_input_fails_cleanly() {
         "unknown method",
     );
     fails(
-        "not yet",
-        &["--text", "a", "--size", "20", "--method", "sdf-cells"],
-        "not implemented yet",
-    );
-    fails(
         "unknown param",
         &with(&["--text", "a", "--param", "rays=2"]),
         "takes no parameters",

@@ -16,6 +16,10 @@ pub const METHOD_SHADERS: &[(&str, &str)] = &[
         "xor_stencil.wgsl",
         include_str!("../../shaders/xor_stencil.wgsl"),
     ),
+    (
+        "sdf_cells.wgsl",
+        include_str!("../../shaders/sdf_cells.wgsl"),
+    ),
 ];
 
 /// The full source of a method shader, common part included.

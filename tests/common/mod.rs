@@ -1,11 +1,22 @@
 //! Helpers shared by the integration tests: synthetic outlines and scenes laid out so
-//! that one font unit is one pixel.
+//! that one font unit is one pixel, cameras that frame a scene, the GPU.
 #![allow(dead_code)] // each test binary uses its own subset
+
+use std::sync::OnceLock;
 
 use glam::DVec2;
 use glyphscope::camera::Camera;
 use glyphscope::geometry::{Contour, Outline, Segment};
+use glyphscope::gpu::GpuContext;
 use glyphscope::scene::Scene;
+
+/// The GPU, opened once per test binary. Without an adapter the tests that need it fail
+/// with the message that says how to get one (CI installs lavapipe) rather than skip
+/// and pass silently.
+pub fn gpu() -> &'static GpuContext {
+    static GPU: OnceLock<GpuContext> = OnceLock::new();
+    GPU.get_or_init(|| GpuContext::new().unwrap_or_else(|e| panic!("{e}")))
+}
 
 /// A closed polygon contour through `points` (font units, y up).
 pub fn polygon(points: &[(f64, f64)]) -> Contour {
