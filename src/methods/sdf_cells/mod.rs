@@ -243,32 +243,10 @@ impl Pipeline {
             bind_group_layouts: &[Some(&bind_group_layout)],
             immediate_size: 0,
         });
-        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("sdf-cells"),
-            layout: Some(&layout),
-            vertex: wgpu::VertexState {
-                module: &shader,
-                entry_point: Some("vs_main"),
-                compilation_options: Default::default(),
-                buffers: &[],
-            },
-            primitive: wgpu::PrimitiveState {
-                topology: wgpu::PrimitiveTopology::TriangleStrip,
-                ..Default::default()
-            },
-            depth_stencil: None,
-            multisample: wgpu::MultisampleState::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: &shader,
-                entry_point: Some("fs_main"),
-                compilation_options: Default::default(),
-                // Coverage adds up where quads overlap, and so does the cost the cost
-                // pass counts.
-                targets: &[Some(CoverageTarget::ADDITIVE)],
-            }),
-            multiview_mask: None,
-            cache: None,
-        });
+        // Coverage adds up where quads overlap, and so does the cost the cost pass
+        // counts.
+        let pipeline =
+            CoverageTarget::quad_pipeline(device, "sdf-cells", &layout, &shader, &[], &[]);
         Pipeline {
             pipeline,
             bind_group_layout,
