@@ -125,6 +125,8 @@ pub struct RenderStats {
     pub cpu_prepare_ms: f64,
     /// The reference's rasterization time; None for GPU methods.
     pub cpu_render_ms: Option<f64>,
+    /// GPU memory the method holds once it has drawn: its scene data and intermediate
+    /// attachments (the coverage target not counted).
     pub gpu_bytes: u64,
     pub width: u32,
     pub height: u32,
@@ -137,6 +139,8 @@ pub struct RenderStats {
     pub error: Option<ErrorStats>,
     /// Curves evaluated per covered pixel, for methods with that notion.
     pub curves_per_pixel: Option<methods::CurveCost>,
+    /// The meshes built, for methods that draw meshes.
+    pub mesh: Option<methods::MeshStats>,
 }
 
 /// A rendered image, its statistics, and the reference it was compared with (if any).
@@ -244,6 +248,7 @@ pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
         covered_area_px: 0.0,
         error: None,
         curves_per_pixel: None,
+        mesh: None,
     };
     let mut overlay = None;
     let image = if args.method == "reference" {
@@ -261,7 +266,6 @@ pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
         let start = Instant::now();
         method.prepare(&gpu, &scene)?;
         stats.cpu_prepare_ms += ms_since(start);
-        stats.gpu_bytes = method.gpu_bytes();
         gpu::render_frame(&gpu, method.as_mut(), &target, &camera)?;
         let image = target.readback(&gpu)?;
         if methods::param(&args.params, "overlay").is_some_and(|v| v != "none") {
@@ -280,6 +284,10 @@ pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
             stats.gpu_ms = Some(times[times.len() / 2]);
             stats.gpu_ms_range = Some((times[0], times[times.len() - 1]));
         }
+        // After the frames: what a method allocates on its first frame (intermediate
+        // attachments, meshes that depend on the camera) counts too.
+        stats.gpu_bytes = method.gpu_bytes();
+        stats.mesh = method.mesh_stats();
         image
     };
     stats.covered_area_px = image.sum();

@@ -22,7 +22,7 @@ use glam::{DMat3, DVec2};
 use crate::Error;
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
-use crate::geometry::{Rect, Segment, project, segment_points};
+use crate::geometry::{Rect, Segment, jacobian_bound, project, segment_points};
 use crate::scene::Scene;
 
 /// Default flattening tolerance, pixels.
@@ -116,23 +116,6 @@ fn overlapping_clusters(placed: &[Placed]) -> Vec<Vec<usize>> {
         groups.entry(root(&mut parent, i)).or_default().push(i);
     }
     groups.into_values().collect()
-}
-
-/// An upper bound of the local→image scale over `local` (Frobenius norm of the
-/// Jacobian of the homography, maximised over the rectangle's corners: w is affine, so
-/// its minimum is at a corner, and so is the largest image-space distance).
-fn jacobian_bound(to_image: &DMat3, local: &Rect) -> f64 {
-    let linear = glam::DMat2::from_cols(to_image.x_axis.truncate(), to_image.y_axis.truncate());
-    let w_row = to_image.row(2);
-    let mut min_w = f64::INFINITY;
-    let mut max_image = 0.0f64;
-    for c in local.corners() {
-        min_w = min_w.min(w_row.dot(c.extend(1.0)));
-        max_image = max_image.max(project(to_image, c).length());
-    }
-    let frobenius = |m: glam::DMat2| m.to_cols_array().iter().map(|v| v * v).sum::<f64>().sqrt();
-    let perspective = DVec2::new(w_row.x, w_row.y).length();
-    (frobenius(linear) + max_image * perspective) / min_w
 }
 
 /// A straight edge in image space with y0 < y1 and the winding direction it carries.

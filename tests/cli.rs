@@ -245,11 +245,6 @@ fn bad_input_fails_cleanly() {
         "unknown method",
     );
     fails(
-        "not yet",
-        &["--text", "a", "--size", "20", "--method", "xor-stencil"],
-        "not implemented yet",
-    );
-    fails(
         "unknown param",
         &with(&["--text", "a", "--param", "rays=2"]),
         "takes no parameters",
@@ -313,4 +308,81 @@ fn bad_input_fails_cleanly() {
         "has no variation axis 'opsz' (it has: wght)",
     );
     fails("no text", &base, "required");
+}
+
+#[test]
+fn xor_stencil_renders_from_the_command_line() {
+    let (out, stats, err) = (
+        scratch("xor.png"),
+        scratch("xor.json"),
+        scratch("xor-err.png"),
+    );
+    let result = run(&[
+        "render",
+        "--text",
+        "Ag",
+        "--size",
+        "40",
+        "--method",
+        "xor-stencil",
+        "--param",
+        "fill=evenodd",
+        "--param",
+        "passes=2",
+        "--out",
+        out.to_str().unwrap(),
+        "--stats",
+        stats.to_str().unwrap(),
+        "--error-image",
+        err.to_str().unwrap(),
+    ]);
+    assert!(
+        result.status.success(),
+        "{}",
+        String::from_utf8_lossy(&result.stderr)
+    );
+    assert_eq!(image::open(&out).unwrap().color(), image::ColorType::L8);
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
+    // DejaVu has no overlaps: even-odd is nonzero here, up to sampling.
+    assert!(json["error"]["mae_255"].as_f64().unwrap() < 5.0, "{json}");
+    assert!(json["curves_per_pixel"]["mean"].as_f64().unwrap() > 0.0);
+    assert!(json["gpu_ms"].as_f64().unwrap() > 0.0);
+
+    let overlay = scratch("xor-wire.png");
+    let result = run(&[
+        "render",
+        "--text",
+        "Ag",
+        "--size",
+        "40",
+        "--method",
+        "xor-stencil",
+        "--param",
+        "overlay=wireframe",
+        "--out",
+        overlay.to_str().unwrap(),
+    ]);
+    assert!(result.status.success());
+    assert_eq!(
+        image::open(&overlay).unwrap().color(),
+        image::ColorType::Rgb8
+    );
+
+    let xor = |param: &'static str| -> Vec<&'static str> {
+        vec![
+            "--text",
+            "a",
+            "--size",
+            "20",
+            "--method",
+            "xor-stencil",
+            "--param",
+            param,
+        ]
+    };
+    fails("xor msaa", &xor("msaa=16"), "msaa must be 1 or 4");
+    fails("xor passes", &xor("passes=0"), "passes must be");
+    fails("xor fill", &xor("fill=odd"), "nonzero or evenodd");
+    fails("xor overlay", &xor("overlay=purple"), "no overlay 'purple'");
 }

@@ -5,8 +5,11 @@
 //! These tests need an adapter. Without one they fail with the message that says how
 //! to get one (CI installs lavapipe), rather than skip and pass silently.
 
+mod common;
+
 use std::sync::OnceLock;
 
+use common::cameras;
 use glam::DVec2;
 use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
@@ -85,46 +88,6 @@ fn wide_scene() -> Scene {
         x += width + gap;
     }
     Scene::from_outlines(2048.0, placed)
-}
-
-/// The transforms every scene is checked under, on a camera of the given view.
-fn cameras(base: Camera) -> Vec<(&'static str, Camera)> {
-    let (sin, cos) = 30f64.to_radians().sin_cos();
-    let skew = 0.3;
-    // A 30° rotation after a horizontal skew.
-    let rotated = Camera::matrix_from_rows(cos, cos * skew - sin, sin, sin * skew + cos);
-    // Upside down about the baseline, which moves down to keep the scene in view: a
-    // negative determinant turns the corners' order around.
-    let mirrored = Camera {
-        matrix: Camera::matrix_from_rows(1.0, 0.0, 0.0, -1.0),
-        origin: DVec2::new(base.origin.x, f64::from(base.height) - base.origin.y),
-        ..base
-    };
-    vec![
-        ("identity", base),
-        (
-            "rotation and skew",
-            Camera {
-                matrix: rotated,
-                ..base
-            },
-        ),
-        ("mirrored", mirrored),
-        (
-            "tilt 25°",
-            Camera {
-                tilt_deg: 25.0,
-                ..base
-            },
-        ),
-        (
-            "far world offset",
-            Camera {
-                world_offset: DVec2::new(1e5, -1e5),
-                ..base
-            },
-        ),
-    ]
 }
 
 fn render(scene: &Scene, camera: &Camera) -> Result<CoverageImage, Error> {

@@ -422,7 +422,7 @@ fn overlay_controls(ui: &mut egui::Ui, pane: &mut PaneSettings, catalog: &Catalo
             "signed error against the reference, once the view rests (red: too much \
              coverage, blue: too little)",
         );
-        ui.checkbox(&mut pane.outline, "outline")
+        ui.checkbox(&mut pane.outline, "outline points")
             .on_hover_text("the font's outline: on-curve points filled, off-curve hollow");
     });
 }

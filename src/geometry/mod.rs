@@ -51,13 +51,8 @@ impl Segment {
                     .flatten(tolerance, f)
             }
             Segment::Cubic(a, b, c, d) => {
-                let cubic = lyon_geom::CubicBezierSegment {
-                    from: to_lyon(a),
-                    ctrl1: to_lyon(b),
-                    ctrl2: to_lyon(c),
-                    to: to_lyon(d),
-                };
-                cubic.for_each_flattened(tolerance, &mut |line| f(from_lyon(line.to)));
+                lyon_cubic(a, b, c, d)
+                    .for_each_flattened(tolerance, &mut |line| f(from_lyon(line.to)));
             }
         }
     }
@@ -65,6 +60,21 @@ impl Segment {
 
 pub(crate) fn to_lyon(p: DVec2) -> lyon_geom::Point<f64> {
     lyon_geom::point(p.x, p.y)
+}
+
+/// The cubic with these control points, as lyon_geom's segment.
+pub(crate) fn lyon_cubic(
+    p0: DVec2,
+    p1: DVec2,
+    p2: DVec2,
+    p3: DVec2,
+) -> lyon_geom::CubicBezierSegment<f64> {
+    lyon_geom::CubicBezierSegment {
+        from: to_lyon(p0),
+        ctrl1: to_lyon(p1),
+        ctrl2: to_lyon(p2),
+        to: to_lyon(p3),
+    }
 }
 
 pub(crate) fn from_lyon(p: lyon_geom::Point<f64>) -> DVec2 {
@@ -187,4 +197,21 @@ impl Rect {
 pub fn project(m: &DMat3, p: DVec2) -> DVec2 {
     let v = *m * DVec3::new(p.x, p.y, 1.0);
     DVec2::new(v.x / v.z, v.y / v.z)
+}
+
+/// An upper bound of the local→image scale over `local` (Frobenius norm of the
+/// Jacobian of the homography, maximised over the rectangle's corners: w is affine, so
+/// its minimum is at a corner, and so is the largest image-space distance).
+pub fn jacobian_bound(to_image: &DMat3, local: &Rect) -> f64 {
+    let linear = glam::DMat2::from_cols(to_image.x_axis.truncate(), to_image.y_axis.truncate());
+    let w_row = to_image.row(2);
+    let mut min_w = f64::INFINITY;
+    let mut max_image = 0.0f64;
+    for c in local.corners() {
+        min_w = min_w.min(w_row.dot(c.extend(1.0)));
+        max_image = max_image.max(project(to_image, c).length());
+    }
+    let frobenius = |m: glam::DMat2| m.to_cols_array().iter().map(|v| v * v).sum::<f64>().sqrt();
+    let perspective = DVec2::new(w_row.x, w_row.y).length();
+    (frobenius(linear) + max_image * perspective) / min_w
 }

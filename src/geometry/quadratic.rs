@@ -13,7 +13,7 @@
 
 use glam::DVec2;
 
-use super::{Segment, from_lyon, to_lyon};
+use super::{Segment, from_lyon, lyon_cubic};
 
 /// Default conversion tolerance in em: 1/16 px at 4096 px/em, where an edge pixel's
 /// coverage moves by at most 16/255 (and 0.006 px at 400 px/em). Latin Modern's 11 834
@@ -32,13 +32,7 @@ pub fn cubic_to_quadratics(segment: &Segment, tolerance: f64, out: &mut impl FnM
         out(Segment::Line(p0, p3));
         return;
     }
-    let cubic = lyon_geom::CubicBezierSegment {
-        from: to_lyon(p0),
-        ctrl1: to_lyon(p1),
-        ctrl2: to_lyon(p2),
-        to: to_lyon(p3),
-    };
-    cubic.for_each_quadratic_bezier(tolerance, &mut |q| {
+    lyon_cubic(p0, p1, p2, p3).for_each_quadratic_bezier(tolerance, &mut |q| {
         out(Segment::Quad(
             from_lyon(q.from),
             from_lyon(q.ctrl),

@@ -8,6 +8,18 @@ pub const COMMON_WGSL: &str = include_str!("../../shaders/common.wgsl");
 pub const METHOD_SHADERS: &[(&str, &str)] = &[
     ("bounds.wgsl", include_str!("../../shaders/bounds.wgsl")),
     ("winding.wgsl", include_str!("../../shaders/winding.wgsl")),
+    (
+        "tessellation.wgsl",
+        include_str!("../../shaders/tessellation.wgsl"),
+    ),
+    (
+        "xor_stencil.wgsl",
+        include_str!("../../shaders/xor_stencil.wgsl"),
+    ),
+    (
+        "sdf_cells.wgsl",
+        include_str!("../../shaders/sdf_cells.wgsl"),
+    ),
 ];
 
 /// The full source of a method shader, common part included.

@@ -89,34 +89,13 @@ impl QuadPipeline {
             bind_group_layouts: &[Some(&bind_group_layout)],
             immediate_size: 0,
         });
-        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("bounds"),
-            layout: Some(&layout),
-            vertex: wgpu::VertexState {
-                module: &shader,
-                entry_point: Some("vs_main"),
-                compilation_options: Default::default(),
-                buffers: &[Some(wgpu::VertexBufferLayout {
-                    array_stride: size_of::<QuadInstance>() as wgpu::BufferAddress,
-                    step_mode: wgpu::VertexStepMode::Instance,
-                    attributes: &QUAD_ATTRIBUTES,
-                })],
-            },
-            primitive: wgpu::PrimitiveState {
-                topology: wgpu::PrimitiveTopology::TriangleStrip,
-                ..Default::default()
-            },
-            depth_stencil: None,
-            multisample: wgpu::MultisampleState::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: &shader,
-                entry_point: Some("fs_main"),
-                compilation_options: Default::default(),
-                targets: &[Some(CoverageTarget::ADDITIVE)],
-            }),
-            multiview_mask: None,
-            cache: None,
-        });
+        let quads = wgpu::VertexBufferLayout {
+            array_stride: size_of::<QuadInstance>() as wgpu::BufferAddress,
+            step_mode: wgpu::VertexStepMode::Instance,
+            attributes: &QUAD_ATTRIBUTES,
+        };
+        let pipeline =
+            CoverageTarget::quad_pipeline(device, "bounds", &layout, &shader, &[], &[Some(quads)]);
         let view_buffer = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("bounds view"),
             size: size_of::<[f32; 2]>() as wgpu::BufferAddress,
@@ -178,9 +157,7 @@ impl Method for Bounds {
         camera: &Camera,
     ) -> Result<(), Error> {
         let (Some(pipeline), Some(scene)) = (&self.pipeline, &mut self.prepared) else {
-            return Err(Error::Gpu(
-                "method 'bounds' was asked to draw before `prepare`".into(),
-            ));
+            return Err(super::not_prepared("bounds"));
         };
         let view = Rect {
             min: DVec2::ZERO,

@@ -6,6 +6,8 @@
 //! only once it is relative to the glyph and the view, so a far-away world position
 //! never reaches the GPU.
 
+use std::ops::Range;
+
 use glam::{DMat3, DVec2};
 
 use crate::Error;
@@ -35,6 +37,8 @@ pub struct Instances {
     /// (pen position, distinct glyph index, local bounds) per instance.
     placed: Vec<(DVec2, u32, Rect)>,
     staging: Vec<GpuInstance>,
+    /// Which instances the last update wrote, in buffer order.
+    written: Vec<u32>,
     buffer: wgpu::Buffer,
     /// `Frame` of `common.wgsl`: the target size.
     frame: wgpu::Buffer,
@@ -63,6 +67,7 @@ impl Instances {
         Instances {
             units_per_em: scene.units_per_em,
             staging: Vec::with_capacity(placed.len()),
+            written: Vec::with_capacity(placed.len()),
             placed,
             buffer,
             frame,
@@ -73,22 +78,52 @@ impl Instances {
     /// pixels plus a pixel, reach the view; returns how many were written (draw that
     /// many instances). Fails if the tilt puts an instance behind the eye.
     pub fn update(&mut self, gpu: &GpuContext, camera: &Camera, margin: f64) -> Result<u32, Error> {
+        // One key: one group, in the scene's order.
+        let groups = self.update_grouped(gpu, camera, margin, |_, _| 0u8)?;
+        Ok(groups.last().map_or(0, |(_, range)| range.end))
+    }
+
+    /// Like [`update`](Self::update), but writes the instances sorted by `key` — a
+    /// function of each instance's distinct glyph and transform — and returns each
+    /// key's range of written instances, in key order. Methods whose geometry differs
+    /// per glyph (or per scale) draw one instanced draw per group.
+    pub fn update_grouped<K: Ord + Copy>(
+        &mut self,
+        gpu: &GpuContext,
+        camera: &Camera,
+        margin: f64,
+        mut key: impl FnMut(u32, &DMat3) -> K,
+    ) -> Result<Vec<(K, Range<u32>)>, Error> {
         let view = Rect {
             min: DVec2::splat(-1.0 - margin),
             max: DVec2::new(f64::from(camera.width), f64::from(camera.height)) + 1.0 + margin,
         };
-        self.staging.clear();
-        for &(pen, glyph, bounds) in &self.placed {
+        let mut keyed = Vec::with_capacity(self.placed.len());
+        for (index, &(pen, glyph, bounds)) in (0u32..).zip(&self.placed) {
             let to_image = camera.glyph_to_image(self.units_per_em, pen);
             if !Camera::project_bounds(&to_image, &bounds)?.overlaps(&view) {
                 continue;
             }
-            self.staging.push(GpuInstance {
+            let instance = GpuInstance {
                 to_image: columns(&to_image),
                 to_local: columns(&to_image.inverse()),
                 glyph,
                 _pad: [0; 3],
-            });
+            };
+            keyed.push((key(glyph, &to_image), index, instance));
+        }
+        // Stable: within a group, instances keep the scene's order.
+        keyed.sort_by_key(|&(k, _, _)| k);
+        let mut groups: Vec<(K, Range<u32>)> = Vec::new();
+        self.staging.clear();
+        self.written.clear();
+        for (index, &(k, scene_index, instance)) in (0u32..).zip(&keyed) {
+            self.staging.push(instance);
+            self.written.push(scene_index);
+            match groups.last_mut() {
+                Some((last, range)) if *last == k => range.end = index + 1,
+                _ => groups.push((k, index..index + 1)),
+            }
         }
         let size = [camera.width as f32, camera.height as f32];
         gpu.queue
@@ -97,7 +132,14 @@ impl Instances {
             gpu.queue
                 .write_buffer(&self.buffer, 0, bytemuck::cast_slice(&self.staging));
         }
-        Ok(self.staging.len() as u32)
+        Ok(groups)
+    }
+
+    /// The instances the last update wrote, in buffer order, as indices into the
+    /// scene's instances: methods that draw instances in runs (per glyph, per layer)
+    /// find their runs here.
+    pub fn written(&self) -> &[u32] {
+        &self.written
     }
 
     /// The `array<GlyphInstance>` storage buffer.

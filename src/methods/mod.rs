@@ -33,7 +33,8 @@ pub trait Method: Send {
         camera: &Camera,
     ) -> Result<(), Error>;
 
-    /// GPU memory held for the prepared scene, bytes.
+    /// GPU memory held for the prepared scene, and for the intermediate targets (MSAA,
+    /// stencil) kept from the last frame, bytes.
     fn gpu_bytes(&self) -> u64;
 
     /// The overlays this method can draw (chosen with the `overlay` parameter).
@@ -51,6 +52,39 @@ pub trait Method: Send {
     ) -> Result<Option<CurveCost>, Error> {
         Ok(None)
     }
+
+    /// The meshes a method built from the outlines on the CPU, for methods that draw
+    /// meshes: per glyph points, triangles and error figures, and the time spent.
+    fn mesh_stats(&self) -> Option<MeshStats> {
+        None
+    }
+}
+
+/// Meshes a method holds for the current scene (see [`Method::mesh_stats`]).
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
+pub struct MeshStats {
+    /// Totals over `glyphs`.
+    pub points: usize,
+    pub triangles: usize,
+    /// CPU time spent building meshes since `prepare`, whenever it was spent, ms.
+    pub cpu_build_ms: f64,
+    /// One entry per mesh held: per distinct glyph, and per scale bucket where the mesh
+    /// depends on the scale.
+    pub glyphs: Vec<GlyphMeshStats>,
+}
+
+/// One glyph's mesh.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct GlyphMeshStats {
+    /// The glyph's id in its font.
+    pub glyph_id: u16,
+    /// log2 of the pixels per font unit the mesh was built for, if it depends on scale.
+    pub scale_bucket: Option<i32>,
+    /// Outline points the mesh is built on.
+    pub points: usize,
+    pub triangles: usize,
+    /// The method's own area-error figure, if it has one.
+    pub area_error: Option<f64>,
 }
 
 /// Curves a method evaluated per pixel with nonzero coverage.
@@ -150,22 +184,19 @@ pub const METHOD_NAMES: &[&str] = &[
 
 /// Creates a GPU method by name. The reference is not a GPU method: callers handle it.
 pub fn create(name: &str, params: &Params) -> Result<Box<dyn Method>, Error> {
-    let issue = match name {
-        "bounds" => return Ok(Box::new(bounds::Bounds::new(params)?)),
-        "winding" => return Ok(Box::new(winding::Winding::new(params)?)),
-        "sdf-cells" => 4,
-        "xor-stencil" => 5,
-        "tessellation" => 6,
+    Ok(match name {
+        "bounds" => Box::new(bounds::Bounds::new(params)?),
+        "winding" => Box::new(winding::Winding::new(params)?),
+        "sdf-cells" => Box::new(sdf_cells::SdfCells::new(params)?),
+        "xor-stencil" => Box::new(xor_stencil::XorStencil::new(params)?),
+        "tessellation" => Box::new(tessellation::Tessellation::new(params)?),
         _ => {
             return Err(Error::Input(format!(
                 "unknown method '{name}'; choose one of: {}",
                 METHOD_NAMES.join(", ")
             )));
         }
-    };
-    Err(Error::Input(format!(
-        "method '{name}' is not implemented yet (issue #{issue})"
-    )))
+    })
 }
 
 /// One parameter a method takes, described for controls and help.
@@ -184,8 +215,19 @@ pub struct ParamSpec {
 pub fn param_specs(name: &str) -> &'static [ParamSpec] {
     match name {
         "winding" => winding::PARAMS,
+        "tessellation" => tessellation::PARAMS,
+        "xor-stencil" => xor_stencil::PARAMS,
+        "sdf-cells" => sdf_cells::params::PARAMS,
         _ => &[],
     }
+}
+
+/// The error of a method asked to draw before `prepare`: a caller's bug, reported
+/// rather than panicking.
+pub fn not_prepared(method: &str) -> Error {
+    Error::Gpu(format!(
+        "method '{method}' was asked to draw before `prepare`"
+    ))
 }
 
 /// Rejects parameters a method does not take, naming the ones it does.
@@ -207,7 +249,10 @@ pub fn reject_unknown_params(method: &str, params: &Params, known: &[&str]) -> R
 
 pub mod bounds;
 pub mod instances;
+pub mod sdf_cells;
+pub mod tessellation;
 pub mod winding;
+pub mod xor_stencil;
 
 #[cfg(test)]
 mod tests {
@@ -225,11 +270,7 @@ mod tests {
                 for value in values {
                     let params = vec![(spec.key.to_string(), value.clone())];
                     if let Err(e) = create(name, &params) {
-                        assert!(
-                            e.to_string().contains("not implemented yet"),
-                            "{name} {}={value}: {e}",
-                            spec.key
-                        );
+                        panic!("{name} {}={value}: {e}", spec.key);
                     }
                 }
             }

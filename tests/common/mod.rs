@@ -1,11 +1,22 @@
 //! Helpers shared by the integration tests: synthetic outlines and scenes laid out so
-//! that one font unit is one pixel.
+//! that one font unit is one pixel, cameras that frame a scene, the GPU.
 #![allow(dead_code)] // each test binary uses its own subset
+
+use std::sync::OnceLock;
 
 use glam::DVec2;
 use glyphscope::camera::Camera;
 use glyphscope::geometry::{Contour, Outline, Segment};
+use glyphscope::gpu::GpuContext;
 use glyphscope::scene::Scene;
+
+/// The GPU, opened once per test binary. Without an adapter the tests that need it fail
+/// with the message that says how to get one (CI installs lavapipe) rather than skip
+/// and pass silently.
+pub fn gpu() -> &'static GpuContext {
+    static GPU: OnceLock<GpuContext> = OnceLock::new();
+    GPU.get_or_init(|| GpuContext::new().unwrap_or_else(|e| panic!("{e}")))
+}
 
 /// A closed polygon contour through `points` (font units, y up).
 pub fn polygon(points: &[(f64, f64)]) -> Contour {
@@ -50,4 +61,44 @@ pub fn framed(scene: &Scene, size: f64, matrix: [f64; 4], subpixel: DVec2) -> Ca
     cam.width = extent.x.ceil() as u32;
     cam.height = extent.y.ceil() as u32;
     cam
+}
+
+/// The transforms every scene is checked under, on a camera of the given view.
+pub fn cameras(base: Camera) -> Vec<(&'static str, Camera)> {
+    let (sin, cos) = 30f64.to_radians().sin_cos();
+    let skew = 0.3;
+    // A 30° rotation after a horizontal skew.
+    let rotated = Camera::matrix_from_rows(cos, cos * skew - sin, sin, sin * skew + cos);
+    // Upside down about the baseline, which moves down to keep the scene in view: a
+    // negative determinant turns the corners' order around.
+    let mirrored = Camera {
+        matrix: Camera::matrix_from_rows(1.0, 0.0, 0.0, -1.0),
+        origin: DVec2::new(base.origin.x, f64::from(base.height) - base.origin.y),
+        ..base
+    };
+    vec![
+        ("identity", base),
+        (
+            "rotation and skew",
+            Camera {
+                matrix: rotated,
+                ..base
+            },
+        ),
+        ("mirrored", mirrored),
+        (
+            "tilt 25°",
+            Camera {
+                tilt_deg: 25.0,
+                ..base
+            },
+        ),
+        (
+            "far world offset",
+            Camera {
+                world_offset: DVec2::new(1e5, -1e5),
+                ..base
+            },
+        ),
+    ]
 }

@@ -254,36 +254,8 @@ impl Winding {
         ];
         let module = gpu::shaders::create_module(&gpu.device, "winding.wgsl");
         let layout = &self.layout(gpu).1;
-        let options = wgpu::PipelineCompilationOptions {
-            constants: &constants,
-            ..Default::default()
-        };
-        let pipeline = gpu
-            .device
-            .create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some("winding"),
-                layout: Some(layout),
-                vertex: wgpu::VertexState {
-                    module: &module,
-                    entry_point: Some("vs_main"),
-                    compilation_options: options.clone(),
-                    buffers: &[],
-                },
-                primitive: wgpu::PrimitiveState {
-                    topology: wgpu::PrimitiveTopology::TriangleStrip,
-                    ..Default::default()
-                },
-                depth_stencil: None,
-                multisample: wgpu::MultisampleState::default(),
-                fragment: Some(wgpu::FragmentState {
-                    module: &module,
-                    entry_point: Some("fs_main"),
-                    compilation_options: options,
-                    targets: &[Some(CoverageTarget::ADDITIVE)],
-                }),
-                multiview_mask: None,
-                cache: None,
-            });
+        let pipeline =
+            CoverageTarget::quad_pipeline(&gpu.device, "winding", layout, &module, &constants, &[]);
         self.pipelines.push((output, pipeline));
         &self.pipelines.last().expect("just pushed").1
     }
@@ -297,9 +269,10 @@ impl Winding {
         camera: &Camera,
         output: Output,
     ) -> Result<(), Error> {
-        let prepared = self.prepared.as_mut().ok_or_else(|| {
-            Error::Gpu("method 'winding' was asked to draw before `prepare`".into())
-        })?;
+        let prepared = self
+            .prepared
+            .as_mut()
+            .ok_or_else(|| super::not_prepared("winding"))?;
         let visible = prepared.instances.update(gpu, camera, 0.0)?;
         let pipeline = self.pipeline(gpu, output).clone();
         let prepared = self.prepared.as_ref().expect("checked above");

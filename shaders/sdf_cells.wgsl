@@ -1,0 +1,476 @@
+// Method `sdf-cells` (compiled after common.wgsl): a signed distance to the outline from
+// the curves listed in the pixel's cell, turned into coverage by the pixel's footprint.
+//
+// Per distinct glyph (`GlyphCells`): a grid over the outline; the glyph's points in the
+// seed's layout (curve i starts at points[i], an even index; points[i - 2] is the
+// previous curve's start); per cell one u32, either the seed's packed word (three runs
+// of consecutive curves) or an escape to a list of slots (slot = point index / 2).
+// Exact mode adds one band per grid row for the winding number. All math is in the
+// glyph's own font units, y up: the numbers stay small wherever the glyph is.
+
+struct GlyphCells {
+    grid_min: vec2<f32>,
+    cell_size: vec2<f32>,
+    cols: u32,
+    rows: u32,
+    // First point in `points`, first word in `words`.
+    point_base: u32,
+    word_base: u32,
+    // Band headers, from word_base: (offset from word_base, count) per grid row.
+    band_offset: u32,
+}
+
+struct Settings {
+    // 0 estimate, 1 exact.
+    mode: u32,
+    // 0 picture, 1 equal-distance overlay, 2 cell grid, 3 cost heat map, 4 raw cost.
+    output: u32,
+    // Lengths in font units.
+    bias: f32,
+    dilate: f32,
+    outline: f32,
+    glow: f32,
+    // Curves per pixel drawn white on the heat map.
+    heat_scale: f32,
+}
+
+@group(0) @binding(0) var<uniform> frame: Frame;
+@group(0) @binding(1) var<storage, read> instances: array<GlyphInstance>;
+@group(0) @binding(2) var<storage, read> glyphs: array<GlyphCells>;
+@group(0) @binding(3) var<storage, read> points: array<vec2<f32>>;
+@group(0) @binding(4) var<storage, read> words: array<u32>;
+@group(0) @binding(5) var<uniform> settings: Settings;
+
+const MODE_EXACT = 1u;
+const OUTPUT_EQUAL_DISTANCE = 1u;
+const OUTPUT_CELL_GRID = 2u;
+const OUTPUT_COST_HEAT_MAP = 3u;
+const OUTPUT_COST_COUNT = 4u;
+// Stands for "no curve yet": finite, so that no infinity meets a zero.
+const FAR = 1e30;
+
+struct Varyings {
+    @builtin(position) position: vec4<f32>,
+    @location(0) local: vec2<f32>,
+    @location(1) @interpolate(flat) glyph: u32,
+}
+
+// The grid's rectangle (which includes what the effects draw), grown by the pixel
+// footprint: one quad per instance.
+@vertex
+fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u32) -> Varyings {
+    let inst = instances[index];
+    let g = glyphs[inst.glyph];
+    let grid_max = g.grid_min + g.cell_size * vec2<f32>(f32(g.cols), f32(g.rows));
+    // Strip vertices 0, 1, 2, 3 take corners 0, 1, 3, 2 (a Gray code).
+    let local = dilated_corner(inst, g.grid_min, grid_max, vertex ^ (vertex >> 1u), 0.0);
+    var out: Varyings;
+    out.position = image_to_clip(inst.to_image * vec3<f32>(local, 1.0), frame.size);
+    out.local = local;
+    out.glyph = inst.glyph;
+    return out;
+}
+
+// ---- Cells -------------------------------------------------------------------------
+
+struct CellCurves {
+    // The seed's packed word, or 0 for a list.
+    word: u32,
+    // Index in `words` of the list's first slot.
+    list: u32,
+    count: u32,
+}
+
+fn cell_index(g: GlyphCells, p: vec2<f32>) -> u32 {
+    let c = floor((p - g.grid_min) / g.cell_size);
+    // Pixels beyond the grid (the pixel dilation) take the nearest border cell, whose
+    // list was built to serve them.
+    let col = u32(clamp(c.x, 0.0, f32(g.cols - 1u)));
+    let row = u32(clamp(c.y, 0.0, f32(g.rows - 1u)));
+    return row * g.cols + col;
+}
+
+fn cell_curves(g: GlyphCells, index: u32) -> CellCurves {
+    let word = words[g.word_base + index];
+    let lengths = vec3<u32>(word & 3u, (word >> 2u) & 7u, (word >> 5u) & 7u);
+    if (word & 0xFFu) == 0u && word != 0u {
+        // No lengths but an offset: the list encoding, `count` then the slots.
+        let at = g.word_base + (word >> 8u);
+        return CellCurves(0u, at + 1u, words[at]);
+    }
+    return CellCurves(word, 0u, lengths.x + lengths.y + lengths.z);
+}
+
+// The point index where the k-th curve of a cell starts.
+fn cell_curve(g: GlyphCells, cell: CellCurves, k: u32) -> u32 {
+    if cell.word == 0u {
+        return g.point_base + 2u * words[cell.list + k];
+    }
+    // The seed's three loops: lengths in bits 0-1, 2-4, 5-7; begins (slots) in the
+    // bytes above.
+    let len0 = cell.word & 3u;
+    let len1 = (cell.word >> 2u) & 7u;
+    var run = 0u;
+    var offset = k;
+    if k >= len0 + len1 {
+        run = 2u;
+        offset = k - len0 - len1;
+    } else if k >= len0 {
+        run = 1u;
+        offset = k - len0;
+    }
+    let begin = (cell.word >> (8u + 8u * run)) & 0xFFu;
+    return g.point_base + 2u * (begin + offset);
+}
+
+// ---- Distances ---------------------------------------------------------------------
+
+// What a pass over a cell's curves finds.
+struct Field {
+    // Signed distance (font units), positive inside.
+    value: f32,
+    // Unit direction in which `value` grows fastest (local).
+    gradient: vec2<f32>,
+    // The two smallest unsigned distances (the mode's own measure).
+    nearest: f32,
+    second: f32,
+    // Curves evaluated.
+    cost: u32,
+    // Estimate: where the curve that gave `value` starts in `points`.
+    owner: u32,
+}
+
+fn keep_two_smallest(field: ptr<function, Field>, d: f32) {
+    if d < (*field).nearest {
+        (*field).second = (*field).nearest;
+        (*field).nearest = d;
+    } else {
+        (*field).second = min((*field).second, d);
+    }
+}
+
+// Seed 000: signed distance from p to the line a→b, positive on its right (y up).
+fn dist_to_line(a: vec2<f32>, b: vec2<f32>, p: vec2<f32>) -> f32 {
+    let dir = b - a;
+    return dot(normalize(vec2<f32>(-dir.y, dir.x)), a - p);
+}
+
+// Seed 000: where p projects on the chord a→b, as a parameter clamped to [0, 1].
+fn calc_t(a: vec2<f32>, b: vec2<f32>, p: vec2<f32>) -> f32 {
+    let dir = b - a;
+    // A closed curve (a == b) projects to its start.
+    return clamp(dot(p - a, dir) / max(dot(dir, dir), 1e-30), 0.0, 1.0);
+}
+
+// Seed 000's `process_bezier2`: the curve nearest by its chord gives the distance to
+// its tangent line at t; curves within `bias` of that one are merged with min where the
+// outline turns right at their join (convex: inside both) and max where it turns left.
+fn estimate_curve(p: vec2<f32>, i: u32, field: ptr<function, Field>) {
+    let p0 = points[i];
+    let p1 = points[i + 1u];
+    let p2 = points[i + 2u];
+    let t = calc_t(p0, p2, p);
+    let udist = distance(mix(p0, p2, t), p);
+    let min_udist = (*field).nearest;
+    keep_two_smallest(field, udist);
+    if udist > min_udist + settings.bias {
+        return;
+    }
+    // The tangent at t runs from q0 to q1; where the control point sits on an endpoint
+    // that tangent vanishes at the end and the chord stands in.
+    let q0 = mix(p0, p1, t);
+    let q1 = mix(p1, p2, t);
+    let degenerate = all(q0 == q1);
+    let a = select(q0, p0, degenerate);
+    let b = select(q1, p2, degenerate);
+    let bez = dist_to_line(a, b, p);
+    let dir = normalize(b - a);
+    // Gradient of dist_to_line with respect to p.
+    let grad = vec2<f32>(dir.y, -dir.x);
+    if udist >= min_udist - settings.bias {
+        // A tie: which way does the outline turn at the join? The seed asks how the
+        // previous curve (points[i - 2]) turns into this one. When this curve is the one
+        // before the curve that gave the value (the last curve of a contour meeting its
+        // first, or runs visited out of order), that join is the other one: ask how
+        // this curve turns into that one.
+        let owner = (*field).owner;
+        var prevd = dist_to_line(p0, p2, points[i - 2u]);
+        if all(p2 == points[owner]) {
+            prevd = dist_to_line(points[owner], points[owner + 2u], p0);
+        }
+        let merged = select(min(bez, (*field).value), max(bez, (*field).value), prevd <= 0.0);
+        if merged == bez {
+            (*field).gradient = grad;
+            (*field).owner = i;
+        }
+        (*field).value = merged;
+    } else {
+        (*field).value = bez;
+        (*field).gradient = grad;
+        (*field).owner = i;
+    }
+}
+
+// The parameter in [0, 1] of the point of the quadratic (p0, p1, p2) nearest to p.
+// B(t) = p0 + 2ta + t²b; the nearest point solves the cubic (B(t) − p)·B'(t) = 0,
+// t³ + 3kx t² + 3ky t + kz = 0 after dividing by b·b, solved in closed form (Cardano,
+// after Inigo Quilez's sdBezier). Near-straight curves, where b·b vanishes, start from
+// the chord instead. One Newton step on the undivided cubic then polishes each root;
+// the better of the raw and polished roots is kept, so a step that overshoots costs
+// nothing. Clamped roots cover the endpoints.
+fn nearest_on_quadratic(p0: vec2<f32>, p1: vec2<f32>, p2: vec2<f32>, p: vec2<f32>) -> f32 {
+    let a = p1 - p0;
+    let b = p0 - 2.0 * p1 + p2;
+    let d = p0 - p;
+    let c3 = dot(b, b);
+    let c2 = 3.0 * dot(a, b);
+    let c1 = 2.0 * dot(a, a) + dot(d, b);
+    let c0 = dot(d, a);
+    var roots = vec2<f32>(0.0);
+    if c3 <= 1e-6 * dot(a, a) {
+        roots = vec2<f32>(calc_t(p0, p2, p));
+    } else {
+        let kk = 1.0 / c3;
+        let kx = kk * dot(a, b);
+        let ky = kk * c1 / 3.0;
+        let kz = kk * c0;
+        let pp = ky - kx * kx;
+        let q = kx * (2.0 * kx * kx - 3.0 * ky) + kz;
+        let h = q * q + 4.0 * pp * pp * pp;
+        if h >= 0.0 {
+            // One real root.
+            let s = sqrt(h);
+            let x = (vec2<f32>(s, -s) - q) * 0.5;
+            let uv = sign(x) * pow(abs(x), vec2<f32>(1.0 / 3.0));
+            roots = vec2<f32>(uv.x + uv.y - kx);
+        } else {
+            // Three real roots; the middle one is a farthest point.
+            let z = sqrt(-pp);
+            let v = acos(clamp(q / (pp * z * 2.0), -1.0, 1.0)) / 3.0;
+            let m = cos(v);
+            let n = sin(v) * 1.732050808;
+            roots = vec2<f32>(m + m, -n - m) * z - kx;
+        }
+    }
+    var best = 0.0;
+    var best_d2 = FAR;
+    for (var k = 0u; k < 2u; k++) {
+        let t = clamp(roots[k], 0.0, 1.0);
+        let f = ((c3 * t + c2) * t + c1) * t + c0;
+        let df = (3.0 * c3 * t + 2.0 * c2) * t + c1;
+        let polished = clamp(t - f / select(df, 1.0, df == 0.0), 0.0, 1.0);
+        for (var j = 0u; j < 2u; j++) {
+            let u = select(t, polished, j == 1u);
+            let e = d + (2.0 * a + b * u) * u;
+            let d2 = dot(e, e);
+            if d2 < best_d2 {
+                best_d2 = d2;
+                best = u;
+            }
+        }
+    }
+    return best;
+}
+
+fn exact_curve(p: vec2<f32>, i: u32, field: ptr<function, Field>) {
+    let p0 = points[i];
+    let p1 = points[i + 1u];
+    let p2 = points[i + 2u];
+    let t = nearest_on_quadratic(p0, p1, p2, p);
+    let away = p - (p0 + (2.0 * (p1 - p0) + (p0 - 2.0 * p1 + p2) * t) * t);
+    let d = length(away);
+    if d < (*field).nearest && d > 0.0 {
+        (*field).gradient = away / d;
+    }
+    keep_two_smallest(field, d);
+}
+
+// Signed crossings of the ray from the origin towards +x by the quadratic (p0, p1, p2),
+// given relative to the ray's start: +1 for each crossing downwards, −1 upwards.
+//
+// Which roots count follows from the signs of y0, y1, y2 alone (y > 0 is "above", y ≤ 0
+// "below", so an endpoint on the ray belongs to exactly one side and a join is counted
+// once): y(t) = a t² − 2b t + c has its downward crossing at t1 = (b − √D)/a and its
+// upward one at t2 = (b + √D)/a, and with k = [y0 > 0] + 2[y1 > 0] + 4[y2 > 0], t1 is
+// a real crossing for k in {1, 2, 3, 5} and t2 for k in {2, 4, 5, 6}: bits of 0x2E and
+// 0x74 (the table Slug uses). No epsilon decides anything. D = b² − ac is computed as
+// y1² − y0·y2, which is never negative when the endpoints lie on opposite sides (one
+// crossing for sure); when they lie on the same side, D ≤ 0 means the curve only
+// touches or misses the ray. The roots are taken in the form that does not cancel
+// (c/q and q/a, q = b ± √D), so nearly straight curves lose no precision.
+fn quadratic_ray_crossings(p0: vec2<f32>, p1: vec2<f32>, p2: vec2<f32>) -> i32 {
+    let k = u32(p0.y > 0.0) | (u32(p1.y > 0.0) << 1u) | (u32(p2.y > 0.0) << 2u);
+    let down = ((0x2Eu >> k) & 1u) == 1u;
+    let up = ((0x74u >> k) & 1u) == 1u;
+    let discriminant = p1.y * p1.y - p0.y * p2.y;
+    if !(down || up) || (down && up && discriminant <= 0.0) {
+        return 0;
+    }
+    let a = p0.y - 2.0 * p1.y + p2.y;
+    let b = p0.y - p1.y;
+    let c = p0.y;
+    let root = sqrt(max(discriminant, 0.0));
+    let q = b + select(-root, root, b >= 0.0);
+    // t1 = c/q and t2 = q/a for b ≥ 0, the other way round for b < 0.
+    let near = c / select(q, 1.0, q == 0.0);
+    let far = q / select(a, 1.0, a == 0.0);
+    let t1 = select(far, near, b >= 0.0);
+    let t2 = select(near, far, b >= 0.0);
+    let ax = p0.x - 2.0 * p1.x + p2.x;
+    let bx = p1.x - p0.x;
+    var w = 0;
+    if down && (ax * t1 + 2.0 * bx) * t1 + p0.x > 0.0 {
+        w += 1;
+    }
+    if up && (ax * t2 + 2.0 * bx) * t2 + p0.x > 0.0 {
+        w -= 1;
+    }
+    return w;
+}
+
+struct Winding {
+    number: i32,
+    // Curves evaluated.
+    cost: u32,
+}
+
+// Nonzero winding number at p from its row's band; the band is sorted by decreasing
+// right end, so the first curve wholly left of p ends the walk.
+fn winding_number(g: GlyphCells, p: vec2<f32>) -> Winding {
+    let row = u32(clamp(floor((p.y - g.grid_min.y) / g.cell_size.y), 0.0, f32(g.rows - 1u)));
+    let header = g.word_base + g.band_offset + 2u * row;
+    let start = g.word_base + words[header];
+    let count = words[header + 1u];
+    var w = Winding(0, 0u);
+    for (var k = 0u; k < count; k++) {
+        let i = g.point_base + 2u * words[start + k];
+        let p0 = points[i] - p;
+        let p1 = points[i + 1u] - p;
+        let p2 = points[i + 2u] - p;
+        if max(max(p0.x, p1.x), p2.x) <= 0.0 {
+            break;
+        }
+        w.cost += 1u;
+        w.number += quadratic_ray_crossings(p0, p1, p2);
+    }
+    return w;
+}
+
+fn signed_distance(g: GlyphCells, p: vec2<f32>) -> Field {
+    var field = Field(-FAR, vec2<f32>(1.0, 0.0), FAR, FAR, 0u, 0u);
+    let cell = cell_curves(g, cell_index(g, p));
+    field.cost = cell.count;
+    for (var k = 0u; k < cell.count; k++) {
+        let i = cell_curve(g, cell, k);
+        if settings.mode == MODE_EXACT {
+            exact_curve(p, i, &field);
+        } else {
+            estimate_curve(p, i, &field);
+        }
+    }
+    if settings.mode == MODE_EXACT {
+        let winding = winding_number(g, p);
+        field.cost += winding.cost;
+        let inside = winding.number != 0;
+        field.value = select(-field.nearest, field.nearest, inside);
+        field.gradient = select(-field.gradient, field.gradient, inside);
+    }
+    return field;
+}
+
+// ---- Coverage ----------------------------------------------------------------------
+
+// Box-filter coverage of the unit pixel by the half-plane of points within `d` pixels
+// of its centre along the unit normal n: the distribution of n·x over the pixel is a
+// trapezoid of width |nx| + |ny|, and this is its integral — exact for a straight edge
+// at any angle, and the plain ramp clamp(d + 0.5) for an axis-aligned one.
+fn edge_coverage(d: f32, n: vec2<f32>) -> f32 {
+    let wide = max(abs(n.x), abs(n.y));
+    let narrow = min(abs(n.x), abs(n.y));
+    let u = d + 0.5 * (wide + narrow);
+    if u <= 0.0 {
+        return 0.0;
+    }
+    if u >= wide + narrow {
+        return 1.0;
+    }
+    if u < narrow {
+        return u * u / (2.0 * wide * narrow);
+    }
+    if u > wide {
+        let v = wide + narrow - u;
+        return 1.0 - v * v / (2.0 * wide * narrow);
+    }
+    return (u - 0.5 * narrow) / wide;
+}
+
+const INK = vec3<f32>(1.0, 1.0, 1.0);
+const OUTLINE_COLOR = vec3<f32>(1.0, 0.62, 0.18);
+const GLOW_COLOR = vec3<f32>(0.25, 0.85, 1.0);
+const PURPLE = vec3<f32>(0.62, 0.12, 0.85);
+const GRID_LINE = vec3<f32>(1.0, 0.25, 0.2);
+
+@fragment
+fn fs_main(in: Varyings) -> @location(0) vec4<f32> {
+    let p = in.local;
+    // Font units per pixel step, here (perspective included): the footprint. Taken
+    // before any branch, where derivatives are defined.
+    let dx = dpdx(p);
+    let dy = dpdy(p);
+    let g = glyphs[in.glyph];
+    let field = signed_distance(g, p);
+
+    // The distance in pixels along the field's gradient, and that gradient in pixels.
+    let slope = vec2<f32>(dot(dx, field.gradient), dot(dy, field.gradient));
+    let units_per_pixel = max(length(slope), 1e-20);
+    let normal = slope / units_per_pixel;
+    let value = field.value + settings.dilate;
+    let fill = edge_coverage(value / units_per_pixel, normal);
+    // The fill and the outline's stroke together: the stroke runs outside the edge.
+    let outer = edge_coverage((value + settings.outline) / units_per_pixel, normal);
+    var shape = fill;
+    var color = INK * fill;
+    if settings.outline > 0.0 {
+        // The stroke alone: the glyph drawn hollow.
+        shape = outer - fill;
+        color = OUTLINE_COLOR * shape;
+    }
+    var alpha = shape;
+    if settings.glow > 0.0 {
+        // Fades from the outer edge to nothing `glow` farther out, behind the shape.
+        let fade = 1.0 - clamp(-(value + settings.outline) / settings.glow, 0.0, 1.0);
+        let glow = 0.6 * fade * fade * (1.0 - outer);
+        alpha += glow;
+        color += GLOW_COLOR * glow;
+    }
+
+    switch settings.output {
+        case OUTPUT_EQUAL_DISTANCE: {
+            // Where the two nearest curves are as near as each other, within the bias:
+            // the seed's purple regions, where its tie-break decides.
+            if field.second - field.nearest <= settings.bias {
+                color = mix(color, PURPLE, 0.85);
+            }
+        }
+        case OUTPUT_CELL_GRID: {
+            let cell = (p - g.grid_min) / g.cell_size;
+            let count = cell_curves(g, cell_index(g, p)).count;
+            // White at the seed's most curves a packed cell holds.
+            color = mix(color, heat_color(f32(count) / 17.0), 0.45);
+            // Distance to the nearest cell border in pixels, per axis.
+            let rate = vec2<f32>(length(vec2<f32>(dx.x, dy.x)), length(vec2<f32>(dx.y, dy.y))) / g.cell_size;
+            let border = min(fract(cell), 1.0 - fract(cell)) / rate;
+            if min(border.x, border.y) < 0.5 {
+                color = GRID_LINE;
+            }
+        }
+        case OUTPUT_COST_HEAT_MAP: {
+            color = mix(heat_color(f32(field.cost) / settings.heat_scale), color, 0.25);
+        }
+        case OUTPUT_COST_COUNT: {
+            color = vec3<f32>(f32(field.cost), 0.0, 0.0);
+        }
+        default: {}
+    }
+    return vec4<f32>(color, alpha);
+}

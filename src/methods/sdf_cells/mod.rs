@@ -1,0 +1,452 @@
+//! `sdf-cells`: a signed distance to the outline, per pixel, from the few curves listed
+//! in the pixel's cell of a grid over its glyph (seeds 000 and 001).
+//!
+//! - **estimate** (seed 000): the curve nearest by its chord decides; the distance is to
+//!   its tangent line at the chord's projection parameter, and near-ties (`bias`) are
+//!   merged by min or max according to how the outline turns at the tied curves' join.
+//!   Cheap; wrong where the chord misjudges which curve is nearest or the tangent line
+//!   misjudges the side.
+//! - **exact**: true distance to each quadratic (a cubic solved per curve) and the
+//!   inside/outside from the winding number along a ray to +x, never from the nearest
+//!   curve.
+//!
+//! Anti-aliasing takes the distance in pixels from the real footprint: the local
+//! gradient of the distance mapped through the derivatives of the pixel's local
+//! coordinates, so zoom, rotation, skew and perspective are all accounted for, and the
+//! coverage is the box filter's exact value for a straight edge at that angle. Effects
+//! (dilate/erode, outline, glow) act on the same distance.
+//!
+//! CPU side per distinct glyph: [`curves`] lays the quadratics out, [`cells`] chooses
+//! what each cell lists, [`encoding`] packs it (the seed's u32) or lists it, [`glyph`]
+//! puts these together. Shader: `shaders/sdf_cells.wgsl`.
+
+pub mod cells;
+pub mod curves;
+pub mod encoding;
+pub mod glyph;
+pub mod params;
+
+use glam::DMat2;
+
+use super::instances::Instances;
+use super::{CurveCost, Method, Overlay, Params};
+use crate::Error;
+use crate::camera::Camera;
+use crate::gpu::{CoverageTarget, GpuContext};
+use crate::scene::Scene;
+use cells::Mode;
+use glyph::PreparedGlyph;
+pub use params::Settings;
+
+/// The cost heat map's full scale: curves evaluated per pixel drawn white.
+pub const HEAT_SCALE: f32 = 32.0;
+
+pub struct SdfCells {
+    settings: Settings,
+    /// Built on the first `prepare`; it depends on the device only.
+    pipeline: Option<Pipeline>,
+    prepared: Option<PreparedScene>,
+}
+
+/// What the fragment shader writes (`Settings.output` in the shader).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(u32)]
+enum Output {
+    Picture = 0,
+    EqualDistance = 1,
+    CellGrid = 2,
+    CostHeatMap = 3,
+    /// Curves evaluated, raw, in red: what `curves_per_pixel` reads back.
+    CostCount = 4,
+}
+
+impl Output {
+    fn of(overlay: Option<Overlay>) -> Output {
+        match overlay {
+            None => Output::Picture,
+            Some(Overlay::EqualDistance) => Output::EqualDistance,
+            Some(Overlay::CellGrid) => Output::CellGrid,
+            // `Settings` only admits the overlays in `params::OVERLAYS`.
+            Some(_) => Output::CostHeatMap,
+        }
+    }
+}
+
+/// `GlyphCells` in the shader.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
+struct GpuGlyph {
+    grid_min: [f32; 2],
+    cell_size: [f32; 2],
+    cols: u32,
+    rows: u32,
+    point_base: u32,
+    word_base: u32,
+    band_offset: u32,
+    _pad: u32,
+}
+
+/// `Settings` in the shader; lengths in font units.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
+struct GpuSettings {
+    mode: u32,
+    output: u32,
+    bias: f32,
+    dilate: f32,
+    outline: f32,
+    glow: f32,
+    heat_scale: f32,
+    _pad: u32,
+}
+
+struct Pipeline {
+    pipeline: wgpu::RenderPipeline,
+    bind_group_layout: wgpu::BindGroupLayout,
+}
+
+struct PreparedScene {
+    instances: Instances,
+    glyphs: wgpu::Buffer,
+    points: wgpu::Buffer,
+    words: wgpu::Buffer,
+    settings: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+    units_per_em: f64,
+    summary: Summary,
+}
+
+/// What `prepare` built, for reports.
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+pub struct Summary {
+    pub glyphs: usize,
+    pub cells: usize,
+    /// Cells the seed's packed word cannot hold, listed instead.
+    pub escaped_cells: usize,
+    /// Curves listed, over all cells.
+    pub listed: usize,
+    /// Glyph records, points and cell words uploaded.
+    pub glyph_bytes: usize,
+}
+
+impl SdfCells {
+    pub fn new(params: &Params) -> Result<SdfCells, Error> {
+        Ok(SdfCells {
+            settings: Settings::from_params(params)?,
+            pipeline: None,
+            prepared: None,
+        })
+    }
+
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// What the last `prepare` built.
+    pub fn summary(&self) -> Option<Summary> {
+        self.prepared.as_ref().map(|p| p.summary)
+    }
+
+    fn gpu_settings(&self, units_per_em: f64, output: Output) -> GpuSettings {
+        let em = |v: f64| (v * units_per_em) as f32;
+        let effects = &self.settings.effects;
+        GpuSettings {
+            mode: match self.settings.mode {
+                Mode::Estimate => 0,
+                Mode::Exact => 1,
+            },
+            output: output as u32,
+            bias: em(self.settings.bias_em),
+            dilate: em(effects.dilate),
+            outline: em(effects.outline),
+            glow: em(effects.glow),
+            heat_scale: HEAT_SCALE,
+            _pad: 0,
+        }
+    }
+
+    /// Records one frame writing `output`.
+    fn draw(
+        &mut self,
+        gpu: &GpuContext,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &CoverageTarget,
+        camera: &Camera,
+        output: Output,
+    ) -> Result<(), Error> {
+        let reach_px = self.settings.reach_em() * camera.size_px_per_em * magnification(camera);
+        let settings = self
+            .prepared
+            .as_ref()
+            .map(|s| self.gpu_settings(s.units_per_em, output));
+        let (Some(pipeline), Some(scene), Some(settings)) =
+            (&self.pipeline, &mut self.prepared, settings)
+        else {
+            return Err(Error::Gpu(
+                "method 'sdf-cells' was asked to draw before `prepare`".into(),
+            ));
+        };
+        let count = scene.instances.update(gpu, camera, reach_px)?;
+        gpu.queue
+            .write_buffer(&scene.settings, 0, bytemuck::bytes_of(&settings));
+        let mut pass = target.clearing_pass(encoder, "sdf-cells");
+        if count > 0 {
+            pass.set_pipeline(&pipeline.pipeline);
+            pass.set_bind_group(0, &scene.bind_group, &[]);
+            pass.draw(0..4, 0..count);
+        }
+        Ok(())
+    }
+}
+
+/// An upper bound of how many pixels one pixel-per-em unit can span under the camera's
+/// matrix and tilt: for culling instances whose effects reach into the view.
+fn magnification(camera: &Camera) -> f64 {
+    let m: DMat2 = camera.matrix;
+    // The largest singular value is at most the Frobenius norm.
+    let linear = m.x_axis.length_squared() + m.y_axis.length_squared();
+    let tilt = if camera.tilt_deg == 0.0 { 1.0 } else { 4.0 };
+    linear.sqrt() * tilt
+}
+
+impl Pipeline {
+    fn new(gpu: &GpuContext) -> Pipeline {
+        let device = &gpu.device;
+        let shader = crate::gpu::shaders::create_module(device, "sdf_cells.wgsl");
+        let entry = |binding, visibility, ty| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility,
+            ty: wgpu::BindingType::Buffer {
+                ty,
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+            count: None,
+        };
+        let both = wgpu::ShaderStages::VERTEX_FRAGMENT;
+        let fragment = wgpu::ShaderStages::FRAGMENT;
+        let storage = wgpu::BufferBindingType::Storage { read_only: true };
+        let uniform = wgpu::BufferBindingType::Uniform;
+        let bind_group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("sdf-cells"),
+            entries: &[
+                entry(0, wgpu::ShaderStages::VERTEX, uniform),
+                entry(1, wgpu::ShaderStages::VERTEX, storage),
+                entry(2, both, storage),
+                entry(3, fragment, storage),
+                entry(4, fragment, storage),
+                entry(5, fragment, uniform),
+            ],
+        });
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("sdf-cells"),
+            bind_group_layouts: &[Some(&bind_group_layout)],
+            immediate_size: 0,
+        });
+        // Coverage adds up where quads overlap, and so does the cost the cost pass
+        // counts.
+        let pipeline =
+            CoverageTarget::quad_pipeline(device, "sdf-cells", &layout, &shader, &[], &[]);
+        Pipeline {
+            pipeline,
+            bind_group_layout,
+        }
+    }
+}
+
+/// Every distinct glyph's data concatenated as the shader reads it.
+struct SceneData {
+    glyphs: Vec<GpuGlyph>,
+    points: Vec<[f32; 2]>,
+    words: Vec<u32>,
+    summary: Summary,
+}
+
+impl SceneData {
+    fn new(prepared: &[PreparedGlyph]) -> SceneData {
+        let mut data = SceneData {
+            glyphs: Vec::with_capacity(prepared.len()),
+            points: Vec::new(),
+            words: Vec::new(),
+            summary: Summary::default(),
+        };
+        for glyph in prepared {
+            let point_base = data.points.len() as u32;
+            let word_base = data.words.len() as u32;
+            data.points
+                .extend(glyph.layout.points.iter().map(|p| p.as_vec2().to_array()));
+            data.words.extend(&glyph.cells.words);
+            let band_offset = data.words.len() as u32 - word_base;
+            // Band headers (offset from the glyph's first word, count), then the bands.
+            let mut offset = band_offset + 2 * glyph.bands.len() as u32;
+            for band in &glyph.bands {
+                data.words.extend([offset, band.len() as u32]);
+                offset += band.len() as u32;
+            }
+            data.words.extend(glyph.bands.iter().flatten());
+            let grid = &glyph.grid;
+            data.glyphs.push(GpuGlyph {
+                grid_min: grid.origin.as_vec2().to_array(),
+                cell_size: grid.cell.as_vec2().to_array(),
+                cols: grid.cols,
+                rows: grid.rows,
+                point_base,
+                word_base,
+                band_offset,
+                _pad: 0,
+            });
+            data.summary.glyphs += 1;
+            data.summary.cells += grid.cells();
+            data.summary.escaped_cells += glyph.cells.escaped;
+            data.summary.listed += glyph.lists.iter().map(Vec::len).sum::<usize>();
+        }
+        data.summary.glyph_bytes = std::mem::size_of_val(data.glyphs.as_slice())
+            + std::mem::size_of_val(data.points.as_slice())
+            + std::mem::size_of_val(data.words.as_slice());
+        data
+    }
+}
+
+fn storage_buffer(gpu: &GpuContext, label: &str, bytes: &[u8]) -> wgpu::Buffer {
+    use wgpu::util::DeviceExt;
+    // A binding cannot be empty.
+    let padded;
+    let contents = if bytes.is_empty() {
+        padded = [0u8; 16];
+        &padded[..]
+    } else {
+        bytes
+    };
+    gpu.device
+        .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some(label),
+            contents,
+            usage: wgpu::BufferUsages::STORAGE,
+        })
+}
+
+impl Method for SdfCells {
+    fn name(&self) -> &'static str {
+        params::NAME
+    }
+
+    fn prepare(&mut self, gpu: &GpuContext, scene: &Scene) -> Result<(), Error> {
+        gpu.catching_errors("preparing 'sdf-cells'", || {
+            if self.pipeline.is_none() {
+                self.pipeline = Some(Pipeline::new(gpu));
+            }
+            let pipeline = self.pipeline.as_ref().expect("just built");
+            let prepared = scene
+                .glyphs
+                .iter()
+                .map(|g| PreparedGlyph::new(&g.outline, scene.units_per_em, &self.settings))
+                .collect::<Result<Vec<_>, Error>>()?;
+            let data = SceneData::new(&prepared);
+            let instances = Instances::new(gpu, scene);
+            let glyphs =
+                storage_buffer(gpu, "sdf-cells glyphs", bytemuck::cast_slice(&data.glyphs));
+            let points =
+                storage_buffer(gpu, "sdf-cells points", bytemuck::cast_slice(&data.points));
+            let words = storage_buffer(gpu, "sdf-cells words", bytemuck::cast_slice(&data.words));
+            let settings = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("sdf-cells settings"),
+                size: size_of::<GpuSettings>() as u64,
+                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            let buffers = [
+                instances.frame(),
+                instances.buffer(),
+                &glyphs,
+                &points,
+                &words,
+                &settings,
+            ];
+            let entries: Vec<wgpu::BindGroupEntry> = buffers
+                .iter()
+                .enumerate()
+                .map(|(binding, buffer)| wgpu::BindGroupEntry {
+                    binding: binding as u32,
+                    resource: buffer.as_entire_binding(),
+                })
+                .collect();
+            let bind_group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("sdf-cells"),
+                layout: &pipeline.bind_group_layout,
+                entries: &entries,
+            });
+            self.prepared = Some(PreparedScene {
+                instances,
+                glyphs,
+                points,
+                words,
+                settings,
+                bind_group,
+                units_per_em: scene.units_per_em,
+                summary: data.summary,
+            });
+            Ok(())
+        })
+    }
+
+    fn encode(
+        &mut self,
+        gpu: &GpuContext,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &CoverageTarget,
+        camera: &Camera,
+    ) -> Result<(), Error> {
+        let output = Output::of(self.settings.overlay);
+        self.draw(gpu, encoder, target, camera, output)
+    }
+
+    fn gpu_bytes(&self) -> u64 {
+        self.prepared.as_ref().map_or(0, |s| {
+            s.instances.bytes()
+                + s.glyphs.size()
+                + s.points.size()
+                + s.words.size()
+                + s.settings.size()
+        })
+    }
+
+    fn overlays(&self) -> &'static [Overlay] {
+        params::OVERLAYS
+    }
+
+    /// Renders a pass that writes, per pixel, the curves every instance evaluated there
+    /// (cell curves plus, in exact mode, the winding band's curves up to the early exit),
+    /// and averages it over the pixels with coverage.
+    fn curves_per_pixel(
+        &mut self,
+        gpu: &GpuContext,
+        camera: &Camera,
+    ) -> Result<Option<CurveCost>, Error> {
+        let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
+        gpu.catching_errors("counting 'sdf-cells' curves", || {
+            let mut encoder = gpu
+                .device
+                .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                    label: Some("sdf-cells cost"),
+                });
+            self.draw(gpu, &mut encoder, &target, camera, Output::CostCount)?;
+            gpu.queue.submit([encoder.finish()]);
+            gpu.wait_idle()
+        })?;
+        let texels = target.read_texels(gpu)?;
+        let (mut sum, mut covered, mut max) = (0.0f64, 0usize, 0u32);
+        for t in texels.iter().filter(|t| t[3] > 0.0) {
+            sum += f64::from(t[0]);
+            covered += 1;
+            max = max.max(t[0].round() as u32);
+        }
+        Ok(Some(CurveCost {
+            mean: if covered == 0 {
+                0.0
+            } else {
+                sum / covered as f64
+            },
+            max,
+        }))
+    }
+}
