@@ -61,6 +61,26 @@ fn dilated_corner(inst: GlyphInstance, rect_min: vec2<f32>, rect_max: vec2<f32>,
     return project(inst.to_local, here + delta);
 }
 
+// What a quad method's fragments receive: the local position (interpolated
+// perspective-correctly) and which distinct glyph the instance draws.
+struct GlyphQuad {
+    @builtin(position) position: vec4<f32>,
+    @location(0) local: vec2<f32>,
+    @location(1) @interpolate(flat) glyph: u32,
+}
+
+// Strip vertex `vertex` (0–3) of the quad covering the local rectangle of instance
+// `inst`, grown by the pixel footprint: strip vertices 0, 1, 2, 3 take corners 0, 1,
+// 3, 2 (a Gray code), two triangles.
+fn glyph_quad(inst: GlyphInstance, rect_min: vec2<f32>, rect_max: vec2<f32>, vertex: u32, size: vec2<f32>) -> GlyphQuad {
+    let local = dilated_corner(inst, rect_min, rect_max, vertex ^ (vertex >> 1u), 0.0);
+    var out: GlyphQuad;
+    out.position = image_to_clip(inst.to_image * vec3<f32>(local, 1.0), size);
+    out.local = local;
+    out.glyph = inst.glyph;
+    return out;
+}
+
 fn cross2(a: vec2<f32>, b: vec2<f32>) -> f32 {
     return a.x * b.y - a.y * b.x;
 }

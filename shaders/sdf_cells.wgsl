@@ -49,26 +49,14 @@ const OUTPUT_COST_COUNT = 4u;
 // Stands for "no curve yet": finite, so that no infinity meets a zero.
 const FAR = 1e30;
 
-struct Varyings {
-    @builtin(position) position: vec4<f32>,
-    @location(0) local: vec2<f32>,
-    @location(1) @interpolate(flat) glyph: u32,
-}
-
 // The grid's rectangle (which includes what the effects draw), grown by the pixel
 // footprint: one quad per instance.
 @vertex
-fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u32) -> Varyings {
+fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u32) -> GlyphQuad {
     let inst = instances[index];
     let g = glyphs[inst.glyph];
     let grid_max = g.grid_min + g.cell_size * vec2<f32>(f32(g.cols), f32(g.rows));
-    // Strip vertices 0, 1, 2, 3 take corners 0, 1, 3, 2 (a Gray code).
-    let local = dilated_corner(inst, g.grid_min, grid_max, vertex ^ (vertex >> 1u), 0.0);
-    var out: Varyings;
-    out.position = image_to_clip(inst.to_image * vec3<f32>(local, 1.0), frame.size);
-    out.local = local;
-    out.glyph = inst.glyph;
-    return out;
+    return glyph_quad(inst, g.grid_min, grid_max, vertex, frame.size);
 }
 
 // ---- Cells -------------------------------------------------------------------------
@@ -411,7 +399,7 @@ const PURPLE = vec3<f32>(0.62, 0.12, 0.85);
 const GRID_LINE = vec3<f32>(1.0, 0.25, 0.2);
 
 @fragment
-fn fs_main(in: Varyings) -> @location(0) vec4<f32> {
+fn fs_main(in: GlyphQuad) -> @location(0) vec4<f32> {
     let p = in.local;
     // Font units per pixel step, here (perspective included): the footprint. Taken
     // before any branch, where derivatives are defined.

@@ -56,24 +56,12 @@ const COST_SCALE: f32 = 16.0;
 // 1–4/255 on average; one elsewhere.
 const AUTO_SAMPLES_EM_PER_PIXEL: f32 = 1.0 / 32.0;
 
-struct Varyings {
-    @builtin(position) position: vec4<f32>,
-    @location(0) local: vec2<f32>,
-    @location(1) @interpolate(flat) glyph: u32,
-}
-
+// One quad per instance over the glyph's control-point bounds.
 @vertex
-fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u32) -> Varyings {
+fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u32) -> GlyphQuad {
     let inst = instances[index];
     let g = glyphs[inst.glyph];
-    // Strip order 0, 1, 3, 2 walks the rectangle's corners as two triangles.
-    let corner = array<u32, 4>(0u, 1u, 3u, 2u)[vertex];
-    let local = dilated_corner(inst, g.bounds.xy, g.bounds.zw, corner, 0.0);
-    var out: Varyings;
-    out.position = image_to_clip(inst.to_image * vec3<f32>(local, 1.0), frame.size);
-    out.local = local;
-    out.glyph = inst.glyph;
-    return out;
+    return glyph_quad(inst, g.bounds.xy, g.bounds.zw, vertex, frame.size);
 }
 
 // Crossings a ray keeps from within its window; past this many (only when a pixel
@@ -373,7 +361,7 @@ fn nearest_class(g: Glyph, p: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> u32 {
 }
 
 @fragment
-fn fs_main(in: Varyings) -> @location(0) vec4<f32> {
+fn fs_main(in: GlyphQuad) -> @location(0) vec4<f32> {
     let g = glyphs[in.glyph];
     // One pixel step in local units, x and y: the footprint under the full transform,
     // perspective included.

@@ -20,6 +20,16 @@ fn run(args: &[&str]) -> Output {
     bin().args(args).output().expect("the binary runs")
 }
 
+/// Runs `args` and checks the command succeeded, showing its stderr if not.
+fn run_ok(args: &[&str]) {
+    let result = run(args);
+    assert!(
+        result.status.success(),
+        "{}",
+        String::from_utf8_lossy(&result.stderr)
+    );
+}
+
 /// Runs `render` with `args` plus an output path and checks it fails cleanly, with a
 /// message containing `expect`.
 fn fails(name: &str, args: &[&str], expect: &str) {
@@ -48,7 +58,7 @@ fn fails(name: &str, args: &[&str], expect: &str) {
 fn reference_render_writes_png_and_stats() {
     let out = scratch("ok.png");
     let stats = scratch("ok.json");
-    let result = run(&[
+    run_ok(&[
         "render",
         "--text",
         "Hello\\nworld",
@@ -63,11 +73,6 @@ fn reference_render_writes_png_and_stats() {
         "--stats",
         stats.to_str().unwrap(),
     ]);
-    assert!(
-        result.status.success(),
-        "{}",
-        String::from_utf8_lossy(&result.stderr)
-    );
     let img = image::open(&out).unwrap();
     assert_eq!(img.color(), image::ColorType::L8, "8-bit grayscale");
     let gray = img.to_luma8();
@@ -87,7 +92,7 @@ fn reference_render_writes_png_and_stats() {
 #[test]
 fn error_image_compares_with_the_reference() {
     let (out, err, stats) = (scratch("e.png"), scratch("e-err.png"), scratch("e.json"));
-    let result = run(&[
+    run_ok(&[
         "render",
         "--text",
         "Ag",
@@ -102,11 +107,6 @@ fn error_image_compares_with_the_reference() {
         "--stats",
         stats.to_str().unwrap(),
     ]);
-    assert!(
-        result.status.success(),
-        "{}",
-        String::from_utf8_lossy(&result.stderr)
-    );
     let json: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
     // Glyph boxes cover far more than the glyphs: red, and a large error.
@@ -166,7 +166,7 @@ fn heavier_weight_covers_more() {
     let area = |wght: &str| {
         let stats = scratch(&format!("w{wght}.json"));
         let out = scratch(&format!("w{wght}.png"));
-        let result = run(&[
+        run_ok(&[
             "render",
             "--font",
             "fonts/Inter-roman.var.ttf",
@@ -189,7 +189,6 @@ fn heavier_weight_covers_more() {
             "--stats",
             stats.to_str().unwrap(),
         ]);
-        assert!(result.status.success());
         let json: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
         json["covered_area_px"].as_f64().unwrap()
@@ -317,7 +316,7 @@ fn xor_stencil_renders_from_the_command_line() {
         scratch("xor.json"),
         scratch("xor-err.png"),
     );
-    let result = run(&[
+    run_ok(&[
         "render",
         "--text",
         "Ag",
@@ -336,11 +335,6 @@ fn xor_stencil_renders_from_the_command_line() {
         "--error-image",
         err.to_str().unwrap(),
     ]);
-    assert!(
-        result.status.success(),
-        "{}",
-        String::from_utf8_lossy(&result.stderr)
-    );
     assert_eq!(image::open(&out).unwrap().color(), image::ColorType::L8);
     let json: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
@@ -350,7 +344,7 @@ fn xor_stencil_renders_from_the_command_line() {
     assert!(json["gpu_ms"].as_f64().unwrap() > 0.0);
 
     let overlay = scratch("xor-wire.png");
-    let result = run(&[
+    run_ok(&[
         "render",
         "--text",
         "Ag",
@@ -363,7 +357,6 @@ fn xor_stencil_renders_from_the_command_line() {
         "--out",
         overlay.to_str().unwrap(),
     ]);
-    assert!(result.status.success());
     assert_eq!(
         image::open(&overlay).unwrap().color(),
         image::ColorType::Rgb8
