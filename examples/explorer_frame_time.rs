@@ -1,5 +1,6 @@
-//! Frame time of the explorer's 2×2 view on the standard page of text, drawn exactly as
-//! the window draws it (egui_wgpu, paint callbacks, every pane's method) but offscreen:
+//! Frame time of the explorer's 2×2 view of the four methods on the standard page of
+//! text, drawn exactly as the window draws it (egui_wgpu, paint callbacks, every pane's
+//! method) but offscreen:
 //!
 //!     cargo run --release --example explorer_frame_time
 //!
@@ -10,7 +11,7 @@
 use std::time::{Duration, Instant};
 
 use glyphscope::app::headless::Headless;
-use glyphscope::app::settings::{Layout, Settings};
+use glyphscope::app::settings::{Layout, PaneSettings, PaneSource, Settings};
 
 const FRAMES: usize = 40;
 
@@ -28,7 +29,15 @@ fn main() -> Result<(), glyphscope::Error> {
     settings.scene.text = include_str!("../tests/data/page.txt").into();
     settings.camera.size_px_per_em = 16.0;
     settings.camera.origin = [8.0, 100.0];
-    // The default panes: winding, the reference, bounds, winding − reference.
+    // The four methods, one per pane, at their default parameters.
+    for (pane, method) in
+        settings
+            .panes
+            .iter_mut()
+            .zip(["winding", "sdf-cells", "xor-stencil", "tessellation"])
+    {
+        *pane = PaneSettings::method(method);
+    }
     let mut app = screen.explorer(settings);
     // Warm up: shaders compile on first use, the reference is worked out once.
     let start = Instant::now();
@@ -58,7 +67,11 @@ fn main() -> Result<(), glyphscope::Error> {
     }
     for pane in 0..4 {
         if let Some(ms) = app.pane_gpu_ms(pane) {
-            println!("pane {pane}: GPU {ms:.2} ms (median of the recent frames)");
+            let method = match &app.settings.panes[pane].source {
+                PaneSource::Method { name, .. } => name.as_str(),
+                PaneSource::Difference { .. } => "difference",
+            };
+            println!("pane {pane} ({method}): GPU {ms:.2} ms (median of the recent frames)");
         }
     }
     Ok(())

@@ -267,9 +267,14 @@ fn every_overlay_toggles_and_draws_or_is_greyed_with_a_reason() {
         // The outline, on top of coverage.
         // Methods with many parameters push the checkbox below the panel's fold.
         harness.get_by_label("outline points").scroll_to_me();
-        harness.step();
+        // Scrolling is animated over several frames.
+        harness.run_steps(30);
         harness.get_by_label("outline points").click();
         let outlined = settle(&mut harness);
+        assert!(
+            harness.state().settings.panes[0].outline,
+            "{method}: outline checkbox not toggled"
+        );
         let orange = |img: &image::RgbaImage| {
             img.pixels()
                 .filter(|p| p[0] > 200 && (120..220).contains(&p[1]) && p[2] < 80)
