@@ -914,9 +914,7 @@ impl Method for XorStencil {
         camera: &Camera,
     ) -> Result<(), Error> {
         let (Some(pipelines), Some(prepared)) = (&self.pipelines, &mut self.prepared) else {
-            return Err(Error::Gpu(
-                "method 'xor-stencil' was asked to draw before `prepare`".into(),
-            ));
+            return Err(super::not_prepared("xor-stencil"));
         };
         prepared.update(gpu, pipelines, camera)?;
         let attachments = Attachments::fit(
