@@ -6,11 +6,14 @@ use glyphscope::cli::{Cli, Command};
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
-        Some(Command::Render(args)) => glyphscope::cli::run_render(args),
-        None => run_app(),
+        Some(Command::Render(args)) => glyphscope::cli::run_render(args).map(|()| true),
+        // Exit 1, distinct from bad input's 2, when a method breaks a claimed bound.
+        Some(Command::Stability(args)) => glyphscope::cli::run_stability(args),
+        None => run_app().map(|()| true),
     };
     match result {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(true) => ExitCode::SUCCESS,
+        Ok(false) => ExitCode::from(1),
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::from(2)
