@@ -34,7 +34,7 @@ pub struct Cli {
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Render text or a glyph to an 8-bit grayscale PNG of linear coverage.
-    Render(RenderArgs),
+    Render(Box<RenderArgs>),
     /// Sweep the hard cases through every method against the reference; exit 1 when a
     /// method breaks a bound it claims.
     Stability(StabilityArgs),

@@ -83,7 +83,9 @@ pub struct Outcome {
 impl Outcome {
     /// Whether the measurement breaks the claim (a failure always does).
     pub fn breaks_claim(&self) -> bool {
-        self.failure.is_some() || self.bound.is_some_and(|b| !(self.max <= b))
+        // A NaN max compares false with everything: it breaks the claim too.
+        let within = |bound: f64| self.max <= bound;
+        self.failure.is_some() || self.bound.is_some_and(|b| !within(b))
     }
 }
 
