@@ -58,6 +58,10 @@ pub enum Trait {
     /// Several edges, or a whole contour, inside one pixel: one distance per pixel (or
     /// four point samples) cannot resolve them.
     SubpixelDetail,
+    /// Contours stacked hundreds deep, their edges closer than a pixel: winding numbers
+    /// of 256 wrap an 8-bit stencil counter to 0, and more edges cross one pixel's
+    /// window than a ray keeps sorted there (8).
+    DenseOverlaps,
 }
 
 impl Case {
@@ -258,6 +262,19 @@ pub fn all() -> Vec<Case> {
                 polygon(&rect(8.0, 8.0, 20.0, 20.0)),
             ],
         )),
+        Case {
+            traits: &[Trait::Overlapping, Trait::DenseOverlaps],
+            ..synthetic(
+                "winding-256",
+                "256 nested squares wound the same way: the centre winds 256 times",
+                (0..256)
+                    .map(|k| {
+                        let inset = 0.05 * f64::from(k);
+                        polygon(&rect(2.0 + inset, 2.0 + inset, 30.0 - inset, 30.0 - inset))
+                    })
+                    .collect(),
+            )
+        },
         synthetic(
             "reversed-outer",
             "a ring whose outer contour is clockwise and its hole counter-clockwise",
