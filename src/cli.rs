@@ -17,6 +17,7 @@ use crate::methods;
 use crate::metrics::{self, ErrorStats};
 use crate::reference;
 use crate::scene::Scene;
+use crate::stability::{self, sweep::SweepSize};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -36,13 +37,32 @@ pub enum Command {
     Render(Box<RenderArgs>),
     /// Regenerate the README's screenshots of the explorer, headlessly.
     Screenshots(ScreenshotsArgs),
+    /// Sweep the hard cases through every method against the reference; exit 1 when a
+    /// method breaks a bound it claims.
+    Stability(StabilityArgs),
 }
 
 #[derive(Args, Clone, Debug)]
 pub struct ScreenshotsArgs {
     /// Folder to write the PNGs into.
     #[arg(long, default_value = "screenshots")]
-    pub out_dir: PathBuf,
+    pub out: PathBuf,
+}
+
+#[derive(Args, Clone, Debug)]
+pub struct StabilityArgs {
+    /// The CI size: 4 sub-pixel offsets × 2 rotations instead of 16 × 4.
+    #[arg(long)]
+    pub quick: bool,
+    /// Only these cases (comma-separated names).
+    #[arg(long, value_delimiter = ',')]
+    pub cases: Option<Vec<String>>,
+    /// Only these methods (labels such as 'sdf-cells exact', or method names).
+    #[arg(long, value_delimiter = ',')]
+    pub methods: Option<Vec<String>>,
+    /// Write each worst frame, its error map, and the table (Markdown, JSON) here.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
 }
 
 #[derive(Args, Clone, Debug)]
@@ -328,6 +348,37 @@ pub fn run_render(args: &RenderArgs) -> Result<(), Error> {
             .map_err(|e| Error::Output(format!("cannot write '{}': {e}", path.display())))?;
     }
     Ok(())
+}
+
+/// `glyphscope stability`: runs the sweep, prints the table and writes the report.
+/// Returns whether every claim held (broken claims are printed to stderr).
+pub fn run_stability(args: &StabilityArgs) -> Result<bool, Error> {
+    let cases = stability::select_cases(args.cases.as_deref())?;
+    let variants = stability::select_variants(args.methods.as_deref())?;
+    let size = if args.quick {
+        SweepSize::quick()
+    } else {
+        SweepSize::full()
+    };
+    let gpu = GpuContext::new()?;
+    eprintln!(
+        "{} cases × {} methods × {} cameras on {}",
+        cases.len(),
+        variants.len(),
+        size.cameras(),
+        gpu.adapter_name()
+    );
+    let outcomes =
+        stability::sweep::run(&gpu, &cases, &variants, &size, |case| eprintln!("  {case}"))?;
+    print!("{}", stability::long_table(&outcomes));
+    if let Some(dir) = &args.out {
+        stability::write_report(dir, &outcomes)?;
+    }
+    let broken = stability::broken_claims(&outcomes);
+    for line in &broken {
+        eprintln!("claim broken: {line}");
+    }
+    Ok(broken.is_empty())
 }
 
 fn ms_since(start: Instant) -> f64 {

@@ -15,6 +15,7 @@ pub mod metrics;
 pub mod reference;
 pub mod scene;
 pub mod shaping;
+pub mod stability;
 
 /// Every failure the core reports. Each message is one line a user can act on.
 #[derive(Debug, thiserror::Error)]

@@ -6,12 +6,15 @@ use glyphscope::cli::{Cli, Command};
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
-        Some(Command::Render(args)) => glyphscope::cli::run_render(args),
-        Some(Command::Screenshots(args)) => run_screenshots(args),
-        None => run_app(),
+        Some(Command::Render(args)) => glyphscope::cli::run_render(args).map(|()| true),
+        // Exit 1, distinct from bad input's 2, when a method breaks a claimed bound.
+        Some(Command::Stability(args)) => glyphscope::cli::run_stability(args),
+        Some(Command::Screenshots(args)) => run_screenshots(args).map(|()| true),
+        None => run_app().map(|()| true),
     };
     match result {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(true) => ExitCode::SUCCESS,
+        Ok(false) => ExitCode::from(1),
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::from(2)
@@ -35,7 +38,7 @@ fn run_app() -> Result<(), glyphscope::Error> {
 
 #[cfg(feature = "app")]
 fn run_screenshots(args: &glyphscope::cli::ScreenshotsArgs) -> Result<(), glyphscope::Error> {
-    glyphscope::app::screenshots::write_all(&args.out_dir).map(drop)
+    glyphscope::app::screenshots::write_all(&args.out).map(drop)
 }
 
 #[cfg(not(feature = "app"))]

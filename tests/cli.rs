@@ -379,3 +379,48 @@ fn xor_stencil_renders_from_the_command_line() {
     fails("xor fill", &xor("fill=odd"), "nonzero or evenodd");
     fails("xor overlay", &xor("overlay=purple"), "no overlay 'purple'");
 }
+
+/// `stability` runs the sweep on the cases and methods named, prints the table and
+/// writes each worst frame, its error map and the table; unknown names are bad input.
+#[test]
+fn stability_sweeps_the_named_cases_and_rejects_unknown_names() {
+    let dir = scratch("stability");
+    let _ = std::fs::remove_dir_all(&dir);
+    let result = run(&[
+        "stability",
+        "--quick",
+        "--cases",
+        "pentagram,thin-stem",
+        "--methods",
+        "winding,sdf-cells exact",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    let stdout = String::from_utf8_lossy(&result.stdout);
+    assert!(
+        result.status.success(),
+        "{}",
+        String::from_utf8_lossy(&result.stderr)
+    );
+    // Pentagram crosses itself: a limitation of exact distances, shown with its numbers.
+    assert!(
+        stdout.contains("| pentagram | sdf-cells exact |"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("limitation"), "{stdout}");
+    assert!(stdout.contains("| thin-stem | winding |"), "{stdout}");
+    for file in [
+        "stability.md",
+        "stability.json",
+        "pentagram--winding.png",
+        "pentagram--winding-error.png",
+        "thin-stem--sdf-cells-exact-error.png",
+    ] {
+        assert!(dir.join(file).is_file(), "{file} missing");
+    }
+    for (flag, name) in [("--cases", "no-such-case"), ("--methods", "no-such-method")] {
+        let result = run(&["stability", "--quick", flag, name]);
+        assert_eq!(result.status.code(), Some(2));
+        assert!(String::from_utf8_lossy(&result.stderr).contains(name));
+    }
+}

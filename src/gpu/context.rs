@@ -79,6 +79,31 @@ impl GpuContext {
         self.device.limits().max_texture_dimension_2d
     }
 
+    /// A buffer holding `items`, for `usage`. An empty list still gets one zeroed item:
+    /// a binding cannot be empty, and a shader's array of `T` needs room for at least
+    /// one (a fixed 16-byte stand-in failed validation for `winding`'s 48-byte curves
+    /// on an outline whose every segment has zero length).
+    pub fn buffer_of<T: bytemuck::Pod>(
+        &self,
+        label: &str,
+        items: &[T],
+        usage: wgpu::BufferUsages,
+    ) -> wgpu::Buffer {
+        use wgpu::util::DeviceExt;
+        let placeholder = [T::zeroed()];
+        let items = if items.is_empty() {
+            &placeholder[..]
+        } else {
+            items
+        };
+        self.device
+            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some(label),
+                contents: bytemuck::cast_slice(items),
+                usage,
+            })
+    }
+
     /// Runs `work` and reports the validation and out-of-memory errors wgpu raises
     /// meanwhile as [`Error::Gpu`], instead of letting wgpu's default handler panic.
     pub(crate) fn catching_errors<T>(

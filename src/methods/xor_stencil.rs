@@ -649,25 +649,53 @@ fn jitter_buffer(gpu: &GpuContext, settings: &Settings, stride: usize) -> wgpu::
     buffer
 }
 
-/// A storage buffer holding `data` (at least 16 bytes: a binding cannot be empty).
-fn storage_buffer(gpu: &GpuContext, label: &str, data: &[u8]) -> wgpu::Buffer {
-    let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some(label),
-        size: (data.len() as u64).max(16),
-        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
-    gpu.queue.write_buffer(&buffer, 0, data);
-    buffer
-}
-
 /// How often to halve the cubic → quadratic tolerance for a view whose largest scale
 /// is `px_per_em`: the project's default is 1/16 px at 4096 px/em, and halving it until
 /// it is 1/16 px at this scale too keeps zooming in from showing the conversion (a
 /// fixed tolerance would not: donner#1158). Eight halvings reach 10⁶ px/em, the largest
 /// size; further, the tolerance would pass the f32 precision of the points.
-fn tolerance_halvings(px_per_em: f64) -> u32 {
+pub fn tolerance_halvings(px_per_em: f64) -> u32 {
     (px_per_em / 4096.0).log2().ceil().clamp(0.0, 8.0) as u32
+}
+
+/// What `xor-stencil` uploads for a scene at one conversion tolerance: every distinct
+/// glyph's triangles, as points, and its bounds.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct GeometryData {
+    /// Glyph bounds (min x, min y, max x, max y), font units.
+    pub bounds: Vec<[f32; 4]>,
+    /// Three points per fan triangle, then per Loop–Blinn triangle.
+    pub fan_points: Vec<[f32; 2]>,
+    pub curve_points: Vec<[f32; 2]>,
+    /// Per distinct glyph, its points in `fan_points` and `curve_points`.
+    pub fan_ranges: Vec<Range<u32>>,
+    pub curve_ranges: Vec<Range<u32>>,
+}
+
+impl GeometryData {
+    /// The triangles of every distinct glyph of `scene`, its cubics converted with the
+    /// default tolerance halved `halvings` times (see [`tolerance_halvings`]).
+    pub fn of_scene(scene: &Scene, halvings: u32) -> GeometryData {
+        let tolerance =
+            DEFAULT_QUAD_TOLERANCE_EM / f64::from(1u32 << halvings) * scene.units_per_em;
+        let mut data = GeometryData::default();
+        let append = |points: &mut Vec<[f32; 2]>, triangles: &[[[f32; 2]; 3]]| {
+            let start = points.len() as u32;
+            points.extend(triangles.iter().flatten());
+            start..points.len() as u32
+        };
+        for glyph in &scene.glyphs {
+            let triangles = Triangles::of(&glyph.outline, tolerance);
+            data.fan_ranges
+                .push(append(&mut data.fan_points, &triangles.fan));
+            data.curve_ranges
+                .push(append(&mut data.curve_points, &triangles.curves));
+            let b = glyph.bounds;
+            data.bounds
+                .push([b.min.x, b.min.y, b.max.x, b.max.y].map(|v| v as f32));
+        }
+        data
+    }
 }
 
 /// Every distinct glyph's triangles and bounds on the GPU, at one conversion tolerance.
@@ -683,36 +711,17 @@ struct Geometry {
 
 impl Geometry {
     fn new(gpu: &GpuContext, scene: &Scene, halvings: u32) -> Geometry {
-        let tolerance =
-            DEFAULT_QUAD_TOLERANCE_EM / f64::from(1u32 << halvings) * scene.units_per_em;
-        let (mut fan_points, mut curve_points) = (Vec::new(), Vec::new());
-        let (mut fan_ranges, mut curve_ranges) = (Vec::new(), Vec::new());
-        let mut bounds = Vec::with_capacity(scene.glyphs.len());
-        let append = |points: &mut Vec<[f32; 2]>, triangles: &[[[f32; 2]; 3]]| {
-            let start = points.len() as u32;
-            points.extend(triangles.iter().flatten());
-            start..points.len() as u32
-        };
-        for glyph in &scene.glyphs {
-            let triangles = Triangles::of(&glyph.outline, tolerance);
-            fan_ranges.push(append(&mut fan_points, &triangles.fan));
-            curve_ranges.push(append(&mut curve_points, &triangles.curves));
-            let b = glyph.bounds;
-            bounds.push([b.min.x, b.min.y, b.max.x, b.max.y].map(|v| v as f32));
-        }
+        const STORAGE: wgpu::BufferUsages = wgpu::BufferUsages::STORAGE;
+        let data = GeometryData::of_scene(scene, halvings);
         Geometry {
             halvings,
-            fan_ranges,
-            curve_ranges,
             buffers: [
-                storage_buffer(gpu, "xor-stencil bounds", bytemuck::cast_slice(&bounds)),
-                storage_buffer(gpu, "xor-stencil fan", bytemuck::cast_slice(&fan_points)),
-                storage_buffer(
-                    gpu,
-                    "xor-stencil curves",
-                    bytemuck::cast_slice(&curve_points),
-                ),
+                gpu.buffer_of("xor-stencil bounds", &data.bounds, STORAGE),
+                gpu.buffer_of("xor-stencil fan", &data.fan_points, STORAGE),
+                gpu.buffer_of("xor-stencil curves", &data.curve_points, STORAGE),
             ],
+            fan_ranges: data.fan_ranges,
+            curve_ranges: data.curve_ranges,
         }
     }
 }

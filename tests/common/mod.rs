@@ -1,14 +1,17 @@
 //! Helpers shared by the integration tests: synthetic outlines and scenes laid out so
 //! that one font unit is one pixel, cameras that frame a scene, the GPU.
-#![allow(dead_code)] // each test binary uses its own subset
+#![allow(dead_code, unused_imports)] // each test binary uses its own subset
 
 use std::sync::OnceLock;
 
 use glam::DVec2;
 use glyphscope::camera::Camera;
-use glyphscope::geometry::{Contour, Outline, Segment};
+use glyphscope::geometry::Outline;
 use glyphscope::gpu::GpuContext;
 use glyphscope::scene::Scene;
+/// A scene holding an outline once at the origin, where 1 font unit = 1 px.
+pub use glyphscope::stability::cases::synthetic_scene as single;
+pub use glyphscope::stability::cases::{polygon, rect};
 
 /// The GPU, opened once per test binary. Without an adapter the tests that need it fail
 /// with the message that says how to get one (CI installs lavapipe) rather than skip
@@ -18,31 +21,11 @@ pub fn gpu() -> &'static GpuContext {
     GPU.get_or_init(|| GpuContext::new().unwrap_or_else(|e| panic!("{e}")))
 }
 
-/// A closed polygon contour through `points` (font units, y up).
-pub fn polygon(points: &[(f64, f64)]) -> Contour {
-    let p: Vec<DVec2> = points.iter().map(|&(x, y)| DVec2::new(x, y)).collect();
-    Contour {
-        segments: (0..p.len())
-            .map(|i| Segment::Line(p[i], p[(i + 1) % p.len()]))
-            .collect(),
-    }
-}
-
 /// An outline of several polygons.
 pub fn polygons(contours: &[&[(f64, f64)]]) -> Outline {
     Outline {
         contours: contours.iter().map(|c| polygon(c)).collect(),
     }
-}
-
-/// An axis-aligned rectangle, counter-clockwise in y-up coordinates.
-pub fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> Vec<(f64, f64)> {
-    vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
-}
-
-/// A scene holding `outline` once at the origin, where 1 font unit = 1 px.
-pub fn single(outline: Outline) -> Scene {
-    Scene::from_outlines(1000.0, vec![(outline, DVec2::ZERO)])
 }
 
 /// A camera with 1 px per font unit whose baseline origin is at the image's bottom-left

@@ -91,7 +91,7 @@ impl CurveLayout {
     }
 }
 
-/// A segment as a quadratic; `None` for one of zero length. Cubics are not expected
+/// A segment as a quadratic; `None` for one of zero length (in f32). Cubics are not expected
 /// here (the caller converts them) but are reduced to their endpoints' line rather than
 /// dropped if one slips through.
 fn as_quad(segment: &Segment) -> Option<Quad> {
@@ -103,7 +103,10 @@ fn as_quad(segment: &Segment) -> Option<Quad> {
             [a, (a + d) * 0.5, d]
         }
     };
-    (q[0] != q[1] || q[1] != q[2]).then_some(q)
+    // Zero length as the GPU sees it, in f32: a curve whose points differ only in f64
+    // would reach the shader as a point, whose tangent direction is NaN.
+    let seen = q.map(|p| p.as_vec2());
+    (seen[0] != seen[1] || seen[1] != seen[2]).then_some(q)
 }
 
 /// Whether contours of `outline` (cubics converted already) overlap, or one crosses

@@ -75,14 +75,14 @@ impl Output {
 /// `GlyphCells` in the shader.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
-struct GpuGlyph {
-    grid_min: [f32; 2],
-    cell_size: [f32; 2],
-    cols: u32,
-    rows: u32,
-    point_base: u32,
-    word_base: u32,
-    band_offset: u32,
+pub struct GpuGlyph {
+    pub grid_min: [f32; 2],
+    pub cell_size: [f32; 2],
+    pub cols: u32,
+    pub rows: u32,
+    pub point_base: u32,
+    pub word_base: u32,
+    pub band_offset: u32,
     _pad: u32,
 }
 
@@ -255,14 +255,25 @@ impl Pipeline {
 }
 
 /// Every distinct glyph's data concatenated as the shader reads it.
-struct SceneData {
-    glyphs: Vec<GpuGlyph>,
-    points: Vec<[f32; 2]>,
-    words: Vec<u32>,
-    summary: Summary,
+pub struct SceneData {
+    pub glyphs: Vec<GpuGlyph>,
+    pub points: Vec<[f32; 2]>,
+    pub words: Vec<u32>,
+    pub summary: Summary,
 }
 
 impl SceneData {
+    /// What `sdf-cells` uploads for `scene` with `settings`: every distinct glyph
+    /// prepared, then laid out in the shader's buffers.
+    pub fn of_scene(scene: &Scene, settings: &Settings) -> Result<SceneData, Error> {
+        let prepared = scene
+            .glyphs
+            .iter()
+            .map(|g| PreparedGlyph::new(&g.outline, scene.units_per_em, settings))
+            .collect::<Result<Vec<_>, Error>>()?;
+        Ok(SceneData::new(&prepared))
+    }
+
     fn new(prepared: &[PreparedGlyph]) -> SceneData {
         let mut data = SceneData {
             glyphs: Vec::with_capacity(prepared.len()),
@@ -307,24 +318,6 @@ impl SceneData {
     }
 }
 
-fn storage_buffer(gpu: &GpuContext, label: &str, bytes: &[u8]) -> wgpu::Buffer {
-    use wgpu::util::DeviceExt;
-    // A binding cannot be empty.
-    let padded;
-    let contents = if bytes.is_empty() {
-        padded = [0u8; 16];
-        &padded[..]
-    } else {
-        bytes
-    };
-    gpu.device
-        .create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some(label),
-            contents,
-            usage: wgpu::BufferUsages::STORAGE,
-        })
-}
-
 impl Method for SdfCells {
     fn name(&self) -> &'static str {
         params::NAME
@@ -336,18 +329,12 @@ impl Method for SdfCells {
                 self.pipeline = Some(Pipeline::new(gpu));
             }
             let pipeline = self.pipeline.as_ref().expect("just built");
-            let prepared = scene
-                .glyphs
-                .iter()
-                .map(|g| PreparedGlyph::new(&g.outline, scene.units_per_em, &self.settings))
-                .collect::<Result<Vec<_>, Error>>()?;
-            let data = SceneData::new(&prepared);
+            let data = SceneData::of_scene(scene, &self.settings)?;
             let instances = Instances::new(gpu, scene);
-            let glyphs =
-                storage_buffer(gpu, "sdf-cells glyphs", bytemuck::cast_slice(&data.glyphs));
-            let points =
-                storage_buffer(gpu, "sdf-cells points", bytemuck::cast_slice(&data.points));
-            let words = storage_buffer(gpu, "sdf-cells words", bytemuck::cast_slice(&data.words));
+            let storage = wgpu::BufferUsages::STORAGE;
+            let glyphs = gpu.buffer_of("sdf-cells glyphs", &data.glyphs, storage);
+            let points = gpu.buffer_of("sdf-cells points", &data.points, storage);
+            let words = gpu.buffer_of("sdf-cells words", &data.words, storage);
             let settings = gpu.device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some("sdf-cells settings"),
                 size: size_of::<GpuSettings>() as u64,

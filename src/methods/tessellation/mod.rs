@@ -27,7 +27,7 @@ use glam::{DMat2, DMat3, DVec2};
 
 use self::mesh::GlyphMesh;
 use self::store::{MeshKey, MeshStore};
-use self::subdivision::{SEED_EM_PER_HEIGHT, Subdivision, TaggedContour};
+use self::subdivision::{Polylines, SEED_EM_PER_HEIGHT, Subdivision, TaggedContour};
 use super::instances::Instances;
 use super::{
     GlyphMeshStats, MeshStats, Method, Overlay, ParamSpec, Params, param, parse_overlay,
@@ -301,6 +301,25 @@ fn spectral_norm(m: &DMat2) -> f64 {
     ((sum + (sum * sum - 4.0 * det * det).max(0.0).sqrt()) / 2.0).sqrt()
 }
 
+/// What `tessellation` builds on the CPU for one glyph (its contours as points and
+/// tags, in a font of `units_per_em`): the subdivided polylines and their triangles.
+pub fn glyph_mesh(
+    contours: &[TaggedContour],
+    units_per_em: f64,
+    subdivision: Subdivision,
+) -> Result<(Polylines, GlyphMesh), lyon_tessellation::TessellationError> {
+    let height = units_per_em / SEED_EM_PER_HEIGHT;
+    let polylines = subdivision::subdivide(contours, subdivision, height);
+    let snap_em = match subdivision {
+        Subdivision::Tolerance(distance) => {
+            (distance / units_per_em / 8.0).clamp(SNAP_FLOOR_EM, SNAP_EM)
+        }
+        _ => SNAP_EM,
+    };
+    let mesh = GlyphMesh::tessellate(&polylines, (snap_em * units_per_em) as f32)?;
+    Ok((polylines, mesh))
+}
+
 impl PreparedScene {
     /// Builds the mesh of `key` if missing.
     fn build(&mut self, key: MeshKey, setting: &Setting) -> Result<(), Error> {
@@ -310,15 +329,7 @@ impl PreparedScene {
         let start = Instant::now();
         let glyph = &self.glyphs[key.glyph as usize];
         let subdivision = setting.subdivision(key.scale_bucket);
-        let height = self.units_per_em / SEED_EM_PER_HEIGHT;
-        let polylines = subdivision::subdivide(&glyph.contours, subdivision, height);
-        let snap_em = match subdivision {
-            Subdivision::Tolerance(distance) => {
-                (distance / self.units_per_em / 8.0).clamp(SNAP_FLOOR_EM, SNAP_EM)
-            }
-            _ => SNAP_EM,
-        };
-        let mesh = GlyphMesh::tessellate(&polylines, (snap_em * self.units_per_em) as f32)
+        let (polylines, mesh) = glyph_mesh(&glyph.contours, self.units_per_em, subdivision)
             .map_err(|e| {
                 Error::Font(format!(
                     "glyph {} could not be triangulated: {e:?}",

@@ -12,8 +12,6 @@
 use std::collections::BTreeMap;
 use std::ops::Range;
 
-use wgpu::util::DeviceExt;
-
 use super::mesh::{GlyphMesh, Marker};
 use crate::gpu::GpuContext;
 use crate::methods::GlyphMeshStats;
@@ -116,40 +114,11 @@ impl MeshStore {
             edges.extend(&mesh.edges);
             markers.extend(&mesh.markers);
         }
-        let buffer = |label, contents: &[u8], usage| {
-            gpu.device
-                .create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                    label: Some(label),
-                    // A binding cannot be empty.
-                    contents: if contents.is_empty() {
-                        &[0; 16]
-                    } else {
-                        contents
-                    },
-                    usage,
-                })
-        };
         self.packed = Some(Packed {
-            vertices: buffer(
-                "mesh vertices",
-                bytemuck::cast_slice(&vertices),
-                wgpu::BufferUsages::VERTEX,
-            ),
-            triangles: buffer(
-                "mesh triangles",
-                bytemuck::cast_slice(&triangles),
-                wgpu::BufferUsages::INDEX,
-            ),
-            edges: buffer(
-                "mesh edges",
-                bytemuck::cast_slice(&edges),
-                wgpu::BufferUsages::INDEX,
-            ),
-            markers: buffer(
-                "mesh points",
-                bytemuck::cast_slice(&markers),
-                wgpu::BufferUsages::STORAGE,
-            ),
+            vertices: gpu.buffer_of("mesh vertices", &vertices, wgpu::BufferUsages::VERTEX),
+            triangles: gpu.buffer_of("mesh triangles", &triangles, wgpu::BufferUsages::INDEX),
+            edges: gpu.buffer_of("mesh edges", &edges, wgpu::BufferUsages::INDEX),
+            markers: gpu.buffer_of("mesh points", &markers, wgpu::BufferUsages::STORAGE),
         });
         true
     }

@@ -8,7 +8,8 @@
 
 use glam::DVec2;
 
-use crate::geometry::{Outline, Segment};
+use crate::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Segment};
+use crate::scene::Scene;
 
 /// `Curve` in `winding.wgsl`.
 #[repr(C)]
@@ -108,6 +109,21 @@ fn quads(outline: &Outline) -> Vec<Quad> {
 }
 
 impl GlyphData {
+    /// What `winding` uploads for `scene`: every distinct glyph, its cubics converted to
+    /// quadratics within the project's tolerance.
+    pub fn of_scene(scene: &Scene, band_count: BandCount) -> GlyphData {
+        let tolerance = DEFAULT_QUAD_TOLERANCE_EM * scene.units_per_em;
+        let mut data = GlyphData::default();
+        for glyph in &scene.glyphs {
+            data.push(
+                &glyph.outline.to_quadratics(tolerance),
+                scene.units_per_em,
+                band_count,
+            );
+        }
+        data
+    }
+
     /// Appends one glyph (an outline of lines and quadratics, in a font of
     /// `units_per_em`) and returns its index.
     pub fn push(&mut self, outline: &Outline, units_per_em: f64, band_count: BandCount) -> u32 {

@@ -24,7 +24,6 @@ use super::{
 };
 use crate::Error;
 use crate::camera::Camera;
-use crate::geometry::DEFAULT_QUAD_TOLERANCE_EM;
 use crate::gpu::{self, CoverageTarget, GpuContext};
 use crate::scene::Scene;
 
@@ -292,38 +291,16 @@ impl Method for Winding {
     }
 
     fn prepare(&mut self, gpu: &GpuContext, scene: &Scene) -> Result<(), Error> {
-        let tolerance = DEFAULT_QUAD_TOLERANCE_EM * scene.units_per_em;
         let band_count = self.settings.bands.unwrap_or(BandCount::Fixed(1));
-        let mut data = GlyphData::default();
-        for glyph in &scene.glyphs {
-            data.push(
-                &glyph.outline.to_quadratics(tolerance),
-                scene.units_per_em,
-                band_count,
-            );
-        }
+        let data = GlyphData::of_scene(scene, band_count);
         gpu.catching_errors("preparing 'winding'", || {
             let instances = Instances::new(gpu, scene);
-            let buffer = |label, bytes: &[u8]| {
-                // A binding cannot be empty.
-                let size = (bytes.len() as u64).max(16);
-                let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
-                    label: Some(label),
-                    size,
-                    usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
-                    mapped_at_creation: false,
-                });
-                gpu.queue.write_buffer(&buffer, 0, bytes);
-                buffer
-            };
+            let storage = wgpu::BufferUsages::STORAGE;
             let buffers = [
-                buffer("winding glyphs", bytemuck::cast_slice(&data.glyphs)),
-                buffer("winding bands", bytemuck::cast_slice(&data.bands)),
-                buffer(
-                    "winding band curves",
-                    bytemuck::cast_slice(&data.band_curves),
-                ),
-                buffer("winding curves", bytemuck::cast_slice(&data.curves)),
+                gpu.buffer_of("winding glyphs", &data.glyphs, storage),
+                gpu.buffer_of("winding bands", &data.bands, storage),
+                gpu.buffer_of("winding band curves", &data.band_curves, storage),
+                gpu.buffer_of("winding curves", &data.curves, storage),
             ];
             // In the order of the bindings in winding.wgsl.
             let bound = [

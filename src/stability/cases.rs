@@ -1,0 +1,528 @@
+//! The named hard cases: the outlines and views that broke the best-known renderers
+//! (see shared/anchors.md), each built in code or taken from a shipped font, with the
+//! view it is seen through. This is the one place hard cases are defined; the method
+//! tests that need one take it from here.
+//!
+//! Synthetic outlines are drawn in a 1000-unit em seen at 1000 px/em, so one font unit
+//! is one pixel and `y = k + 0.5` is a pixel-centre row: the sweep's sub-pixel offsets
+//! are multiples of 1/4 px, so offset (0, 0) keeps every such alignment exact.
+
+use glam::{DMat2, DVec2};
+
+use crate::Error;
+use crate::camera::{Camera, MAX_SIZE_PX_PER_EM};
+use crate::font::Font;
+use crate::geometry::{Contour, Outline, Segment, project};
+use crate::scene::Scene;
+
+/// Units per em of the synthetic outlines.
+pub const SYNTHETIC_UNITS_PER_EM: f64 = 1000.0;
+/// Their size: one font unit per pixel.
+pub const SYNTHETIC_PX_PER_EM: f64 = 1000.0;
+/// Whole pixels kept clear around a framed scene's ink.
+const MARGIN_PX: f64 = 3.0;
+
+/// How a case's view is placed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum View {
+    /// The whole ink box plus a margin, moved by whole pixels only (so alignments to
+    /// pixel centres survive).
+    Framed,
+    /// A `side`×`side` window whose centre sees `focus` (font units, relative to the
+    /// scene's origin): a close-up on part of a glyph too large to view whole.
+    Window { side: u32, focus: DVec2 },
+}
+
+/// One named hard case.
+#[derive(Clone, Debug)]
+pub struct Case {
+    pub name: &'static str,
+    /// What it tests, in a phrase.
+    pub what: &'static str,
+    pub scene: Scene,
+    pub size_px_per_em: f64,
+    /// Applied before the sweep's rotation (e.g. a skew).
+    pub matrix: DMat2,
+    pub view: View,
+    pub world_offset: DVec2,
+    /// What makes it hard in ways some methods document as their limits.
+    pub traits: &'static [Trait],
+}
+
+/// A property of a case that a method's claim may leave out of its scope.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+pub enum Trait {
+    /// Contours overlap or cross themselves: a distance to the outline is not a
+    /// distance to the filled area's boundary.
+    Overlapping,
+    /// Several edges, or a whole contour, inside one pixel: one distance per pixel (or
+    /// four point samples) cannot resolve them.
+    SubpixelDetail,
+    /// Contours stacked hundreds deep, their edges closer than a pixel: winding numbers
+    /// of 256 wrap an 8-bit stencil counter to 0, and more edges cross one pixel's
+    /// window than a ray keeps sorted there (8).
+    DenseOverlaps,
+}
+
+impl Case {
+    /// The case's camera, turned by `rotation_deg` about the view (after the case's own
+    /// matrix) and moved by `subpixel` (pixels).
+    pub fn camera(&self, rotation_deg: f64, subpixel: DVec2) -> Result<Camera, Error> {
+        let (sin, cos) = rotation_deg.to_radians().sin_cos();
+        let mut camera = Camera::new(1, 1, self.size_px_per_em, DVec2::ZERO);
+        camera.matrix = Camera::matrix_from_rows(cos, -sin, sin, cos) * self.matrix;
+        match self.view {
+            View::Framed => {
+                let ink = camera.ink_bounds(&self.scene)?;
+                camera.origin = (DVec2::splat(MARGIN_PX) - ink.min).floor() + subpixel;
+                let extent = (ink.size() + 2.0 * MARGIN_PX + 1.0).ceil();
+                camera.width = extent.x as u32;
+                camera.height = extent.y as u32;
+            }
+            View::Window { side, focus } => {
+                camera.width = side;
+                camera.height = side;
+                let at = project(
+                    &camera.glyph_to_image(self.scene.units_per_em, DVec2::ZERO),
+                    focus,
+                );
+                camera.origin = DVec2::splat(f64::from(side) / 2.0) - at + subpixel;
+            }
+        }
+        camera.world_offset = self.world_offset;
+        camera.validate()?;
+        Ok(camera)
+    }
+}
+
+/// Every case, in the table's order.
+pub fn all() -> Vec<Case> {
+    let synthetic = |name, what, contours: Vec<Contour>| Case {
+        name,
+        what,
+        scene: synthetic_scene(Outline { contours }),
+        size_px_per_em: SYNTHETIC_PX_PER_EM,
+        matrix: DMat2::IDENTITY,
+        view: View::Framed,
+        world_offset: DVec2::ZERO,
+        traits: &[],
+    };
+    let overlapping = |case: Case| Case {
+        traits: &[Trait::Overlapping],
+        ..case
+    };
+    let subpixel_detail = |case: Case| Case {
+        traits: &[Trait::SubpixelDetail],
+        ..case
+    };
+    let default_font = Font::default_font();
+    let text = |text: &str| Scene::from_text(&default_font, text).expect("DejaVu shapes it");
+    let glyph_o = text("o");
+    let bowl = glyph_o.glyphs[0].bounds;
+    let inter = Font::shipped(2);
+    let real = |name, what, scene, size_px_per_em| Case {
+        name,
+        what,
+        scene,
+        size_px_per_em,
+        matrix: DMat2::IDENTITY,
+        view: View::Framed,
+        world_offset: DVec2::ZERO,
+        traits: &[],
+    };
+    let far = |name, what, offset: f64| Case {
+        world_offset: DVec2::new(offset, -offset),
+        ..real(name, what, text("Rg"), 37.0)
+    };
+    vec![
+        synthetic(
+            "vertex-on-centre-row",
+            "a diamond whose four vertices sit on pixel centres",
+            vec![polygon(&[
+                (12.5, 2.5),
+                (20.5, 10.5),
+                (12.5, 17.5),
+                (3.5, 10.5),
+            ])],
+        ),
+        synthetic(
+            "horizontal-on-sample-row",
+            "a staircase whose horizontal edges run along pixel-centre rows",
+            vec![polygon(&[
+                (2.0, 2.5),
+                (20.0, 2.5),
+                (20.0, 8.5),
+                (14.0, 8.5),
+                (14.0, 12.5),
+                (8.0, 12.5),
+                (8.0, 16.5),
+                (2.0, 16.5),
+            ])],
+        ),
+        synthetic(
+            "horizontal-tangent-join",
+            "an arch whose halves join with a horizontal tangent on a centre row",
+            vec![Contour {
+                segments: vec![
+                    quad((2.0, 2.5), (2.0, 14.5), (11.0, 14.5)),
+                    quad((11.0, 14.5), (20.0, 14.5), (20.0, 2.5)),
+                    line((20.0, 2.5), (2.0, 2.5)),
+                ],
+            }],
+        ),
+        synthetic(
+            "collinear-quadratic",
+            "quadratics with the control point on the chord: at its middle (a = 0) and off it",
+            vec![Contour {
+                segments: vec![
+                    quad((2.0, 2.5), (4.0, 9.0), (6.0, 15.5)),
+                    quad((6.0, 15.5), (7.0, 15.5), (18.0, 15.5)),
+                    line((18.0, 15.5), (18.0, 2.5)),
+                    quad((18.0, 2.5), (10.0, 2.5), (2.0, 2.5)),
+                ],
+            }],
+        ),
+        synthetic(
+            "nearly-collinear-quadratic",
+            "quadratics bent by 1e-7 em, across and along the rays",
+            vec![Contour {
+                segments: vec![
+                    quad((2.0, 2.5), (2.0 - 1e-4, 9.0), (2.0, 15.5)),
+                    quad((2.0, 15.5), (10.0, 15.5 + 1e-4), (18.0, 15.5)),
+                    quad((18.0, 15.5), (18.0 + 1e-4, 10.0), (18.0, 2.5)),
+                    quad((18.0, 2.5), (10.0, 2.5 - 1e-4), (2.0, 2.5)),
+                ],
+            }],
+        ),
+        synthetic(
+            "control-point-past-curve",
+            "a bulge whose control point reaches columns the curve never does",
+            vec![Contour {
+                segments: vec![
+                    quad((3.0, 17.5), (16.0, 10.0), (8.0, 3.5)),
+                    line((8.0, 3.5), (3.0, 3.5)),
+                    line((3.0, 3.5), (3.0, 17.5)),
+                ],
+            }],
+        ),
+        synthetic(
+            "zero-length-segments",
+            "zero-length lines and quadratics, duplicated points",
+            zero_length_contours(),
+        ),
+        synthetic(
+            "zero-length-only",
+            "a contour whose every segment has zero length: it draws nothing",
+            vec![Contour {
+                segments: vec![
+                    line((9.0, 9.0), (9.0, 9.0)),
+                    quad((9.0, 9.0), (9.0, 9.0), (9.0, 9.0)),
+                ],
+            }],
+        ),
+        synthetic(
+            "f32-collapsed-segment",
+            "a segment 1e-7 units long, distinct in f64 but one point in f32, the GPU's precision",
+            vec![polygon(&[
+                (2.0, 2.0),
+                (18.0, 2.0),
+                (18.0, 14.0),
+                (18.0, 14.0 + 1e-7),
+                (2.0, 14.0),
+            ])],
+        ),
+        subpixel_detail(synthetic(
+            "tiny-curves",
+            "quadratics 1e-4 em long along an edge, and a contour 1e-4 em across",
+            tiny_curve_contours(),
+        )),
+        synthetic(
+            "touching-contours",
+            "squares touching at a corner, a triangle touching a square's edge at its tip",
+            vec![
+                polygon(&rect(2.0, 2.0, 10.0, 10.0)),
+                polygon(&rect(10.0, 10.0, 16.0, 16.0)),
+                polygon(&[(18.0, 2.0), (26.0, 2.0), (22.0, 10.0)]),
+                polygon(&rect(18.0, 10.0, 26.0, 18.0)),
+            ],
+        ),
+        synthetic(
+            "shared-edge",
+            "two squares sharing a whole edge, run once each way, off the pixel grid",
+            vec![
+                polygon(&rect(2.0, 2.3, 10.6, 14.0)),
+                polygon(&rect(10.6, 2.3, 18.0, 14.0)),
+            ],
+        ),
+        overlapping(synthetic(
+            "overlapping-same-direction",
+            "two squares wound the same way, overlapping",
+            vec![
+                polygon(&rect(2.0, 2.0, 14.0, 14.0)),
+                polygon(&rect(8.0, 8.0, 20.0, 20.0)),
+            ],
+        )),
+        Case {
+            traits: &[Trait::Overlapping, Trait::DenseOverlaps],
+            ..synthetic(
+                "winding-256",
+                "256 nested squares wound the same way: the centre winds 256 times",
+                (0..256)
+                    .map(|k| {
+                        let inset = 0.05 * f64::from(k);
+                        polygon(&rect(2.0 + inset, 2.0 + inset, 30.0 - inset, 30.0 - inset))
+                    })
+                    .collect(),
+            )
+        },
+        synthetic(
+            "reversed-outer",
+            "a ring whose outer contour is clockwise and its hole counter-clockwise",
+            vec![
+                reversed(polygon(&octagon(11.0, 11.0, 9.0))),
+                polygon(&octagon(11.0, 11.0, 4.5)),
+            ],
+        ),
+        overlapping(synthetic(
+            "figure-8",
+            "one contour crossing itself: the two lobes wind opposite ways",
+            vec![polygon(&[
+                (2.0, 2.0),
+                (18.0, 18.0),
+                (18.0, 2.0),
+                (2.0, 18.0),
+            ])],
+        )),
+        overlapping(synthetic(
+            "pentagram",
+            "a self-intersecting star: its centre winds twice",
+            vec![pentagram()],
+        )),
+        synthetic(
+            "thin-stem",
+            "stems 0.05 px wide, vertical and horizontal",
+            vec![
+                polygon(&rect(4.0, 2.0, 4.05, 18.0)),
+                polygon(&rect(8.3, 2.0, 8.35, 18.0)),
+                polygon(&rect(10.0, 6.6, 22.0, 6.65)),
+            ],
+        ),
+        synthetic(
+            "cubic-cusp",
+            "a cubic with a cusp (zero derivative inside it)",
+            vec![cubic_closed(
+                (2.0, 2.0),
+                (20.0, 18.0),
+                (2.0, 18.0),
+                (20.0, 2.0),
+            )],
+        ),
+        overlapping(synthetic(
+            "cubic-loop",
+            "a cubic that loops over itself",
+            vec![cubic_closed(
+                (2.0, 2.0),
+                (26.0, 20.0),
+                (-4.0, 20.0),
+                (20.0, 2.0),
+            )],
+        )),
+        synthetic(
+            "cubic-inflection",
+            "an S-shaped cubic (an inflection point) closing a box",
+            vec![Contour {
+                segments: vec![
+                    cubic((2.0, 10.0), (8.0, 22.0), (16.0, -2.0), (22.0, 10.0)),
+                    line((22.0, 10.0), (22.0, 2.0)),
+                    line((22.0, 2.0), (2.0, 2.0)),
+                    line((2.0, 2.0), (2.0, 10.0)),
+                ],
+            }],
+        ),
+        subpixel_detail(real(
+            "glyphs-2px",
+            "DejaVu Sans 'Hamburg@' at 2 px/em",
+            text("Hamburg@"),
+            2.0,
+        )),
+        Case {
+            view: View::Window {
+                side: 48,
+                focus: DVec2::new(bowl.min.x, (bowl.min.y + bowl.max.y) / 2.0),
+            },
+            ..real(
+                "glyph-100000px-edge",
+                "DejaVu 'o' at 100 000 px/em, a 48-pixel view on its bowl's leftmost edge",
+                glyph_o.clone(),
+                100_000.0,
+            )
+        },
+        Case {
+            view: View::Window {
+                side: 48,
+                focus: DVec2::new(bowl.min.x, (bowl.min.y + bowl.max.y) / 2.0),
+            },
+            ..real(
+                "glyph-max-size-edge",
+                "the same view at 10⁶ px/em, the largest size accepted",
+                glyph_o,
+                MAX_SIZE_PX_PER_EM,
+            )
+        },
+        far(
+            "world-offset-1e5",
+            "DejaVu 'Rg' at 37 px/em, scene and view moved 1e5 px",
+            1e5,
+        ),
+        far(
+            "world-offset-1e6",
+            "DejaVu 'Rg' at 37 px/em, scene and view moved 1e6 px",
+            1e6,
+        ),
+        Case {
+            matrix: Camera::matrix_from_rows(1.0, 2.0, 0.0, 1.0),
+            ..real(
+                "strong-skew",
+                "DejaVu 'Rg' at 48 px/em sheared by 2 (x += 2y)",
+                text("Rg"),
+                48.0,
+            )
+        },
+        overlapping(real(
+            "inter-overlaps",
+            "Inter 'eQ&' (overlapping contours, as variable fonts draw them) at 40 px/em",
+            Scene::from_text(&inter, "eQ&").expect("Inter shapes it"),
+            40.0,
+        )),
+        real(
+            "latin-modern-cubics",
+            "Latin Modern 'g§' (CFF cubics) at 31 px/em",
+            Scene::from_text(&Font::shipped(1), "g§").expect("Latin Modern shapes it"),
+            31.0,
+        ),
+    ]
+}
+
+/// The case called `name`.
+pub fn by_name(name: &str) -> Option<Case> {
+    all().into_iter().find(|c| c.name == name)
+}
+
+/// Every case's name.
+pub fn names() -> Vec<&'static str> {
+    all().iter().map(|c| c.name).collect()
+}
+
+/// A scene of one synthetic outline at the origin.
+pub fn synthetic_scene(outline: Outline) -> Scene {
+    Scene::from_outlines(SYNTHETIC_UNITS_PER_EM, vec![(outline, DVec2::ZERO)])
+}
+
+/// A closed polygon through `points` (font units, y up).
+pub fn polygon(points: &[(f64, f64)]) -> Contour {
+    let p: Vec<DVec2> = points.iter().map(|&(x, y)| DVec2::new(x, y)).collect();
+    Contour {
+        segments: (0..p.len())
+            .map(|i| Segment::Line(p[i], p[(i + 1) % p.len()]))
+            .collect(),
+    }
+}
+
+/// An axis-aligned rectangle, counter-clockwise (y up).
+pub fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> Vec<(f64, f64)> {
+    vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+}
+
+/// A pentagram centred at (11, 11), radius 9, drawn as one self-crossing contour.
+pub fn pentagram() -> Contour {
+    let star: Vec<(f64, f64)> = (0..5)
+        .map(|k| {
+            let a = std::f64::consts::FRAC_PI_2 + f64::from(k * 2) * std::f64::consts::TAU / 5.0;
+            (11.0 + 9.0 * a.cos(), 11.0 + 9.0 * a.sin())
+        })
+        .collect();
+    polygon(&star)
+}
+
+pub fn line(a: (f64, f64), b: (f64, f64)) -> Segment {
+    Segment::Line(DVec2::from(a), DVec2::from(b))
+}
+
+pub fn quad(a: (f64, f64), b: (f64, f64), c: (f64, f64)) -> Segment {
+    Segment::Quad(DVec2::from(a), DVec2::from(b), DVec2::from(c))
+}
+
+fn cubic(a: (f64, f64), b: (f64, f64), c: (f64, f64), d: (f64, f64)) -> Segment {
+    Segment::Cubic(
+        DVec2::from(a),
+        DVec2::from(b),
+        DVec2::from(c),
+        DVec2::from(d),
+    )
+}
+
+/// A cubic closed by its chord.
+fn cubic_closed(a: (f64, f64), b: (f64, f64), c: (f64, f64), d: (f64, f64)) -> Contour {
+    Contour {
+        segments: vec![cubic(a, b, c, d), line(d, a)],
+    }
+}
+
+/// A regular octagon (counter-clockwise), vertices off the pixel grid's symmetries.
+fn octagon(cx: f64, cy: f64, r: f64) -> Vec<(f64, f64)> {
+    (0..8)
+        .map(|k| {
+            let a = 0.3 + f64::from(k) * std::f64::consts::TAU / 8.0;
+            (cx + r * a.cos(), cy + r * a.sin())
+        })
+        .collect()
+}
+
+/// The contour traversed the other way.
+fn reversed(contour: Contour) -> Contour {
+    Contour {
+        segments: contour
+            .segments
+            .iter()
+            .rev()
+            .map(|s| match *s {
+                Segment::Line(a, b) => Segment::Line(b, a),
+                Segment::Quad(a, b, c) => Segment::Quad(c, b, a),
+                Segment::Cubic(a, b, c, d) => Segment::Cubic(d, c, b, a),
+            })
+            .collect(),
+    }
+}
+
+/// Zero-length lines and quadratics and repeated points inside one contour.
+fn zero_length_contours() -> Vec<Contour> {
+    let p = (12.0, 15.5);
+    vec![Contour {
+        segments: vec![
+            line((3.0, 3.0), p),
+            line(p, p),
+            quad(p, p, p),
+            line(p, (21.0, 4.0)),
+            line((21.0, 4.0), (21.0, 4.0)),
+            line((21.0, 4.0), (3.0, 3.0)),
+        ],
+    }]
+}
+
+/// A square whose top edge is a chain of 1e-4 em quadratics (0.1 font unit each, bent
+/// up by a tenth of that), and a separate contour 1e-4 em across.
+fn tiny_curve_contours() -> Vec<Contour> {
+    let step = 0.1;
+    let mut segments = vec![
+        line((2.0, 2.0), (18.0, 2.0)),
+        line((18.0, 2.0), (18.0, 14.0)),
+    ];
+    let steps = 160;
+    for k in (0..steps).rev() {
+        let x1 = 2.0 + f64::from(k + 1) * step;
+        let x0 = 2.0 + f64::from(k) * step;
+        segments.push(quad((x1, 14.0), ((x0 + x1) / 2.0, 14.01), (x0, 14.0)));
+    }
+    segments.push(line((2.0, 14.0), (2.0, 2.0)));
+    vec![Contour { segments }, polygon(&rect(10.0, 17.0, 10.1, 17.1))]
+}
