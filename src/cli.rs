@@ -34,6 +34,44 @@ pub struct Cli {
 pub enum Command {
     /// Render text or a glyph to an 8-bit grayscale PNG of linear coverage.
     Render(RenderArgs),
+    /// Measure every method against the reference and the atlas baseline on the standard
+    /// scenes: a Markdown table, CSV, JSON and plots.
+    Bench(BenchArgs),
+}
+
+#[derive(Args, Clone, Debug)]
+pub struct BenchArgs {
+    /// A few settings per method and few frames: a run of a couple of minutes.
+    #[arg(long)]
+    pub quick: bool,
+    /// Scenes to run, comma-separated (default: all): page, tiny, headlines, edge,
+    /// rotated, latin-modern, inter-900, bengali.
+    #[arg(long, value_delimiter = ',')]
+    pub scenes: Vec<String>,
+    /// Methods to run, comma-separated (default: all): reference, winding, sdf-cells,
+    /// xor-stencil, tessellation, atlas.
+    #[arg(long, value_delimiter = ',')]
+    pub methods: Vec<String>,
+    /// Frames timed per case (default 21; 3 with --quick).
+    #[arg(long)]
+    pub frames: Option<usize>,
+    /// Folder for bench.md, bench.csv, bench.json and the SVG plots.
+    #[arg(long, default_value = "bench-out")]
+    pub out: PathBuf,
+}
+
+/// `glyphscope bench`: runs the bench and writes its outputs; the path of the report on
+/// stdout.
+pub fn run_bench(args: &BenchArgs) -> Result<(), Error> {
+    let options = crate::bench::BenchOptions {
+        quick: args.quick,
+        scenes: args.scenes.clone(),
+        methods: args.methods.clone(),
+        frames: args.frames,
+    };
+    crate::bench::run_to(&options, &args.out)?;
+    println!("{}", args.out.join("bench.md").display());
+    Ok(())
 }
 
 #[derive(Args, Clone, Debug)]
@@ -92,6 +130,31 @@ pub struct RenderArgs {
     /// blue: too little, full intensity at 0.5); the statistics gain the error figures.
     #[arg(long)]
     pub error_image: Option<PathBuf>,
+}
+
+impl RenderArgs {
+    /// `render --text TEXT --size SIZE --method reference` in the default font and
+    /// frame, with no output: the start of a scene built in code.
+    pub fn text(text: &str, size: f64) -> RenderArgs {
+        RenderArgs {
+            font: None,
+            text: Some(text.to_owned()),
+            glyph_id: None,
+            size,
+            method: "reference".into(),
+            width: None,
+            height: None,
+            origin: None,
+            matrix: None,
+            world_offset: None,
+            tilt: 0.0,
+            variation: Vec::new(),
+            params: Vec::new(),
+            out: PathBuf::new(),
+            stats: None,
+            error_image: None,
+        }
+    }
 }
 
 /// Margin around the ink box of a default frame, pixels.

@@ -7,6 +7,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
         Some(Command::Render(args)) => glyphscope::cli::run_render(args),
+        Some(Command::Bench(args)) => glyphscope::cli::run_bench(args),
         None => run_app(),
     };
     match result {
