@@ -31,11 +31,14 @@ pub struct Cli {
 }
 
 #[derive(Subcommand, Debug)]
+// Parsed once per process: the size of the larger variant costs nothing.
+#[allow(clippy::large_enum_variant)]
 pub enum Command {
     /// Render text or a glyph to an 8-bit grayscale PNG of linear coverage.
     Render(RenderArgs),
     /// Measure every method against the reference and the atlas baseline on the standard
-    /// scenes: a Markdown table, CSV, JSON and plots.
+    /// scenes: a Markdown table, CSV, JSON and plots. Run it from the repository root
+    /// (the scenes read fonts/).
     Bench(BenchArgs),
 }
 
@@ -52,7 +55,7 @@ pub struct BenchArgs {
     /// xor-stencil, tessellation, atlas.
     #[arg(long, value_delimiter = ',')]
     pub methods: Vec<String>,
-    /// Frames timed per case (default 21; 3 with --quick).
+    /// Frames timed per case, over its rounds (default 21 in 3 rounds; 3 with --quick).
     #[arg(long)]
     pub frames: Option<usize>,
     /// Folder for bench.md, bench.csv, bench.json and the SVG plots.
@@ -281,7 +284,7 @@ pub fn scene_and_camera(args: &RenderArgs) -> Result<(Scene, Camera), Error> {
 
 /// How many frames are timed, after how many untimed warm-up frames (shaders compile
 /// lazily on the first frames).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct FrameTiming {
     pub warmup: usize,
     pub frames: usize,

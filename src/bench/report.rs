@@ -48,14 +48,18 @@ pub fn markdown(result: &BenchResult) -> String {
     let _ = writeln!(md, "# glyphscope bench\n");
     let _ = writeln!(
         md,
-        "Device: **{}**. GPU time per frame by {clock}: the median of {} frames after {} \
-         warm-up frames{}, fastest–slowest frame in brackets. **× atlas** is that time over \
+        "Device: **{}**. GPU time per frame by {clock}: {} round{} interleaving the cases \
+         of a view, each preparing the method anew and timing {} frames after {} warm-up \
+         frames; the median of the rounds' medians{}, fastest–slowest frame of all in \
+         brackets. **× atlas** is that time over \
          the atlas baseline's (`atlas` at its default, 4×4 sub-pixel phases, cached at the \
          scene's own size) in the same scene and view of this run: compare methods by \
          these ratios, not by absolute times, which belong to this device alone.\n",
         result.adapter,
-        result.timed_frames,
-        result.warmup_frames,
+        result.timing.rounds,
+        if result.timing.rounds == 1 { "" } else { "s" },
+        result.timing.per_round.frames,
+        result.timing.per_round.warmup,
         if result.quick { " (`--quick`)" } else { "" },
     );
     let _ = writeln!(

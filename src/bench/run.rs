@@ -7,15 +7,40 @@ use serde::Serialize;
 use super::scenes::{self, BenchScene};
 use super::sweep::{self, BENCH_METHODS};
 use crate::Error;
-use crate::cli::{self, FrameTiming, RENDER_TIMING, RenderArgs};
+use crate::camera::Camera;
+use crate::cli::{self, FrameTiming, Measured, RenderArgs};
 use crate::gpu::GpuContext;
 use crate::methods::{self, atlas};
 use crate::metrics::{self, ErrorStats};
+use crate::scene::Scene;
 
-/// `--quick`: a few frames after a short warm-up.
-pub const QUICK_TIMING: FrameTiming = FrameTiming {
-    warmup: 1,
-    frames: 3,
+/// How each case is timed: in `rounds` that interleave a view's cases, each round
+/// preparing the method anew and timing `per_round` frames after its warm-up. On a
+/// shared machine load comes and goes; interleaved, it falls on every method alike
+/// rather than on whichever ran at the time, and the median of the rounds' medians
+/// drops a round that a burst of load spoiled.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct Rounds {
+    pub rounds: usize,
+    pub per_round: FrameTiming,
+}
+
+/// The full run: 3 rounds of 7 frames (21 in all, as `render --stats` times).
+pub const FULL_ROUNDS: Rounds = Rounds {
+    rounds: 3,
+    per_round: FrameTiming {
+        warmup: 3,
+        frames: 7,
+    },
+};
+
+/// `--quick`: one round of a few frames after a short warm-up.
+pub const QUICK_ROUNDS: Rounds = Rounds {
+    rounds: 1,
+    per_round: FrameTiming {
+        warmup: 1,
+        frames: 3,
+    },
 };
 
 /// What to measure.
@@ -26,7 +51,8 @@ pub struct BenchOptions {
     pub scenes: Vec<String>,
     /// Method names (of [`BENCH_METHODS`] and `reference`); empty for all.
     pub methods: Vec<String>,
-    /// Timed frames per case, overriding the default (21, or 3 with `quick`).
+    /// Timed frames per case, over all rounds, overriding the default (21, or 3 with
+    /// `quick`).
     pub frames: Option<usize>,
 }
 
@@ -69,6 +95,8 @@ pub struct Case {
     pub gpu_ms: Option<f64>,
     /// Fastest and slowest timed frame, ms.
     pub gpu_ms_range: Option<(f64, f64)>,
+    /// How the frames were timed (None for the reference).
+    pub gpu_clock: Option<String>,
     /// The method's `prepare`, ms (the reference: 0).
     pub cpu_prepare_ms: f64,
     /// The reference's rasterization, ms.
@@ -104,6 +132,53 @@ impl Case {
     }
 }
 
+/// One view of a scene, ready to measure methods in: its reference drawn once.
+struct ViewUnderTest<'a> {
+    scene_name: &'a str,
+    view: View,
+    scene: Scene,
+    camera: Camera,
+    reference: Measured,
+}
+
+impl ViewUnderTest<'_> {
+    /// Measures `method` with `params` here, its error against the reference.
+    fn measure(
+        &self,
+        gpu: &GpuContext,
+        method: &str,
+        params: Vec<(String, String)>,
+        timing: FrameTiming,
+    ) -> Result<Case, Error> {
+        let reference = &self.reference;
+        let (stats, error) = if method == "reference" {
+            let exact = metrics::compare(&reference.image, &reference.image)?;
+            (reference.stats.clone(), exact)
+        } else {
+            let (scene, camera) = (&self.scene, &self.camera);
+            let measured = cli::measure(Some(gpu), scene, camera, method, &params, timing)?;
+            let error = metrics::compare(&measured.image, &reference.image)?;
+            (measured.stats, error)
+        };
+        Ok(Case {
+            scene: self.scene_name.to_owned(),
+            view: self.view,
+            method: method.to_owned(),
+            params,
+            gpu_ms: stats.gpu_ms.or(stats.cpu_render_ms),
+            gpu_ms_range: stats.gpu_ms_range,
+            gpu_clock: stats.gpu_clock,
+            cpu_prepare_ms: stats.cpu_prepare_ms,
+            cpu_render_ms: stats.cpu_render_ms,
+            mesh_build_ms: stats.mesh.as_ref().map(|m| m.cpu_build_ms),
+            gpu_bytes: stats.gpu_bytes,
+            curves_per_pixel: stats.curves_per_pixel,
+            mesh_points: stats.mesh.as_ref().map(|m| m.points),
+            error,
+        })
+    }
+}
+
 /// Everything one run measured.
 #[derive(Clone, Debug, Serialize)]
 pub struct BenchResult {
@@ -111,8 +186,7 @@ pub struct BenchResult {
     /// How GPU time was measured (timestamp queries, or the CPU clock).
     pub gpu_clock: Option<String>,
     pub quick: bool,
-    pub warmup_frames: usize,
-    pub timed_frames: usize,
+    pub timing: Rounds,
     pub scenes: Vec<SceneInfo>,
     pub cases: Vec<Case>,
 }
@@ -179,13 +253,19 @@ fn settings_for(
 pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
     let (chosen, methods) = check(options)?;
     let base = if options.quick {
-        QUICK_TIMING
+        QUICK_ROUNDS
     } else {
-        RENDER_TIMING
+        FULL_ROUNDS
     };
-    let timing = FrameTiming {
-        frames: options.frames.unwrap_or(base.frames),
-        ..base
+    let timing = match options.frames {
+        Some(frames) => Rounds {
+            per_round: FrameTiming {
+                frames: frames.div_ceil(base.rounds),
+                ..base.per_round
+            },
+            ..base
+        },
+        None => base,
     };
     let gpu = GpuContext::new()?;
     let per_view = |view| -> usize {
@@ -194,7 +274,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
             .map(|m| settings_for(m, view, options.quick, 0.0).len())
             .sum()
     };
-    let total = chosen.len() * (per_view(View::Own) + per_view(View::Moved));
+    let total = chosen.len() * (per_view(View::Own) + per_view(View::Moved)) * timing.rounds;
     // Hidden by indicatif itself when stderr is not a terminal.
     let progress = ProgressBar::new(total as u64).with_style(
         ProgressStyle::with_template("{elapsed_precise} {wide_bar} {pos}/{len} {msg}")
@@ -204,8 +284,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
         adapter: gpu.adapter_name(),
         gpu_clock: None,
         quick: options.quick,
-        warmup_frames: timing.warmup,
-        timed_frames: timing.frames,
+        timing,
         scenes: Vec::new(),
         cases: Vec::new(),
     };
@@ -219,7 +298,8 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
             };
             let (scene, camera) = cli::scene_and_camera(&args)?;
             progress.set_message(format!("{} ({view:?}): reference", bench_scene.name));
-            let reference = cli::measure(None, &scene, &camera, "reference", &[], timing)?;
+            let reference =
+                cli::measure(None, &scene, &camera, "reference", &[], timing.per_round)?;
             result.scenes.push(SceneInfo {
                 name: bench_scene.name.into(),
                 view,
@@ -232,50 +312,84 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
                 atlas_cache_px_per_em: cache,
                 render_args: render_command(&args),
             });
-            for method in &methods {
-                for params in settings_for(method, view, options.quick, cache) {
+            let here = ViewUnderTest {
+                scene_name: bench_scene.name,
+                view,
+                scene,
+                camera,
+                reference,
+            };
+            let plan: Vec<(&String, Vec<(String, String)>)> = methods
+                .iter()
+                .flat_map(|m| {
+                    settings_for(m, view, options.quick, cache)
+                        .into_iter()
+                        .map(move |p| (m, p))
+                })
+                .collect();
+            let mut rounds = Vec::with_capacity(timing.rounds);
+            for _ in 0..timing.rounds {
+                let mut round = Vec::with_capacity(plan.len());
+                for (method, params) in &plan {
+                    let settings: Vec<String> =
+                        params.iter().map(|(k, v)| format!("{k}={v}")).collect();
                     progress.set_message(format!(
                         "{} ({view:?}): {method} {}",
                         bench_scene.name,
-                        params
-                            .iter()
-                            .map(|(k, v)| format!("{k}={v}"))
-                            .collect::<Vec<_>>()
-                            .join(" ")
+                        settings.join(" ")
                     ));
-                    let (measured, error) = if method == "reference" {
-                        let exact = metrics::compare(&reference.image, &reference.image)?;
-                        (reference.stats.clone(), exact)
-                    } else {
-                        let m = cli::measure(Some(&gpu), &scene, &camera, method, &params, timing)?;
-                        let error = metrics::compare(&m.image, &reference.image)?;
-                        (m.stats, error)
-                    };
-                    if result.gpu_clock.is_none() {
-                        result.gpu_clock.clone_from(&measured.gpu_clock);
-                    }
-                    result.cases.push(Case {
-                        scene: bench_scene.name.into(),
-                        view,
-                        method: method.clone(),
-                        params,
-                        gpu_ms: measured.gpu_ms.or(measured.cpu_render_ms),
-                        gpu_ms_range: measured.gpu_ms_range,
-                        cpu_prepare_ms: measured.cpu_prepare_ms,
-                        cpu_render_ms: measured.cpu_render_ms,
-                        mesh_build_ms: measured.mesh.as_ref().map(|m| m.cpu_build_ms),
-                        gpu_bytes: measured.gpu_bytes,
-                        curves_per_pixel: measured.curves_per_pixel,
-                        mesh_points: measured.mesh.as_ref().map(|m| m.points),
-                        error,
-                    });
+                    round.push(here.measure(&gpu, method, params.clone(), timing.per_round)?);
                     progress.inc(1);
                 }
+                rounds.push(round);
+            }
+            for case in combine_rounds(rounds) {
+                if result.gpu_clock.is_none() {
+                    result.gpu_clock.clone_from(&case.gpu_clock);
+                }
+                result.cases.push(case);
             }
         }
     }
     progress.finish_and_clear();
     Ok(result)
+}
+
+/// Each case's figures over the rounds it was timed in: the median of the rounds'
+/// median GPU and preparation times, the fastest and slowest frame of all; the image
+/// (and so the error) is the same every round.
+fn combine_rounds(rounds: Vec<Vec<Case>>) -> Vec<Case> {
+    let mut rounds = rounds.into_iter();
+    let Some(first) = rounds.next() else {
+        return Vec::new();
+    };
+    let rest: Vec<Vec<Case>> = rounds.collect();
+    first
+        .into_iter()
+        .enumerate()
+        .map(|(i, case)| {
+            let all: Vec<&Case> = std::iter::once(&case)
+                .chain(rest.iter().map(|r| &r[i]))
+                .collect();
+            let gpu_ms = median(all.iter().filter_map(|c| c.gpu_ms));
+            let cpu_prepare_ms = median(all.iter().map(|c| c.cpu_prepare_ms)).unwrap_or(0.0);
+            let ranges = all.iter().filter_map(|c| c.gpu_ms_range);
+            let gpu_ms_range = ranges.reduce(|a, b| (a.0.min(b.0), a.1.max(b.1)));
+            Case {
+                gpu_ms,
+                gpu_ms_range,
+                cpu_prepare_ms,
+                ..case.clone()
+            }
+        })
+        .collect()
+}
+
+/// The middle value (the upper one of an even count).
+fn median(values: impl Iterator<Item = f64>) -> Option<f64> {
+    let mut v: Vec<f64> = values.collect();
+    v.sort_by(f64::total_cmp);
+    v.get(v.len() / 2).copied()
 }
 
 /// The `render` arguments that draw a view (add `--method` and `--param`s).
@@ -310,4 +424,41 @@ fn render_command(args: &RenderArgs) -> Vec<String> {
         out.extend(["--variation".into(), format!("{tag}={value}")]);
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn timed(gpu_ms: f64, range: (f64, f64), cpu_prepare_ms: f64) -> Case {
+        Case {
+            scene: "page".into(),
+            view: View::Own,
+            method: "winding".into(),
+            params: Vec::new(),
+            gpu_ms: Some(gpu_ms),
+            gpu_ms_range: Some(range),
+            gpu_clock: None,
+            cpu_prepare_ms,
+            cpu_render_ms: None,
+            mesh_build_ms: None,
+            gpu_bytes: 1,
+            curves_per_pixel: None,
+            mesh_points: None,
+            error: ErrorStats::default(),
+        }
+    }
+
+    #[test]
+    fn rounds_combine_into_medians_and_the_full_range() {
+        let combined = combine_rounds(vec![
+            vec![timed(10.0, (9.0, 12.0), 3.0)],
+            vec![timed(30.0, (25.0, 40.0), 1.0)],
+            vec![timed(11.0, (8.0, 11.5), 2.0)],
+        ]);
+        assert_eq!(combined.len(), 1);
+        assert_eq!(combined[0].gpu_ms, Some(11.0), "a spoiled round is dropped");
+        assert_eq!(combined[0].gpu_ms_range, Some((8.0, 40.0)));
+        assert_eq!(combined[0].cpu_prepare_ms, 2.0);
+    }
 }

@@ -41,12 +41,17 @@ pub const SCENE_NAMES: &[&str] = &[
 
 /// The scene called `name`.
 pub fn scene(name: &str) -> Result<BenchScene, Error> {
-    let Some(&name) = SCENE_NAMES.iter().find(|n| **n == name) else {
-        return Err(Error::Input(format!(
+    let unknown = || {
+        Error::Input(format!(
             "unknown scene '{name}'; choose from: {}",
             SCENE_NAMES.join(", ")
-        )));
+        ))
     };
+    // The name the scene keeps, from the list.
+    let name = *SCENE_NAMES
+        .iter()
+        .find(|n| **n == name)
+        .ok_or_else(unknown)?;
     let page = |size| text_args(None, PAGE_TEXT, size);
     let (about, args) = match name {
         "page" => (
@@ -105,7 +110,7 @@ pub fn scene(name: &str) -> Result<BenchScene, Error> {
                 32.0,
             ),
         ),
-        _ => unreachable!("every name in SCENE_NAMES has a scene"),
+        _ => return Err(unknown()),
     };
     Ok(BenchScene { name, about, args })
 }
@@ -130,9 +135,10 @@ pub fn moved_args(args: &RenderArgs, camera: &Camera) -> RenderArgs {
     }
 }
 
-/// A shipped font's path (None: the embedded DejaVu Sans).
+/// A shipped font's path, relative to the repository root the bench runs in: the
+/// command lines it reports then work on any checkout.
 fn font_path(file: &str) -> PathBuf {
-    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/fonts")).join(file)
+    PathBuf::from("fonts").join(file)
 }
 
 fn text_args(font: Option<&str>, text: &str, size: f64) -> RenderArgs {
