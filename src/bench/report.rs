@@ -71,6 +71,7 @@ pub fn markdown(result: &BenchResult) -> String {
          of the absolute error in 1/255 over all pixels, *max* as coverage, *> 0.5*: \
          pixels off by more than half.\n"
     );
+    summary(result, &mut md);
     for info in &result.scenes {
         let cases = cases_of(result, info);
         if cases.is_empty() {
@@ -145,6 +146,60 @@ pub fn markdown(result: &BenchResult) -> String {
         md.push('\n');
     }
     md
+}
+
+/// One line per scene and view: the baseline's error, the most accurate method, and
+/// the fastest within two error levels.
+fn summary(result: &BenchResult, md: &mut String) {
+    const LEVELS: [f64; 2] = [0.5, 1.0];
+    md.push_str(
+        "## Summary\n\nPer scene and view (*moved*: after caching, zoomed and turned): the \
+         atlas baseline's error, the most accurate GPU case, and the fastest case within a \
+         mean error of 0.5/255 and 1/255, with its time over the atlas's.\n\n\
+         | scene | view | atlas MAE /255 (max) | most accurate | fastest, MAE ≤ 0.5 | fastest, MAE ≤ 1 |\n\
+         |---|---|---:|---|---|---|\n",
+    );
+    let named = |c: &Case| format!("{} {}", c.method, c.settings()).replace(" default", "");
+    for info in &result.scenes {
+        let cases = cases_of(result, info);
+        let gpu: Vec<&Case> = cases
+            .iter()
+            .copied()
+            .filter(|c| c.method != "reference")
+            .collect();
+        if gpu.is_empty() {
+            continue;
+        }
+        let baseline = cases
+            .iter()
+            .find(|c| c.is_baseline())
+            .map_or("—".into(), |c| {
+                format!("{:.2} ({:.2})", c.error.mae_255, c.error.max)
+            });
+        let best = gpu
+            .iter()
+            .min_by(|a, b| a.error.mae_255.total_cmp(&b.error.mae_255))
+            .map_or("—".into(), |c| {
+                format!("{} ({:.2})", named(c), c.error.mae_255)
+            });
+        let fastest = LEVELS.map(|level| {
+            fastest_within(&cases, level).map_or("none".into(), |c| {
+                let ratio =
+                    ratio_to_baseline(result, c).map_or("—".into(), |r| format!("{r:.2}"));
+                format!("{} ({ratio}×)", named(c))
+            })
+        });
+        let view = match info.view {
+            View::Own => "own",
+            View::Moved => "moved",
+        };
+        let _ = writeln!(
+            md,
+            "| {} | {view} | {baseline} | {best} | {} | {} |",
+            info.name, fastest[0], fastest[1]
+        );
+    }
+    md.push('\n');
 }
 
 /// One line per case; `settings` quoted, since it holds commas.

@@ -191,12 +191,26 @@ pub struct BenchResult {
     pub cases: Vec<Case>,
 }
 
+/// `names` in order, each once: a name given twice is measured once.
+fn distinct<T: PartialEq>(names: &[T]) -> Vec<&T> {
+    let mut once: Vec<&T> = Vec::with_capacity(names.len());
+    for name in names {
+        if !once.contains(&name) {
+            once.push(name);
+        }
+    }
+    once
+}
+
 /// Checks the options, naming what is unknown.
 fn check(options: &BenchOptions) -> Result<(Vec<BenchScene>, Vec<String>), Error> {
     let names: Vec<&str> = if options.scenes.is_empty() {
         scenes::SCENE_NAMES.to_vec()
     } else {
-        options.scenes.iter().map(String::as_str).collect()
+        distinct(&options.scenes)
+            .into_iter()
+            .map(String::as_str)
+            .collect()
     };
     let chosen = names
         .into_iter()
@@ -218,6 +232,7 @@ fn check(options: &BenchOptions) -> Result<(Vec<BenchScene>, Vec<String>), Error
             )));
         }
     }
+    let methods: Vec<String> = distinct(&methods).into_iter().cloned().collect();
     if options.frames == Some(0) {
         return Err(Error::Input("--frames must be at least 1".into()));
     }
