@@ -13,6 +13,9 @@ use crate::Error;
 /// Mean errors are drawn no lower than this (1/255): a log axis has no zero.
 const MAE_FLOOR: f64 = 0.01;
 
+/// Labels per axis: log axes offer one per grid line, which crowd into each other.
+const LABELS: usize = 6;
+
 /// One colour per benched method, in [`BENCH_METHODS`]' order.
 const COLOURS: [RGBColor; 5] = [
     RGBColor(31, 119, 180),
@@ -121,6 +124,9 @@ pub fn time_against_error(result: &BenchResult, path: &Path) -> Result<(), Error
             .configure_mesh()
             .x_desc(format!("GPU ms per frame ({})", result.adapter))
             .y_desc("mean error, 1/255")
+            .x_labels(LABELS)
+            .y_labels(LABELS)
+            .light_line_style(WHITE)
             .draw()
             .map_err(plot_error)?;
         for method in BENCH_METHODS {
@@ -179,7 +185,8 @@ pub fn points_against_error(result: &BenchResult, path: &Path) -> Result<(), Err
         .x_label_area_size(36)
         .y_label_area_size(52)
         .build_cartesian_2d(
-            log_range(all().map(|p| p.0)).log_scale(),
+            // Points from zero, linear: a few hundred to a few thousand.
+            0.0..all().map(|p| p.0).fold(1.0, f64::max) * 1.1,
             log_range(all().map(|p| p.1)).log_scale(),
         )
         .map_err(plot_error)?;
@@ -187,6 +194,9 @@ pub fn points_against_error(result: &BenchResult, path: &Path) -> Result<(), Err
         .configure_mesh()
         .x_desc("outline points tessellated")
         .y_desc("mean error, 1/255")
+        .x_labels(LABELS)
+        .y_labels(LABELS)
+        .light_line_style(WHITE)
         .draw()
         .map_err(plot_error)?;
     for (i, (label, points)) in series.iter().enumerate() {
