@@ -4,6 +4,7 @@
 
 use std::path::Path;
 
+use plotters::coord::ranged1d::ValueFormatter;
 use plotters::prelude::*;
 
 use super::run::{BenchResult, Case, View};
@@ -34,6 +35,27 @@ fn colour(method: &str) -> RGBColor {
 
 fn plot_error(e: impl std::fmt::Debug) -> Error {
     Error::Output(format!("cannot draw the plot: {e:?}"))
+}
+
+/// Axes with their descriptions, mean error up the side, and only the major grid.
+fn draw_axes<'a, DB, X, Y>(
+    chart: &mut ChartContext<'a, DB, Cartesian2d<X, Y>>,
+    x_desc: &str,
+) -> Result<(), Error>
+where
+    DB: DrawingBackend + 'a,
+    X: Ranged<ValueType = f64> + ValueFormatter<f64>,
+    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .y_desc("mean error, 1/255")
+        .x_labels(LABELS)
+        .y_labels(LABELS)
+        .light_line_style(WHITE)
+        .draw()
+        .map_err(plot_error)
 }
 
 /// The series' labels, in a box at the lower left: fast and exact at once, the corner
@@ -120,15 +142,10 @@ pub fn time_against_error(result: &BenchResult, path: &Path) -> Result<(), Error
                 log_range(all.iter().map(|p| p.1)).log_scale(),
             )
             .map_err(plot_error)?;
-        chart
-            .configure_mesh()
-            .x_desc(format!("GPU ms per frame ({})", result.adapter))
-            .y_desc("mean error, 1/255")
-            .x_labels(LABELS)
-            .y_labels(LABELS)
-            .light_line_style(WHITE)
-            .draw()
-            .map_err(plot_error)?;
+        draw_axes(
+            &mut chart,
+            &format!("GPU ms per frame ({})", result.adapter),
+        )?;
         for method in BENCH_METHODS {
             let points: Vec<(f64, f64)> = cases
                 .iter()
@@ -190,15 +207,7 @@ pub fn points_against_error(result: &BenchResult, path: &Path) -> Result<(), Err
             log_range(all().map(|p| p.1)).log_scale(),
         )
         .map_err(plot_error)?;
-    chart
-        .configure_mesh()
-        .x_desc("outline points tessellated")
-        .y_desc("mean error, 1/255")
-        .x_labels(LABELS)
-        .y_labels(LABELS)
-        .light_line_style(WHITE)
-        .draw()
-        .map_err(plot_error)?;
+    draw_axes(&mut chart, "outline points tessellated")?;
     for (i, (label, points)) in series.iter().enumerate() {
         let c = Palette99::pick(i).to_rgba();
         chart

@@ -172,16 +172,7 @@ impl Atlas {
         let phases = self.settings.phases;
         self.pipeline.get_or_insert_with(|| {
             let device = &gpu.device;
-            let buffer = |binding, visibility, ty| wgpu::BindGroupLayoutEntry {
-                binding,
-                visibility,
-                ty: wgpu::BindingType::Buffer {
-                    ty,
-                    has_dynamic_offset: false,
-                    min_binding_size: None,
-                },
-                count: None,
-            };
+            let buffer = gpu::buffer_entry;
             let storage = wgpu::BufferBindingType::Storage { read_only: true };
             let (vertex, fragment) = (wgpu::ShaderStages::VERTEX, wgpu::ShaderStages::FRAGMENT);
             let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
