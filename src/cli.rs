@@ -40,6 +40,10 @@ pub enum Command {
     /// Sweep the hard cases through every method against the reference; exit 1 when a
     /// method breaks a bound it claims.
     Stability(StabilityArgs),
+    /// Measure every method against the reference and the atlas baseline on the standard
+    /// scenes: a Markdown table, CSV, JSON and plots. Run it from the repository root
+    /// (the scenes read fonts/).
+    Bench(BenchArgs),
 }
 
 #[derive(Args, Clone, Debug)]
@@ -66,6 +70,41 @@ pub struct StabilityArgs {
 }
 
 #[derive(Args, Clone, Debug)]
+pub struct BenchArgs {
+    /// A few settings per method and few frames: a run of a couple of minutes.
+    #[arg(long)]
+    pub quick: bool,
+    /// Scenes to run, comma-separated (default: all): page, tiny, headlines, edge,
+    /// rotated, latin-modern, inter-900, bengali.
+    #[arg(long, value_delimiter = ',')]
+    pub scenes: Vec<String>,
+    /// Methods to run, comma-separated (default: all): reference, winding, sdf-cells,
+    /// xor-stencil, tessellation, atlas.
+    #[arg(long, value_delimiter = ',')]
+    pub methods: Vec<String>,
+    /// Frames timed per case, over its rounds (default 21 in 3 rounds; 3 with --quick).
+    #[arg(long)]
+    pub frames: Option<usize>,
+    /// Folder for bench.md, bench.csv, bench.json and the SVG plots.
+    #[arg(long, default_value = "bench-out")]
+    pub out: PathBuf,
+}
+
+/// `glyphscope bench`: runs the bench and writes its outputs; the path of the report on
+/// stdout.
+pub fn run_bench(args: &BenchArgs) -> Result<(), Error> {
+    let options = crate::bench::BenchOptions {
+        quick: args.quick,
+        scenes: args.scenes.clone(),
+        methods: args.methods.clone(),
+        frames: args.frames,
+    };
+    crate::bench::run_to(&options, &args.out)?;
+    println!("{}", args.out.join("bench.md").display());
+    Ok(())
+}
+
+#[derive(Args, Clone, Debug)]
 pub struct RenderArgs {
     /// Font file (.ttf/.otf); the embedded DejaVu Sans when absent.
     #[arg(long)]
@@ -83,7 +122,7 @@ pub struct RenderArgs {
     /// Size in pixels per em.
     #[arg(long, allow_negative_numbers = true)]
     pub size: f64,
-    /// reference, bounds, winding, sdf-cells, xor-stencil or tessellation.
+    /// reference, bounds, winding, sdf-cells, xor-stencil, tessellation or atlas.
     #[arg(long)]
     pub method: String,
     /// Image width; by default the ink box plus a margin.
@@ -123,12 +162,33 @@ pub struct RenderArgs {
     pub error_image: Option<PathBuf>,
 }
 
+impl RenderArgs {
+    /// `render --text TEXT --size SIZE --method reference` in the default font and
+    /// frame, with no output: the start of a scene built in code.
+    pub fn text(text: &str, size: f64) -> RenderArgs {
+        RenderArgs {
+            font: None,
+            text: Some(text.to_owned()),
+            glyph_id: None,
+            size,
+            method: "reference".into(),
+            width: None,
+            height: None,
+            origin: None,
+            matrix: None,
+            world_offset: None,
+            tilt: 0.0,
+            variation: Vec::new(),
+            params: Vec::new(),
+            out: PathBuf::new(),
+            stats: None,
+            error_image: None,
+        }
+    }
+}
+
 /// Margin around the ink box of a default frame, pixels.
 pub const FRAME_MARGIN_PX: f64 = 4.0;
-/// Frames timed for `gpu_ms`, after as many untimed warm-up frames (shaders compile
-/// lazily on the first frames).
-const TIMED_FRAMES: usize = 21;
-const WARMUP_FRAMES: usize = 5;
 
 /// What `render --stats` writes.
 #[derive(Clone, Debug, Serialize)]
@@ -140,6 +200,9 @@ pub struct RenderStats {
     pub gpu_ms: Option<f64>,
     /// (min, max) of the timed frames.
     pub gpu_ms_range: Option<(f64, f64)>,
+    /// How the frames were timed: timestamp queries, or the CPU's clock where the
+    /// device has none.
+    pub gpu_clock: Option<String>,
     /// Font outlines and scene for the reference; plus the method's GPU data for GPU
     /// methods.
     pub cpu_prepare_ms: f64,
@@ -246,71 +309,46 @@ pub fn scene_and_camera(args: &RenderArgs) -> Result<(Scene, Camera), Error> {
     Ok((scene, camera))
 }
 
+/// How many frames are timed, after how many untimed warm-up frames (shaders compile
+/// lazily on the first frames).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct FrameTiming {
+    pub warmup: usize,
+    pub frames: usize,
+}
+
+/// `render --stats` times 21 frames after 5 warm-up frames.
+pub const RENDER_TIMING: FrameTiming = FrameTiming {
+    warmup: 5,
+    frames: 21,
+};
+
+/// How `gpu_ms` was measured.
+pub const CLOCK_TIMESTAMPS: &str = "timestamp queries";
+pub const CLOCK_WALL: &str = "wall clock of submit and wait (no timestamp queries)";
+
 /// Renders what `args` describe (nothing is written).
 pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
     let start = Instant::now();
     let (scene, camera) = scene_and_camera(args)?;
     let scene_ms = ms_since(start);
-    let mut stats = RenderStats {
-        method: args.method.clone(),
-        params: args.params.clone(),
-        adapter: String::new(),
-        gpu_ms: None,
-        gpu_ms_range: None,
-        cpu_prepare_ms: scene_ms,
-        cpu_render_ms: None,
-        gpu_bytes: 0,
-        width: camera.width,
-        height: camera.height,
-        size_px_per_em: camera.size_px_per_em,
-        instances: scene.instances.len(),
-        distinct_glyphs: scene.glyphs.len(),
-        covered_area_px: 0.0,
-        error: None,
-        curves_per_pixel: None,
-        mesh: None,
+    let gpu = match args.method.as_str() {
+        "reference" => None,
+        _ => Some(GpuContext::new()?),
     };
-    let mut overlay = None;
-    let image = if args.method == "reference" {
-        methods::reject_unknown_params("reference", &args.params, &[])?;
-        stats.adapter = "cpu (exact reference rasterizer)".into();
-        let start = Instant::now();
-        let image = reference::rasterize(&scene, &camera)?;
-        stats.cpu_render_ms = Some(ms_since(start));
-        image
-    } else {
-        let mut method = methods::create(&args.method, &args.params)?;
-        let gpu = GpuContext::new()?;
-        stats.adapter = gpu.adapter_name();
-        let target = CoverageTarget::new(&gpu, camera.width, camera.height)?;
-        let start = Instant::now();
-        method.prepare(&gpu, &scene)?;
-        stats.cpu_prepare_ms += ms_since(start);
-        gpu::render_frame(&gpu, method.as_mut(), &target, &camera)?;
-        let image = target.readback(&gpu)?;
-        if methods::param(&args.params, "overlay").is_some_and(|v| v != "none") {
-            overlay = Some(target.readback_color(&gpu)?);
-        }
-        stats.curves_per_pixel = method.curves_per_pixel(&gpu, &camera)?;
-        if let Some(mut times) = gpu::time_frames(
-            &gpu,
-            method.as_mut(),
-            &target,
-            &camera,
-            WARMUP_FRAMES,
-            TIMED_FRAMES,
-        )? {
-            times.sort_by(f64::total_cmp);
-            stats.gpu_ms = Some(times[times.len() / 2]);
-            stats.gpu_ms_range = Some((times[0], times[times.len() - 1]));
-        }
-        // After the frames: what a method allocates on its first frame (intermediate
-        // attachments, meshes that depend on the camera) counts too.
-        stats.gpu_bytes = method.gpu_bytes();
-        stats.mesh = method.mesh_stats();
-        image
-    };
-    stats.covered_area_px = image.sum();
+    let Measured {
+        image,
+        overlay,
+        mut stats,
+    } = measure(
+        gpu.as_ref(),
+        &scene,
+        &camera,
+        &args.method,
+        &args.params,
+        RENDER_TIMING,
+    )?;
+    stats.cpu_prepare_ms += scene_ms;
     let reference = match &args.error_image {
         Some(_) if args.method == "reference" => Some(image.clone()),
         Some(_) => Some(reference::rasterize(&scene, &camera)?),
@@ -325,6 +363,123 @@ pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
         reference,
         stats,
     })
+}
+
+/// A method's image of a scene and what was measured drawing it.
+pub struct Measured {
+    pub image: CoverageImage,
+    /// The overlay picture, when the `overlay` parameter asked for one.
+    pub overlay: Option<image::RgbImage>,
+    /// Everything but `error`; `cpu_prepare_ms` is the method's own preparation.
+    pub stats: RenderStats,
+}
+
+/// Draws `scene` through `camera` with method `method` and measures it: the one
+/// measurement `render --stats` and the bench share, so their figures agree. `gpu` is
+/// needed for every method but the reference.
+pub fn measure(
+    gpu: Option<&GpuContext>,
+    scene: &Scene,
+    camera: &Camera,
+    method: &str,
+    params: &[(String, String)],
+    timing: FrameTiming,
+) -> Result<Measured, Error> {
+    let mut stats = RenderStats {
+        method: method.to_owned(),
+        params: params.to_vec(),
+        adapter: String::new(),
+        gpu_ms: None,
+        gpu_ms_range: None,
+        gpu_clock: None,
+        cpu_prepare_ms: 0.0,
+        cpu_render_ms: None,
+        gpu_bytes: 0,
+        width: camera.width,
+        height: camera.height,
+        size_px_per_em: camera.size_px_per_em,
+        instances: scene.instances.len(),
+        distinct_glyphs: scene.glyphs.len(),
+        covered_area_px: 0.0,
+        error: None,
+        curves_per_pixel: None,
+        mesh: None,
+    };
+    let mut overlay = None;
+    let image = if method == "reference" {
+        methods::reject_unknown_params("reference", params, &[])?;
+        stats.adapter = "cpu (exact reference rasterizer)".into();
+        let start = Instant::now();
+        let image = reference::rasterize(scene, camera)?;
+        stats.cpu_render_ms = Some(ms_since(start));
+        image
+    } else {
+        let mut method = methods::create(method, params)?;
+        let gpu = gpu.ok_or_else(|| Error::Gpu("a GPU method needs a GPU context".into()))?;
+        stats.adapter = gpu.adapter_name();
+        let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
+        let start = Instant::now();
+        method.prepare(gpu, scene)?;
+        stats.cpu_prepare_ms = ms_since(start);
+        gpu::render_frame(gpu, method.as_mut(), &target, camera)?;
+        let image = target.readback(gpu)?;
+        if methods::param(params, "overlay").is_some_and(|v| v != "none") {
+            overlay = Some(target.readback_color(gpu)?);
+        }
+        stats.curves_per_pixel = method.curves_per_pixel(gpu, camera)?;
+        let (mut times, clock) = match gpu::time_frames(
+            gpu,
+            method.as_mut(),
+            &target,
+            camera,
+            timing.warmup,
+            timing.frames,
+        )? {
+            Some(times) => (times, CLOCK_TIMESTAMPS),
+            None => (
+                wall_clock_frames(gpu, method.as_mut(), &target, camera, timing)?,
+                CLOCK_WALL,
+            ),
+        };
+        times.sort_by(f64::total_cmp);
+        if let (Some(first), Some(last)) = (times.first(), times.last()) {
+            stats.gpu_ms = Some(times[times.len() / 2]);
+            stats.gpu_ms_range = Some((*first, *last));
+            stats.gpu_clock = Some(clock.to_owned());
+        }
+        // After the frames: what a method allocates on its first frame (intermediate
+        // attachments, meshes that depend on the camera) counts too.
+        stats.gpu_bytes = method.gpu_bytes();
+        stats.mesh = method.mesh_stats();
+        image
+    };
+    stats.covered_area_px = image.sum();
+    Ok(Measured {
+        image,
+        overlay,
+        stats,
+    })
+}
+
+/// Frame times from the CPU's clock, for devices without timestamp queries: each frame
+/// from encoding to the GPU going idle, so it includes the submission's overhead.
+fn wall_clock_frames(
+    gpu: &GpuContext,
+    method: &mut dyn methods::Method,
+    target: &CoverageTarget,
+    camera: &Camera,
+    timing: FrameTiming,
+) -> Result<Vec<f64>, Error> {
+    for _ in 0..timing.warmup {
+        gpu::render_frame(gpu, method, target, camera)?;
+    }
+    (0..timing.frames)
+        .map(|_| {
+            let start = Instant::now();
+            gpu::render_frame(gpu, method, target, camera)?;
+            Ok(ms_since(start))
+        })
+        .collect()
 }
 
 /// `glyphscope render`: renders, then writes the PNG and, if asked, the statistics.
@@ -381,7 +536,7 @@ pub fn run_stability(args: &StabilityArgs) -> Result<bool, Error> {
     Ok(broken.is_empty())
 }
 
-fn ms_since(start: Instant) -> f64 {
+pub(crate) fn ms_since(start: Instant) -> f64 {
     start.elapsed().as_secs_f64() * 1e3
 }
 

@@ -7,6 +7,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
         Some(Command::Render(args)) => glyphscope::cli::run_render(args).map(|()| true),
+        Some(Command::Bench(args)) => glyphscope::cli::run_bench(args).map(|()| true),
         // Exit 1, distinct from bad input's 2, when a method breaks a claimed bound.
         Some(Command::Stability(args)) => glyphscope::cli::run_stability(args),
         Some(Command::Screenshots(args)) => run_screenshots(args).map(|()| true),

@@ -12,6 +12,9 @@ pub struct ErrorStats {
     pub mae_255: f64,
     /// Root-mean-square error, in 1/255.
     pub rmse_255: f64,
+    /// The 99th percentile of the absolute error over all pixels, in 1/255: on a page
+    /// most pixels are blank and exact, so it says how much of the ink is badly off.
+    pub p99_255: f64,
     /// Largest absolute error, as coverage (0..1).
     pub max: f64,
     /// Where the largest error is (x, y).
@@ -34,8 +37,10 @@ pub fn compare(image: &CoverageImage, reference: &CoverageImage) -> Result<Error
         ..Default::default()
     };
     let (mut sum, mut sum_sq) = (0.0, 0.0);
+    let mut errors = Vec::with_capacity(image.data.len());
     for (i, (&a, &b)) in image.data.iter().zip(&reference.data).enumerate() {
         let e = (f64::from(a) - f64::from(b)).abs();
+        errors.push(e);
         sum += e;
         sum_sq += e * e;
         stats.pixels_over_025 += usize::from(e > 0.25);
@@ -53,7 +58,23 @@ pub fn compare(image: &CoverageImage, reference: &CoverageImage) -> Result<Error
     let n = stats.pixels.max(1) as f64;
     stats.mae_255 = sum / n * 255.0;
     stats.rmse_255 = (sum_sq / n).sqrt() * 255.0;
+    stats.p99_255 = percentile(&mut errors, 0.99) * 255.0;
     Ok(stats)
+}
+
+/// The value below which a fraction `q` of `values` lies (nearest rank; NaN counts as
+/// the largest); 0 for none. Reorders `values`.
+fn percentile(values: &mut [f64], q: f64) -> f64 {
+    if values.is_empty() {
+        return 0.0;
+    }
+    let rank = ((q * values.len() as f64).ceil() as usize).clamp(1, values.len()) - 1;
+    *values
+        .select_nth_unstable_by(rank, |a, b| {
+            a.partial_cmp(b)
+                .unwrap_or_else(|| a.is_nan().cmp(&b.is_nan()))
+        })
+        .1
 }
 
 /// Signed error image: red where `image` covers more than `reference`, blue where it
@@ -96,6 +117,22 @@ mod tests {
         assert!((s.max - 0.6).abs() < 1e-6);
         assert_eq!(s.worst_pixel, (2, 0));
         assert_eq!((s.pixels_over_025, s.pixels_over_05), (2, 1));
+        // Errors 0, 0, 0.5, 0.6: the 99th percentile of four is the largest.
+        assert!((s.p99_255 - 0.6 * 255.0).abs() < 1e-3);
+    }
+
+    #[test]
+    fn p99_ignores_the_worst_percent() {
+        let mut data = vec![0.0f32; 1000];
+        data[..10].fill(1.0);
+        let s = compare(&img(&data), &img(&[0.0; 1000])).unwrap();
+        assert_eq!(
+            s.p99_255, 0.0,
+            "ten bad pixels in a thousand are the top 1%"
+        );
+        data[10] = 0.5;
+        let s = compare(&img(&data), &img(&[0.0; 1000])).unwrap();
+        assert!((s.p99_255 - 0.5 * 255.0).abs() < 1e-3);
     }
 
     #[test]

@@ -554,25 +554,12 @@ fn overlays_draw_over_unchanged_coverage() {
 #[test]
 fn the_command_line_reports_points_triangles_and_area_error() {
     let args = |pairs: &[&str]| RenderArgs {
-        font: None,
-        text: Some("gg".into()),
-        glyph_id: None,
-        size: 24.0,
         method: "tessellation".into(),
-        width: None,
-        height: None,
-        origin: None,
-        matrix: None,
-        world_offset: None,
-        tilt: 0.0,
-        variation: Vec::new(),
         params: pairs
             .chunks(2)
             .map(|kv| (kv[0].to_string(), kv[1].to_string()))
             .collect(),
-        out: std::env::temp_dir().join("unused.png"),
-        stats: None,
-        error_image: None,
+        ..RenderArgs::text("gg", 24.0)
     };
     // A mode's own parameter picks the mode.
     let asa = render(&args(&["threshold", "13"])).unwrap();

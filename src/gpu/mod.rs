@@ -18,6 +18,25 @@ use crate::Error;
 use crate::camera::Camera;
 use crate::methods::Method;
 
+/// A bind group layout entry for a buffer of type `ty` (uniform or storage) seen by
+/// `visibility`, at `binding`: what most methods bind.
+pub fn buffer_entry(
+    binding: u32,
+    visibility: wgpu::ShaderStages,
+    ty: wgpu::BufferBindingType,
+) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility,
+        ty: wgpu::BindingType::Buffer {
+            ty,
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        count: None,
+    }
+}
+
 /// Encodes one frame of `method` into `target`, submits it and waits for the GPU.
 pub fn render_frame(
     gpu: &GpuContext,

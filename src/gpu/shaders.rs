@@ -6,6 +6,7 @@ pub const COMMON_WGSL: &str = include_str!("../../shaders/common.wgsl");
 
 /// Every method shader, by file name. A new shader is added here, and only here.
 pub const METHOD_SHADERS: &[(&str, &str)] = &[
+    ("atlas.wgsl", include_str!("../../shaders/atlas.wgsl")),
     ("bounds.wgsl", include_str!("../../shaders/bounds.wgsl")),
     ("winding.wgsl", include_str!("../../shaders/winding.wgsl")),
     (

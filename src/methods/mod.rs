@@ -180,6 +180,7 @@ pub const METHOD_NAMES: &[&str] = &[
     "sdf-cells",
     "xor-stencil",
     "tessellation",
+    "atlas",
 ];
 
 /// Creates a GPU method by name. The reference is not a GPU method: callers handle it.
@@ -190,6 +191,7 @@ pub fn create(name: &str, params: &Params) -> Result<Box<dyn Method>, Error> {
         "sdf-cells" => Box::new(sdf_cells::SdfCells::new(params)?),
         "xor-stencil" => Box::new(xor_stencil::XorStencil::new(params)?),
         "tessellation" => Box::new(tessellation::Tessellation::new(params)?),
+        "atlas" => Box::new(atlas::Atlas::new(params)?),
         _ => {
             return Err(Error::Input(format!(
                 "unknown method '{name}'; choose one of: {}",
@@ -218,6 +220,7 @@ pub fn param_specs(name: &str) -> &'static [ParamSpec] {
         "tessellation" => tessellation::PARAMS,
         "xor-stencil" => xor_stencil::PARAMS,
         "sdf-cells" => sdf_cells::params::PARAMS,
+        "atlas" => atlas::PARAMS,
         _ => &[],
     }
 }
@@ -247,6 +250,7 @@ pub fn reject_unknown_params(method: &str, params: &Params, known: &[&str]) -> R
     Ok(())
 }
 
+pub mod atlas;
 pub mod bounds;
 pub mod instances;
 pub mod sdf_cells;

@@ -213,16 +213,7 @@ impl Pipeline {
     fn new(gpu: &GpuContext) -> Pipeline {
         let device = &gpu.device;
         let shader = crate::gpu::shaders::create_module(device, "sdf_cells.wgsl");
-        let entry = |binding, visibility, ty| wgpu::BindGroupLayoutEntry {
-            binding,
-            visibility,
-            ty: wgpu::BindingType::Buffer {
-                ty,
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-            count: None,
-        };
+        let entry = crate::gpu::buffer_entry;
         let both = wgpu::ShaderStages::VERTEX_FRAGMENT;
         let fragment = wgpu::ShaderStages::FRAGMENT;
         let storage = wgpu::BufferBindingType::Storage { read_only: true };

@@ -203,16 +203,7 @@ impl Winding {
 
     fn layout(&mut self, gpu: &GpuContext) -> &(wgpu::BindGroupLayout, wgpu::PipelineLayout) {
         self.layout.get_or_insert_with(|| {
-            let entry = |binding, visibility, ty| wgpu::BindGroupLayoutEntry {
-                binding,
-                visibility,
-                ty: wgpu::BindingType::Buffer {
-                    ty,
-                    has_dynamic_offset: false,
-                    min_binding_size: None,
-                },
-                count: None,
-            };
+            let entry = gpu::buffer_entry;
             let storage = wgpu::BufferBindingType::Storage { read_only: true };
             let (vertex, fragment) = (wgpu::ShaderStages::VERTEX, wgpu::ShaderStages::FRAGMENT);
             let group = gpu

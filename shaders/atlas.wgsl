@@ -1,0 +1,78 @@
+// Method `atlas` (compiled after common.wgsl): the baseline users would otherwise pick.
+// Each glyph was rasterized once on the CPU (exact coverage) at a cached size into a
+// texture atlas; here each instance draws one quad that samples its glyph's bitmap with
+// bilinear filtering. Exact where the instance lands on the grid it was cached for;
+// resampled (blurred, aliased) anywhere else.
+
+// One cached bitmap of a glyph, at one sub-pixel phase.
+struct Entry {
+    // The bitmap's rectangle (padding included) in the glyph's local font units:
+    // min.xy, max.xy. The quad covers it.
+    quad: vec4<f32>,
+    // Where the glyph's local origin lies in the atlas, in texels (x right, y down),
+    // and texels per font unit.
+    origin: vec2<f32>,
+    texels_per_unit: f32,
+    _pad: f32,
+    // The bitmap's texels in the atlas: min.xy, max.xy (texel edges).
+    texels: vec4<f32>,
+}
+
+@group(0) @binding(0) var<uniform> frame: Frame;
+@group(0) @binding(1) var<storage, read> instances: array<GlyphInstance>;
+@group(0) @binding(2) var<storage, read> entries: array<Entry>;
+@group(0) @binding(3) var atlas: texture_2d<f32>;
+@group(0) @binding(4) var atlas_sampler: sampler;
+
+// Sub-pixel phases per axis: each glyph has PHASES × PHASES bitmaps, and an instance's
+// pen snaps to the nearest 1/PHASES pixel, drawing the bitmap of that phase. 0: no
+// snapping, the phase-0 bitmap resampled at the exact position.
+override PHASES: u32 = 4u;
+
+struct Varyings {
+    @builtin(position) position: vec4<f32>,
+    @location(0) local: vec2<f32>,
+    @location(1) @interpolate(flat) entry: u32,
+}
+
+fn translation(shift: vec2<f32>) -> mat3x3<f32> {
+    return mat3x3<f32>(vec3<f32>(1.0, 0.0, 0.0), vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(shift, 1.0));
+}
+
+@vertex
+fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u32) -> Varyings {
+    var inst = instances[index];
+    // One bitmap per glyph when nothing snaps (PHASES = 0).
+    let phases = max(PHASES, 1u);
+    var entry = inst.glyph * phases * phases;
+    if PHASES > 0u {
+        // The pen's image, moved to the nearest phase: the whole glyph moves with it,
+        // as a text renderer places cached bitmaps.
+        let pen = project(inst.to_image, vec2<f32>(0.0));
+        let steps = f32(phases);
+        let snapped = round(pen * steps) / steps;
+        let phase = vec2<u32>(round(fract(snapped) * steps)) % phases;
+        entry += phase.y * phases + phase.x;
+        inst.to_image = translation(snapped - pen) * inst.to_image;
+        inst.to_local = inst.to_local * translation(pen - snapped);
+    }
+    let e = entries[entry];
+    let quad = glyph_quad(inst, e.quad.xy, e.quad.zw, vertex, frame.size);
+    var out: Varyings;
+    out.position = quad.position;
+    out.local = quad.local;
+    out.entry = entry;
+    return out;
+}
+
+@fragment
+fn fs_main(in: Varyings) -> @location(0) vec4<f32> {
+    let e = entries[in.entry];
+    let texel = e.origin + vec2<f32>(in.local.x, -in.local.y) * e.texels_per_unit;
+    // Kept on the bitmap's own texels (its zero border included): pixels of the quad's
+    // dilation beyond it read that border, never a neighbour's bitmap.
+    let inside = clamp(texel, e.texels.xy + 0.5, e.texels.zw - 0.5);
+    let size = vec2<f32>(textureDimensions(atlas));
+    let coverage = textureSampleLevel(atlas, atlas_sampler, inside / size, 0.0).r;
+    return vec4<f32>(coverage);
+}

@@ -1,0 +1,48 @@
+//! `glyphscope bench`: every method at a sweep of its settings on the standard scenes,
+//! GPU time against error, side by side with the atlas baseline, in one command.
+//!
+//! - [`scenes`]: the standard scenes, each a `render` command line;
+//! - [`sweep`]: the settings each method is measured at;
+//! - [`run`]: measuring, through the same function as `render --stats`;
+//! - [`report`] and [`plot`]: Markdown, CSV, JSON and SVG plots.
+
+pub mod plot;
+pub mod report;
+pub mod run;
+pub mod scenes;
+pub mod sweep;
+
+use std::path::Path;
+
+use crate::Error;
+pub use run::{BenchOptions, BenchResult, run};
+
+/// The files a bench run writes into its output folder.
+pub const OUTPUTS: &[&str] = &[
+    "bench.md",
+    "bench.csv",
+    "bench.json",
+    "time-vs-error.svg",
+    "tessellation-points.svg",
+];
+
+/// Runs the bench and writes [`OUTPUTS`] into `out` (created if missing). The folder
+/// is checked before anything is measured, so a bad path fails at once.
+pub fn run_to(options: &BenchOptions, out: &Path) -> Result<BenchResult, Error> {
+    let cannot =
+        |e: std::io::Error| Error::Output(format!("cannot write into '{}': {e}", out.display()));
+    std::fs::create_dir_all(out).map_err(cannot)?;
+    // Fails now, not after the run, where the folder is not writable.
+    let probe = out.join(".glyphscope-bench-probe");
+    std::fs::write(&probe, b"").map_err(cannot)?;
+    std::fs::remove_file(&probe).map_err(cannot)?;
+
+    let result = run(options)?;
+    let write = |name: &str, text: String| std::fs::write(out.join(name), text).map_err(cannot);
+    write("bench.md", report::markdown(&result))?;
+    write("bench.csv", report::csv(&result))?;
+    write("bench.json", report::json(&result))?;
+    plot::time_against_error(&result, &out.join("time-vs-error.svg"))?;
+    plot::points_against_error(&result, &out.join("tessellation-points.svg"))?;
+    Ok(result)
+}

@@ -1,0 +1,232 @@
+//! The bench's plots, as SVG (text is left to the viewer's fonts, so no font is
+//! embedded): GPU time against mean error per scene and view, with each method's
+//! Pareto front; and the tessellation's outline points against its error.
+
+use std::path::Path;
+
+use plotters::coord::ranged1d::ValueFormatter;
+use plotters::prelude::*;
+
+use super::run::{BenchResult, Case, View};
+use super::sweep::BENCH_METHODS;
+use crate::Error;
+
+/// Mean errors are drawn no lower than this (1/255): a log axis has no zero.
+const MAE_FLOOR: f64 = 0.01;
+
+/// Labels per axis: log axes offer one per grid line, which crowd into each other.
+const LABELS: usize = 6;
+
+/// One colour per benched method, in [`BENCH_METHODS`]' order.
+const COLOURS: [RGBColor; 5] = [
+    RGBColor(31, 119, 180),
+    RGBColor(44, 160, 44),
+    RGBColor(214, 39, 40),
+    RGBColor(148, 103, 189),
+    RGBColor(255, 127, 14),
+];
+
+fn colour(method: &str) -> RGBColor {
+    BENCH_METHODS
+        .iter()
+        .position(|m| *m == method)
+        .map_or(BLACK, |i| COLOURS[i % COLOURS.len()])
+}
+
+fn plot_error(e: impl std::fmt::Debug) -> Error {
+    Error::Output(format!("cannot draw the plot: {e:?}"))
+}
+
+/// Axes with their descriptions, mean error up the side, and only the major grid.
+fn draw_axes<'a, DB, X, Y>(
+    chart: &mut ChartContext<'a, DB, Cartesian2d<X, Y>>,
+    x_desc: &str,
+) -> Result<(), Error>
+where
+    DB: DrawingBackend + 'a,
+    X: Ranged<ValueType = f64> + ValueFormatter<f64>,
+    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .y_desc("mean error, 1/255")
+        .x_labels(LABELS)
+        .y_labels(LABELS)
+        .light_line_style(WHITE)
+        .draw()
+        .map_err(plot_error)
+}
+
+/// The series' labels, in a box at the lower left: fast and exact at once, the corner
+/// no method reaches.
+fn draw_legend<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
+    chart: &mut ChartContext<'a, DB, CT>,
+) -> Result<(), Error> {
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::LowerLeft)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()
+        .map_err(plot_error)
+}
+
+/// The points no other point beats on both time and error, by increasing time.
+pub fn pareto_front(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    let mut sorted = points.to_vec();
+    sorted.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    let mut front: Vec<(f64, f64)> = Vec::new();
+    for p in sorted {
+        if front.last().is_none_or(|last| p.1 < last.1) {
+            front.push(p);
+        }
+    }
+    front
+}
+
+/// (GPU ms, MAE) of a case, if it was timed on the GPU.
+fn time_and_error(case: &Case) -> Option<(f64, f64)> {
+    if case.method == "reference" {
+        return None;
+    }
+    Some((case.gpu_ms?, case.error.mae_255.max(MAE_FLOOR)))
+}
+
+/// Range of `values` widened by a margin on a log scale.
+fn log_range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
+    let (lo, hi) = values.fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
+        (lo.min(v), hi.max(v))
+    });
+    if lo.is_finite() && hi > 0.0 {
+        lo / 1.5..hi * 1.5
+    } else {
+        0.1..10.0
+    }
+}
+
+/// Time against mean error, one panel per scene and view.
+pub fn time_against_error(result: &BenchResult, path: &Path) -> Result<(), Error> {
+    let panels: Vec<_> = result
+        .scenes
+        .iter()
+        .filter(|s| {
+            result
+                .cases
+                .iter()
+                .any(|c| c.scene == s.name && c.view == s.view && time_and_error(c).is_some())
+        })
+        .collect();
+    let columns = 2;
+    let rows = panels.len().div_ceil(columns).max(1);
+    let root = SVGBackend::new(path, (1200, 420 * rows as u32)).into_drawing_area();
+    root.fill(&WHITE).map_err(plot_error)?;
+    for (area, info) in root.split_evenly((rows, columns)).iter().zip(&panels) {
+        let cases: Vec<&Case> = result
+            .cases
+            .iter()
+            .filter(|c| c.scene == info.name && c.view == info.view)
+            .collect();
+        let all: Vec<(f64, f64)> = cases.iter().filter_map(|c| time_and_error(c)).collect();
+        let caption = match info.view {
+            View::Own => info.name.clone(),
+            View::Moved => format!("{}, after caching (zoom 2.5×, 30°)", info.name),
+        };
+        let mut chart = ChartBuilder::on(area)
+            .caption(caption, ("sans-serif", 18))
+            .margin(12)
+            .x_label_area_size(36)
+            .y_label_area_size(52)
+            .build_cartesian_2d(
+                log_range(all.iter().map(|p| p.0)).log_scale(),
+                log_range(all.iter().map(|p| p.1)).log_scale(),
+            )
+            .map_err(plot_error)?;
+        draw_axes(
+            &mut chart,
+            &format!("GPU ms per frame ({})", result.adapter),
+        )?;
+        for method in BENCH_METHODS {
+            let points: Vec<(f64, f64)> = cases
+                .iter()
+                .filter(|c| c.method == *method)
+                .filter_map(|c| time_and_error(c))
+                .collect();
+            if points.is_empty() {
+                continue;
+            }
+            let c = colour(method);
+            chart
+                .draw_series(LineSeries::new(pareto_front(&points), c.stroke_width(2)))
+                .map_err(plot_error)?;
+            chart
+                .draw_series(points.iter().map(|&p| Circle::new(p, 4, c.filled())))
+                .map_err(plot_error)?
+                .label(*method)
+                .legend(move |(x, y)| Circle::new((x + 8, y), 4, c.filled()));
+        }
+        draw_legend(&mut chart)?;
+    }
+    root.present().map_err(plot_error)
+}
+
+/// The tessellation's outline points against its mean error, per scene and view.
+pub fn points_against_error(result: &BenchResult, path: &Path) -> Result<(), Error> {
+    let series: Vec<(String, Vec<(f64, f64)>)> = result
+        .scenes
+        .iter()
+        .map(|info| {
+            let points = result
+                .cases
+                .iter()
+                .filter(|c| c.scene == info.name && c.view == info.view)
+                .filter_map(|c| Some((c.mesh_points? as f64, c.error.mae_255.max(MAE_FLOOR))))
+                .collect();
+            let label = match info.view {
+                View::Own => info.name.clone(),
+                View::Moved => format!("{} (moved)", info.name),
+            };
+            (label, points)
+        })
+        .filter(|(_, p): &(String, Vec<(f64, f64)>)| !p.is_empty())
+        .collect();
+    let root = SVGBackend::new(path, (900, 560)).into_drawing_area();
+    root.fill(&WHITE).map_err(plot_error)?;
+    let all = || series.iter().flat_map(|(_, p)| p.iter().copied());
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            "tessellation: outline points against error",
+            ("sans-serif", 18),
+        )
+        .margin(12)
+        .x_label_area_size(36)
+        .y_label_area_size(52)
+        .build_cartesian_2d(
+            // Points from zero, linear: a few hundred to a few thousand.
+            0.0..all().map(|p| p.0).fold(1.0, f64::max) * 1.1,
+            log_range(all().map(|p| p.1)).log_scale(),
+        )
+        .map_err(plot_error)?;
+    draw_axes(&mut chart, "outline points tessellated")?;
+    for (i, (label, points)) in series.iter().enumerate() {
+        let c = Palette99::pick(i).to_rgba();
+        chart
+            .draw_series(points.iter().map(|&p| Cross::new(p, 5, c.stroke_width(2))))
+            .map_err(plot_error)?
+            .label(label.clone())
+            .legend(move |(x, y)| Cross::new((x + 8, y), 5, c.stroke_width(2)));
+    }
+    draw_legend(&mut chart)?;
+    root.present().map_err(plot_error)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pareto_front_keeps_only_unbeaten_points() {
+        let front = pareto_front(&[(3.0, 1.0), (1.0, 5.0), (2.0, 6.0), (2.5, 2.0), (4.0, 1.5)]);
+        assert_eq!(front, vec![(1.0, 5.0), (2.5, 2.0), (3.0, 1.0)]);
+    }
+}

@@ -1,0 +1,279 @@
+//! The bench's outputs as text: a Markdown report (a table per scene and view, and the
+//! fastest method at each error level), CSV, and JSON.
+
+use std::fmt::Write;
+
+use super::run::{BenchResult, Case, SceneInfo, View};
+
+/// Mean-error levels (1/255) at which the report names the fastest method.
+pub const ERROR_LEVELS: &[f64] = &[0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0];
+
+/// A case's GPU time over the atlas baseline's in the same scene and view.
+pub fn ratio_to_baseline(result: &BenchResult, case: &Case) -> Option<f64> {
+    if case.method == "reference" {
+        return None;
+    }
+    let baseline = result
+        .cases
+        .iter()
+        .find(|c| c.scene == case.scene && c.view == case.view && c.is_baseline())?;
+    Some(case.gpu_ms? / baseline.gpu_ms?)
+}
+
+/// The fastest GPU case of `cases` whose mean error is at most `level` (1/255).
+pub fn fastest_within<'a>(cases: &[&'a Case], level: f64) -> Option<&'a Case> {
+    cases
+        .iter()
+        .copied()
+        .filter(|c| c.method != "reference" && c.error.mae_255 <= level)
+        .filter(|c| c.gpu_ms.is_some())
+        .min_by(|a, b| {
+            a.gpu_ms
+                .unwrap_or(f64::INFINITY)
+                .total_cmp(&b.gpu_ms.unwrap_or(f64::INFINITY))
+        })
+}
+
+fn cases_of<'a>(result: &'a BenchResult, info: &SceneInfo) -> Vec<&'a Case> {
+    result
+        .cases
+        .iter()
+        .filter(|c| c.scene == info.name && c.view == info.view)
+        .collect()
+}
+
+pub fn markdown(result: &BenchResult) -> String {
+    let mut md = String::new();
+    let clock = result.gpu_clock.as_deref().unwrap_or("not measured");
+    let _ = writeln!(md, "# glyphscope bench\n");
+    let _ = writeln!(
+        md,
+        "Device: **{}**. GPU time per frame by {clock}: {} round{} interleaving the cases \
+         of a view, each preparing the method anew and timing {} frames after {} warm-up \
+         frames; the median of the rounds' medians{}, fastest–slowest frame of all in \
+         brackets. **× atlas** is that time over \
+         the atlas baseline's (`atlas` at its default, 4×4 sub-pixel phases, cached at the \
+         scene's own size) in the same scene and view of this run: compare methods by \
+         these ratios, not by absolute times, which belong to this device alone.\n",
+        result.adapter,
+        result.timing.rounds,
+        if result.timing.rounds == 1 { "" } else { "s" },
+        result.timing.per_round.frames,
+        result.timing.per_round.warmup,
+        if result.quick { " (`--quick`)" } else { "" },
+    );
+    let _ = writeln!(
+        md,
+        "Columns: *CPU prep*: the method's `prepare` (the reference: its rasterization); \
+         *GPU mem*: memory the method holds once it has drawn; *curves/px*: curves \
+         evaluated per covered pixel, mean (max), for methods with that notion; *points*: \
+         outline points tessellated; errors against the exact reference: *MAE* and *p99* \
+         of the absolute error in 1/255 over all pixels, *max* as coverage, *> 0.5*: \
+         pixels off by more than half.\n"
+    );
+    summary(result, &mut md);
+    for info in &result.scenes {
+        let cases = cases_of(result, info);
+        if cases.is_empty() {
+            continue;
+        }
+        let view = match info.view {
+            View::Own => String::new(),
+            View::Moved => format!(
+                ", after caching: zoomed {}×, turned {}°",
+                super::scenes::MOVED_ZOOM,
+                super::scenes::MOVED_ROTATION_DEG
+            ),
+        };
+        let _ = writeln!(md, "## {}{view}\n", info.name);
+        let _ = writeln!(
+            md,
+            "{}. {}×{} px, {} px/em, {} glyphs ({} distinct); the atlas caches at {} px/em.\n",
+            capitalized(&info.about),
+            info.width,
+            info.height,
+            info.size_px_per_em,
+            info.instances,
+            info.distinct_glyphs,
+            info.atlas_cache_px_per_em
+        );
+        md.push_str(
+            "| method | settings | GPU ms | × atlas | CPU prep ms | GPU mem | curves/px | points \
+             | MAE /255 | p99 /255 | max | > 0.5 |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+        );
+        for case in &cases {
+            let time = match (case.gpu_ms, case.gpu_ms_range) {
+                (Some(ms), Some((lo, hi))) => format!("{} ({}–{})", sig(ms), sig(lo), sig(hi)),
+                (Some(ms), None) => format!("{} (CPU)", sig(ms)),
+                _ => "—".into(),
+            };
+            let _ = writeln!(
+                md,
+                "| {} | {} | {time} | {} | {} | {} | {} | {} | {:.2} | {:.1} | {:.3} | {} |",
+                case.method,
+                case.settings(),
+                ratio_to_baseline(result, case).map_or("—".into(), |r| format!("{r:.2}")),
+                case.cpu_render_ms
+                    .map_or_else(|| sig(case.cpu_prepare_ms), sig),
+                bytes(case.gpu_bytes),
+                case.curves_per_pixel
+                    .map_or("—".into(), |c| format!("{:.1} ({})", c.mean, c.max)),
+                case.mesh_points.map_or("—".into(), |p| p.to_string()),
+                case.error.mae_255,
+                case.error.p99_255,
+                case.error.max,
+                case.error.pixels_over_05,
+            );
+        }
+        md.push_str("\nFastest at each error level:\n\n| MAE ≤ /255 | fastest | settings | GPU ms | × atlas |\n|---:|---|---|---:|---:|\n");
+        for &level in ERROR_LEVELS {
+            match fastest_within(&cases, level) {
+                Some(c) => {
+                    let _ = writeln!(
+                        md,
+                        "| {level} | {} | {} | {} | {} |",
+                        c.method,
+                        c.settings(),
+                        c.gpu_ms.map_or("—".into(), sig),
+                        ratio_to_baseline(result, c).map_or("—".into(), |r| format!("{r:.2}"))
+                    );
+                }
+                None => {
+                    let _ = writeln!(md, "| {level} | none | | | |");
+                }
+            }
+        }
+        md.push('\n');
+    }
+    md
+}
+
+/// One line per scene and view: the baseline's error, the most accurate method, and
+/// the fastest within two error levels.
+fn summary(result: &BenchResult, md: &mut String) {
+    const LEVELS: [f64; 2] = [0.5, 1.0];
+    md.push_str(
+        "## Summary\n\nPer scene and view (*moved*: after caching, zoomed and turned): the \
+         atlas baseline's error, the most accurate GPU case, and the fastest case within a \
+         mean error of 0.5/255 and 1/255, with its time over the atlas's.\n\n\
+         | scene | view | atlas MAE /255 (max) | most accurate | fastest, MAE ≤ 0.5 | fastest, MAE ≤ 1 |\n\
+         |---|---|---:|---|---|---|\n",
+    );
+    let named = |c: &Case| format!("{} {}", c.method, c.settings()).replace(" default", "");
+    for info in &result.scenes {
+        let cases = cases_of(result, info);
+        let gpu: Vec<&Case> = cases
+            .iter()
+            .copied()
+            .filter(|c| c.method != "reference")
+            .collect();
+        if gpu.is_empty() {
+            continue;
+        }
+        let baseline = cases
+            .iter()
+            .find(|c| c.is_baseline())
+            .map_or("—".into(), |c| {
+                format!("{:.2} ({:.2})", c.error.mae_255, c.error.max)
+            });
+        let best = gpu
+            .iter()
+            .min_by(|a, b| a.error.mae_255.total_cmp(&b.error.mae_255))
+            .map_or("—".into(), |c| {
+                format!("{} ({:.2})", named(c), c.error.mae_255)
+            });
+        let fastest = LEVELS.map(|level| {
+            fastest_within(&cases, level).map_or("none".into(), |c| {
+                let ratio =
+                    ratio_to_baseline(result, c).map_or("—".into(), |r| format!("{r:.2}"));
+                format!("{} ({ratio}×)", named(c))
+            })
+        });
+        let view = match info.view {
+            View::Own => "own",
+            View::Moved => "moved",
+        };
+        let _ = writeln!(
+            md,
+            "| {} | {view} | {baseline} | {best} | {} | {} |",
+            info.name, fastest[0], fastest[1]
+        );
+    }
+    md.push('\n');
+}
+
+/// One line per case; `settings` quoted, since it holds commas.
+pub fn csv(result: &BenchResult) -> String {
+    let mut out = String::from(
+        "scene,view,method,settings,gpu_ms,gpu_ms_min,gpu_ms_max,ratio_to_atlas,cpu_prepare_ms,\
+         cpu_render_ms,mesh_build_ms,gpu_bytes,curves_per_pixel_mean,curves_per_pixel_max,\
+         mesh_points,mae_255,p99_255,rmse_255,max,pixels_over_025,pixels_over_05,pixels\n",
+    );
+    let opt = |v: Option<f64>| v.map_or(String::new(), |v| v.to_string());
+    for c in &result.cases {
+        let e = &c.error;
+        let _ = writeln!(
+            out,
+            "{},{},{},\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            c.scene,
+            serde_json::to_value(c.view)
+                .expect("a view serializes")
+                .as_str()
+                .unwrap_or(""),
+            c.method,
+            c.settings(),
+            opt(c.gpu_ms),
+            opt(c.gpu_ms_range.map(|r| r.0)),
+            opt(c.gpu_ms_range.map(|r| r.1)),
+            opt(ratio_to_baseline(result, c)),
+            c.cpu_prepare_ms,
+            opt(c.cpu_render_ms),
+            opt(c.mesh_build_ms),
+            c.gpu_bytes,
+            opt(c.curves_per_pixel.map(|p| p.mean)),
+            c.curves_per_pixel
+                .map_or(String::new(), |p| p.max.to_string()),
+            c.mesh_points.map_or(String::new(), |p| p.to_string()),
+            e.mae_255,
+            e.p99_255,
+            e.rmse_255,
+            e.max,
+            e.pixels_over_025,
+            e.pixels_over_05,
+            e.pixels,
+        );
+    }
+    out
+}
+
+pub fn json(result: &BenchResult) -> String {
+    serde_json::to_string_pretty(result).expect("bench results serialize") + "\n"
+}
+
+/// Three significant digits (at least one decimal below 100).
+fn sig(v: f64) -> String {
+    if v >= 100.0 {
+        format!("{v:.0}")
+    } else if v >= 10.0 {
+        format!("{v:.1}")
+    } else if v >= 1.0 {
+        format!("{v:.2}")
+    } else {
+        format!("{v:.3}")
+    }
+}
+
+fn bytes(b: u64) -> String {
+    match b {
+        0 => "—".into(),
+        b if b >= 1 << 20 => format!("{:.1} MB", b as f64 / f64::from(1 << 20)),
+        b => format!("{:.0} kB", b as f64 / 1024.0),
+    }
+}
+
+fn capitalized(s: &str) -> String {
+    let mut chars = s.chars();
+    chars
+        .next()
+        .map_or(String::new(), |c| c.to_uppercase().chain(chars).collect())
+}

@@ -1,0 +1,479 @@
+//! Measuring: every case through `cli::measure`, the function `render --stats` uses, with
+//! the reference rasterized once per scene and view and shared by every case.
+
+use indicatif::{ProgressBar, ProgressStyle};
+use serde::Serialize;
+
+use super::scenes::{self, BenchScene};
+use super::sweep::{self, BENCH_METHODS};
+use crate::Error;
+use crate::camera::Camera;
+use crate::cli::{self, FrameTiming, Measured, RenderArgs};
+use crate::gpu::GpuContext;
+use crate::methods::{self, atlas};
+use crate::metrics::{self, ErrorStats};
+use crate::scene::Scene;
+
+/// How each case is timed: in `rounds` that interleave a view's cases, each round
+/// preparing the method anew and timing `per_round` frames after its warm-up. On a
+/// shared machine load comes and goes; interleaved, it falls on every method alike
+/// rather than on whichever ran at the time, and the median of the rounds' medians
+/// drops a round that a burst of load spoiled.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct Rounds {
+    pub rounds: usize,
+    pub per_round: FrameTiming,
+}
+
+/// The full run: 3 rounds of 7 frames (21 in all, as `render --stats` times).
+pub const FULL_ROUNDS: Rounds = Rounds {
+    rounds: 3,
+    per_round: FrameTiming {
+        warmup: 3,
+        frames: 7,
+    },
+};
+
+/// `--quick`: one round of a few frames after a short warm-up.
+pub const QUICK_ROUNDS: Rounds = Rounds {
+    rounds: 1,
+    per_round: FrameTiming {
+        warmup: 1,
+        frames: 3,
+    },
+};
+
+/// What to measure.
+#[derive(Clone, Debug)]
+pub struct BenchOptions {
+    pub quick: bool,
+    /// Scene names; empty for all.
+    pub scenes: Vec<String>,
+    /// Method names (of [`BENCH_METHODS`] and `reference`); empty for all.
+    pub methods: Vec<String>,
+    /// Timed frames per case, over all rounds, overriding the default (21, or 3 with
+    /// `quick`).
+    pub frames: Option<usize>,
+}
+
+/// Which view of a scene a case was measured in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum View {
+    /// The scene's own camera; the atlas is cached at this size.
+    Own,
+    /// After caching: zoomed 2.5× and turned 30°; the atlas keeps the cache made for
+    /// the scene's own size.
+    Moved,
+}
+
+/// One scene in one view.
+#[derive(Clone, Debug, Serialize)]
+pub struct SceneInfo {
+    pub name: String,
+    pub view: View,
+    pub about: String,
+    pub width: u32,
+    pub height: u32,
+    pub size_px_per_em: f64,
+    pub instances: usize,
+    pub distinct_glyphs: usize,
+    /// The size the atlas caches glyphs at for this scene (both views).
+    pub atlas_cache_px_per_em: f64,
+    /// The `render` arguments of the view (without --method and --param).
+    pub render_args: Vec<String>,
+}
+
+/// One method at one setting in one view of one scene.
+#[derive(Clone, Debug, Serialize)]
+pub struct Case {
+    pub scene: String,
+    pub view: View,
+    pub method: String,
+    pub params: Vec<(String, String)>,
+    /// Median GPU time of a frame (the reference: its CPU time), ms.
+    pub gpu_ms: Option<f64>,
+    /// Fastest and slowest timed frame, ms.
+    pub gpu_ms_range: Option<(f64, f64)>,
+    /// How the frames were timed (None for the reference).
+    pub gpu_clock: Option<String>,
+    /// The method's `prepare`, ms (the reference: 0).
+    pub cpu_prepare_ms: f64,
+    /// The reference's rasterization, ms.
+    pub cpu_render_ms: Option<f64>,
+    /// Meshes built on the CPU (tessellation), ms, whenever they were built.
+    pub mesh_build_ms: Option<f64>,
+    pub gpu_bytes: u64,
+    pub curves_per_pixel: Option<methods::CurveCost>,
+    /// Outline points the meshes are built on (tessellation).
+    pub mesh_points: Option<usize>,
+    pub error: ErrorStats,
+}
+
+impl Case {
+    /// `k=v, k=v`, or `default`.
+    pub fn settings(&self) -> String {
+        let shown: Vec<String> = self
+            .params
+            .iter()
+            .filter(|(k, _)| k != "cache_px_per_em")
+            .map(|(k, v)| format!("{k}={v}"))
+            .collect();
+        if shown.is_empty() {
+            "default".into()
+        } else {
+            shown.join(", ")
+        }
+    }
+
+    /// Whether this is the baseline every time is divided by.
+    pub fn is_baseline(&self) -> bool {
+        self.method == sweep::BASELINE.0 && self.settings() == "default"
+    }
+}
+
+/// One view of a scene, ready to measure methods in: its reference drawn once.
+struct ViewUnderTest<'a> {
+    scene_name: &'a str,
+    view: View,
+    scene: Scene,
+    camera: Camera,
+    reference: Measured,
+}
+
+impl ViewUnderTest<'_> {
+    /// Measures `method` with `params` here, its error against the reference.
+    fn measure(
+        &self,
+        gpu: &GpuContext,
+        method: &str,
+        params: Vec<(String, String)>,
+        timing: FrameTiming,
+    ) -> Result<Case, Error> {
+        let reference = &self.reference;
+        let (stats, error) = if method == "reference" {
+            let exact = metrics::compare(&reference.image, &reference.image)?;
+            (reference.stats.clone(), exact)
+        } else {
+            let (scene, camera) = (&self.scene, &self.camera);
+            let measured = cli::measure(Some(gpu), scene, camera, method, &params, timing)?;
+            let error = metrics::compare(&measured.image, &reference.image)?;
+            (measured.stats, error)
+        };
+        Ok(Case {
+            scene: self.scene_name.to_owned(),
+            view: self.view,
+            method: method.to_owned(),
+            params,
+            gpu_ms: stats.gpu_ms.or(stats.cpu_render_ms),
+            gpu_ms_range: stats.gpu_ms_range,
+            gpu_clock: stats.gpu_clock,
+            cpu_prepare_ms: stats.cpu_prepare_ms,
+            cpu_render_ms: stats.cpu_render_ms,
+            mesh_build_ms: stats.mesh.as_ref().map(|m| m.cpu_build_ms),
+            gpu_bytes: stats.gpu_bytes,
+            curves_per_pixel: stats.curves_per_pixel,
+            mesh_points: stats.mesh.as_ref().map(|m| m.points),
+            error,
+        })
+    }
+}
+
+/// Everything one run measured.
+#[derive(Clone, Debug, Serialize)]
+pub struct BenchResult {
+    pub adapter: String,
+    /// How GPU time was measured (timestamp queries, or the CPU clock).
+    pub gpu_clock: Option<String>,
+    pub quick: bool,
+    pub timing: Rounds,
+    pub scenes: Vec<SceneInfo>,
+    pub cases: Vec<Case>,
+}
+
+/// `names` in order, each once: a name given twice is measured once.
+fn distinct<T: PartialEq>(names: &[T]) -> Vec<&T> {
+    let mut once: Vec<&T> = Vec::with_capacity(names.len());
+    for name in names {
+        if !once.contains(&name) {
+            once.push(name);
+        }
+    }
+    once
+}
+
+/// Checks the options, naming what is unknown.
+fn check(options: &BenchOptions) -> Result<(Vec<BenchScene>, Vec<String>), Error> {
+    let names: Vec<&str> = if options.scenes.is_empty() {
+        scenes::SCENE_NAMES.to_vec()
+    } else {
+        distinct(&options.scenes)
+            .into_iter()
+            .map(String::as_str)
+            .collect()
+    };
+    let chosen = names
+        .into_iter()
+        .map(scenes::scene)
+        .collect::<Result<Vec<_>, _>>()?;
+    let methods: Vec<String> = if options.methods.is_empty() {
+        std::iter::once("reference")
+            .chain(BENCH_METHODS.iter().copied())
+            .map(String::from)
+            .collect()
+    } else {
+        options.methods.clone()
+    };
+    for method in &methods {
+        if method != "reference" && !BENCH_METHODS.contains(&method.as_str()) {
+            return Err(Error::Input(format!(
+                "the bench has no method '{method}'; choose from: reference, {}",
+                BENCH_METHODS.join(", ")
+            )));
+        }
+    }
+    let methods: Vec<String> = distinct(&methods).into_iter().cloned().collect();
+    if options.frames == Some(0) {
+        return Err(Error::Input("--frames must be at least 1".into()));
+    }
+    Ok((chosen, methods))
+}
+
+/// The settings measured in `view`: every setting in the scene's own view; after
+/// caching, the atlas's settings and each other method's default (how they fare under
+/// the same zoom and turn) — with `quick`, only `winding`'s, the contrast.
+fn settings_for(
+    method: &str,
+    view: View,
+    quick: bool,
+    cache_px_per_em: f64,
+) -> Vec<Vec<(String, String)>> {
+    if method == "reference" {
+        return vec![Vec::new()];
+    }
+    let mut all = sweep::sweep(method, quick);
+    if view == View::Moved && method != "atlas" {
+        let kept = if quick && method != "winding" { 0 } else { 1 };
+        all.truncate(kept);
+    }
+    if method == "atlas" {
+        for params in &mut all {
+            params.push(("cache_px_per_em".into(), cache_px_per_em.to_string()));
+        }
+    }
+    all
+}
+
+/// Runs the bench, showing progress on stderr when it is a terminal.
+pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
+    let (chosen, methods) = check(options)?;
+    let base = if options.quick {
+        QUICK_ROUNDS
+    } else {
+        FULL_ROUNDS
+    };
+    let timing = match options.frames {
+        Some(frames) => Rounds {
+            per_round: FrameTiming {
+                frames: frames.div_ceil(base.rounds),
+                ..base.per_round
+            },
+            ..base
+        },
+        None => base,
+    };
+    let gpu = GpuContext::new()?;
+    let per_view = |view| -> usize {
+        methods
+            .iter()
+            .map(|m| settings_for(m, view, options.quick, 0.0).len())
+            .sum()
+    };
+    let total = chosen.len() * (per_view(View::Own) + per_view(View::Moved)) * timing.rounds;
+    // Hidden by indicatif itself when stderr is not a terminal.
+    let progress = ProgressBar::new(total as u64).with_style(
+        ProgressStyle::with_template("{elapsed_precise} {wide_bar} {pos}/{len} {msg}")
+            .expect("a valid template"),
+    );
+    let mut result = BenchResult {
+        adapter: gpu.adapter_name(),
+        gpu_clock: None,
+        quick: options.quick,
+        timing,
+        scenes: Vec::new(),
+        cases: Vec::new(),
+    };
+    for bench_scene in &chosen {
+        let (_, own_camera) = cli::scene_and_camera(&bench_scene.args)?;
+        let cache = atlas::auto_cache_size(own_camera.size_px_per_em);
+        for view in [View::Own, View::Moved] {
+            let args = match view {
+                View::Own => bench_scene.args.clone(),
+                View::Moved => scenes::moved_args(&bench_scene.args, &own_camera),
+            };
+            let (scene, camera) = cli::scene_and_camera(&args)?;
+            progress.set_message(format!("{} ({view:?}): reference", bench_scene.name));
+            let reference =
+                cli::measure(None, &scene, &camera, "reference", &[], timing.per_round)?;
+            result.scenes.push(SceneInfo {
+                name: bench_scene.name.into(),
+                view,
+                about: bench_scene.about.into(),
+                width: camera.width,
+                height: camera.height,
+                size_px_per_em: camera.size_px_per_em,
+                instances: scene.instances.len(),
+                distinct_glyphs: scene.glyphs.len(),
+                atlas_cache_px_per_em: cache,
+                render_args: render_command(&args),
+            });
+            let here = ViewUnderTest {
+                scene_name: bench_scene.name,
+                view,
+                scene,
+                camera,
+                reference,
+            };
+            let plan: Vec<(&String, Vec<(String, String)>)> = methods
+                .iter()
+                .flat_map(|m| {
+                    settings_for(m, view, options.quick, cache)
+                        .into_iter()
+                        .map(move |p| (m, p))
+                })
+                .collect();
+            let mut rounds = Vec::with_capacity(timing.rounds);
+            for _ in 0..timing.rounds {
+                let mut round = Vec::with_capacity(plan.len());
+                for (method, params) in &plan {
+                    let settings: Vec<String> =
+                        params.iter().map(|(k, v)| format!("{k}={v}")).collect();
+                    progress.set_message(format!(
+                        "{} ({view:?}): {method} {}",
+                        bench_scene.name,
+                        settings.join(" ")
+                    ));
+                    round.push(here.measure(&gpu, method, params.clone(), timing.per_round)?);
+                    progress.inc(1);
+                }
+                rounds.push(round);
+            }
+            for case in combine_rounds(rounds) {
+                if result.gpu_clock.is_none() {
+                    result.gpu_clock.clone_from(&case.gpu_clock);
+                }
+                result.cases.push(case);
+            }
+        }
+    }
+    progress.finish_and_clear();
+    Ok(result)
+}
+
+/// Each case's figures over the rounds it was timed in: the median of the rounds'
+/// median GPU and preparation times, the fastest and slowest frame of all; the image
+/// (and so the error) is the same every round.
+fn combine_rounds(rounds: Vec<Vec<Case>>) -> Vec<Case> {
+    let mut rounds = rounds.into_iter();
+    let Some(first) = rounds.next() else {
+        return Vec::new();
+    };
+    let rest: Vec<Vec<Case>> = rounds.collect();
+    first
+        .into_iter()
+        .enumerate()
+        .map(|(i, case)| {
+            let all: Vec<&Case> = std::iter::once(&case)
+                .chain(rest.iter().map(|r| &r[i]))
+                .collect();
+            let gpu_ms = median(all.iter().filter_map(|c| c.gpu_ms));
+            let cpu_prepare_ms = median(all.iter().map(|c| c.cpu_prepare_ms)).unwrap_or(0.0);
+            let ranges = all.iter().filter_map(|c| c.gpu_ms_range);
+            let gpu_ms_range = ranges.reduce(|a, b| (a.0.min(b.0), a.1.max(b.1)));
+            Case {
+                gpu_ms,
+                gpu_ms_range,
+                cpu_prepare_ms,
+                ..case.clone()
+            }
+        })
+        .collect()
+}
+
+/// The middle value (the upper one of an even count).
+fn median(values: impl Iterator<Item = f64>) -> Option<f64> {
+    let mut v: Vec<f64> = values.collect();
+    v.sort_by(f64::total_cmp);
+    v.get(v.len() / 2).copied()
+}
+
+/// The `render` arguments that draw a view (add `--method` and `--param`s).
+fn render_command(args: &RenderArgs) -> Vec<String> {
+    let mut out = Vec::new();
+    if let Some(font) = &args.font {
+        out.extend(["--font".into(), font.display().to_string()]);
+    }
+    if let Some(text) = &args.text {
+        out.extend(["--text".into(), text.clone()]);
+    }
+    out.extend(["--size".into(), args.size.to_string()]);
+    let pair = |v: glam::DVec2| format!("{},{}", v.x, v.y);
+    if let (Some(w), Some(h)) = (args.width, args.height) {
+        out.extend([
+            "--width".into(),
+            w.to_string(),
+            "--height".into(),
+            h.to_string(),
+        ]);
+    }
+    if let Some(origin) = args.origin {
+        out.extend(["--origin".into(), pair(origin)]);
+    }
+    if let Some(m) = args.matrix {
+        out.extend(["--matrix".into(), m.map(|v| v.to_string()).join(",")]);
+    }
+    if args.tilt != 0.0 {
+        out.extend(["--tilt".into(), args.tilt.to_string()]);
+    }
+    for (tag, value) in &args.variation {
+        out.extend(["--variation".into(), format!("{tag}={value}")]);
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn timed(gpu_ms: f64, range: (f64, f64), cpu_prepare_ms: f64) -> Case {
+        Case {
+            scene: "page".into(),
+            view: View::Own,
+            method: "winding".into(),
+            params: Vec::new(),
+            gpu_ms: Some(gpu_ms),
+            gpu_ms_range: Some(range),
+            gpu_clock: None,
+            cpu_prepare_ms,
+            cpu_render_ms: None,
+            mesh_build_ms: None,
+            gpu_bytes: 1,
+            curves_per_pixel: None,
+            mesh_points: None,
+            error: ErrorStats::default(),
+        }
+    }
+
+    #[test]
+    fn rounds_combine_into_medians_and_the_full_range() {
+        let combined = combine_rounds(vec![
+            vec![timed(10.0, (9.0, 12.0), 3.0)],
+            vec![timed(30.0, (25.0, 40.0), 1.0)],
+            vec![timed(11.0, (8.0, 11.5), 2.0)],
+        ]);
+        assert_eq!(combined.len(), 1);
+        assert_eq!(combined[0].gpu_ms, Some(11.0), "a spoiled round is dropped");
+        assert_eq!(combined[0].gpu_ms_range, Some((8.0, 40.0)));
+        assert_eq!(combined[0].cpu_prepare_ms, 2.0);
+    }
+}

@@ -1,0 +1,514 @@
+//! `atlas`: the baseline users would otherwise pick, and the speed floor — each
+//! distinct glyph rasterized once on the CPU at a cached size, packed into one texture,
+//! drawn as one bilinearly filtered quad per instance (`shaders/atlas.wgsl`).
+//!
+//! The bitmaps are exact: the project's reference rasterizer makes them. So the atlas's
+//! error is only what caching costs: at the cached size, where a pen lands between the
+//! phases it was cached at (a shift of up to 1/(2N) px with N phases, 1/2 px when
+//! snapped to whole pixels); once the camera zooms or rotates, resampling a bitmap made
+//! for another grid. That second error is why glyphs are drawn from outlines at all.
+//!
+//! Placement: like the text renderers that keep sub-pixel variants (Skia keeps 4 in x),
+//! each glyph is cached at N × N phases (N = `subpixel`, default 4, in x and y alike,
+//! because the bench's pages do not put baselines on whole pixels either) and each
+//! instance's pen snaps to the nearest 1/N px; `subpixel=1` is the classic whole-pixel
+//! atlas; `subpixel=off` resamples the phase-0 bitmap at the exact position.
+
+use glam::DVec2;
+
+use super::instances::Instances;
+use super::{Method, ParamSpec, Params, param, reject_unknown_params};
+use crate::Error;
+use crate::camera::Camera;
+use crate::gpu::{self, CoverageTarget, GpuContext};
+use crate::reference;
+use crate::scene::{Instance, Scene};
+
+pub const NAME: &str = "atlas";
+
+/// Caching never goes above this size by itself: a glyph at 20 000 px/em would need a
+/// bitmap of hundreds of megabytes. Beyond it the atlas magnifies, as real ones do.
+pub const AUTO_CACHE_MAX_PX_PER_EM: f64 = 512.0;
+/// The largest size `cache_px_per_em` takes.
+const MAX_CACHE_PX_PER_EM: u32 = 4096;
+/// Zero texels around each bitmap: bilinear taps at its edge read zero, never a
+/// neighbour.
+const PAD_TEXELS: i64 = 1;
+
+pub const PARAMS: &[ParamSpec] = &[
+    ParamSpec {
+        key: "subpixel",
+        choices: &["4", "1", "2", "off"],
+        range: None,
+        help: "Sub-pixel phases per axis: each glyph cached N×N times, pens snapped to the \
+               nearest 1/N px. 1: whole pixels (classic atlas); off: the exact position, \
+               resampled. N² times the CPU rasterization and atlas memory.",
+    },
+    ParamSpec {
+        key: "cache_px_per_em",
+        choices: &["auto"],
+        range: Some((1, MAX_CACHE_PX_PER_EM)),
+        help: "The size glyphs are cached at; auto: the first frame's size (at most 512 \
+               px/em). Drawn at any other size, the bitmaps are resampled.",
+    },
+];
+
+/// What the parameters choose.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    /// Phases per axis; 0 for no snapping.
+    pub phases: u32,
+    /// None: the first frame's size, capped at [`AUTO_CACHE_MAX_PX_PER_EM`].
+    pub cache_px_per_em: Option<f64>,
+}
+
+impl Settings {
+    pub fn from_params(params: &Params) -> Result<Settings, Error> {
+        let keys: Vec<&str> = PARAMS.iter().map(|p| p.key).collect();
+        reject_unknown_params(NAME, params, &keys)?;
+        let phases = match param(params, "subpixel") {
+            None | Some("4") => 4,
+            Some("1") => 1,
+            Some("2") => 2,
+            Some("off") => 0,
+            Some(v) => {
+                return Err(Error::Input(format!(
+                    "atlas: subpixel={v} is not one of 1, 2, 4, off"
+                )));
+            }
+        };
+        let cache_px_per_em = match param(params, "cache_px_per_em") {
+            None | Some("auto") => None,
+            Some(v) => match v.parse::<f64>() {
+                Ok(size) if (1.0..=f64::from(MAX_CACHE_PX_PER_EM)).contains(&size) => Some(size),
+                _ => {
+                    return Err(Error::Input(format!(
+                        "atlas: cache_px_per_em={v} is not auto or a size from 1 to \
+                         {MAX_CACHE_PX_PER_EM} px/em"
+                    )));
+                }
+            },
+        };
+        Ok(Settings {
+            phases,
+            cache_px_per_em,
+        })
+    }
+}
+
+/// The size `cache_px_per_em=auto` caches at for a first frame at `px_per_em`.
+pub fn auto_cache_size(px_per_em: f64) -> f64 {
+    px_per_em.min(AUTO_CACHE_MAX_PX_PER_EM)
+}
+
+pub struct Atlas {
+    settings: Settings,
+    pipeline: Option<Pipeline>,
+    prepared: Option<Prepared>,
+}
+
+struct Pipeline {
+    layout: wgpu::BindGroupLayout,
+    pipeline: wgpu::RenderPipeline,
+    sampler: wgpu::Sampler,
+}
+
+struct Prepared {
+    scene: Scene,
+    instances: Instances,
+    /// Built for the first frame when the cache size is automatic.
+    cache: Option<Cache>,
+}
+
+/// The atlas on the GPU.
+struct Cache {
+    px_per_em: f64,
+    bind_group: wgpu::BindGroup,
+    bytes: u64,
+}
+
+/// `Entry` in `atlas.wgsl`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
+struct GpuEntry {
+    quad: [f32; 4],
+    origin: [f32; 2],
+    texels_per_unit: f32,
+    _pad: f32,
+    texels: [f32; 4],
+}
+
+/// One glyph's coverage at one phase, 8 bits a texel.
+struct Bitmap {
+    width: u32,
+    height: u32,
+    coverage: Vec<u8>,
+    /// Where the glyph's local origin lies in the bitmap, pixels, y down.
+    origin: DVec2,
+}
+
+impl Atlas {
+    pub fn new(params: &Params) -> Result<Atlas, Error> {
+        Ok(Atlas {
+            settings: Settings::from_params(params)?,
+            pipeline: None,
+            prepared: None,
+        })
+    }
+
+    pub fn settings(&self) -> Settings {
+        self.settings
+    }
+
+    /// The size the glyphs are cached at, once they are.
+    pub fn cached_px_per_em(&self) -> Option<f64> {
+        self.prepared
+            .as_ref()
+            .and_then(|p| p.cache.as_ref())
+            .map(|c| c.px_per_em)
+    }
+
+    fn pipeline(&mut self, gpu: &GpuContext) -> &Pipeline {
+        let phases = self.settings.phases;
+        self.pipeline.get_or_insert_with(|| {
+            let device = &gpu.device;
+            let buffer = gpu::buffer_entry;
+            let storage = wgpu::BufferBindingType::Storage { read_only: true };
+            let (vertex, fragment) = (wgpu::ShaderStages::VERTEX, wgpu::ShaderStages::FRAGMENT);
+            let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                label: Some(NAME),
+                entries: &[
+                    buffer(0, vertex, wgpu::BufferBindingType::Uniform),
+                    buffer(1, vertex, storage),
+                    buffer(2, vertex | fragment, storage),
+                    wgpu::BindGroupLayoutEntry {
+                        binding: 3,
+                        visibility: fragment,
+                        ty: wgpu::BindingType::Texture {
+                            sample_type: wgpu::TextureSampleType::Float { filterable: true },
+                            view_dimension: wgpu::TextureViewDimension::D2,
+                            multisampled: false,
+                        },
+                        count: None,
+                    },
+                    wgpu::BindGroupLayoutEntry {
+                        binding: 4,
+                        visibility: fragment,
+                        ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+                        count: None,
+                    },
+                ],
+            });
+            let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+                label: Some(NAME),
+                bind_group_layouts: &[Some(&layout)],
+                immediate_size: 0,
+            });
+            let module = gpu::shaders::create_module(device, "atlas.wgsl");
+            let pipeline = CoverageTarget::quad_pipeline(
+                device,
+                NAME,
+                &pipeline_layout,
+                &module,
+                &[("PHASES", f64::from(phases))],
+                &[],
+            );
+            let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+                label: Some(NAME),
+                mag_filter: wgpu::FilterMode::Linear,
+                min_filter: wgpu::FilterMode::Linear,
+                ..Default::default()
+            });
+            Pipeline {
+                layout,
+                pipeline,
+                sampler,
+            }
+        })
+    }
+
+    /// Rasterizes, packs and uploads every glyph of the prepared scene at `px_per_em`.
+    fn build_cache(&mut self, gpu: &GpuContext, px_per_em: f64) -> Result<(), Error> {
+        let phases = self.settings.phases;
+        self.pipeline(gpu);
+        let (Some(pipeline), Some(prepared)) = (&self.pipeline, &mut self.prepared) else {
+            return Err(super::not_prepared(NAME));
+        };
+        let bitmaps = rasterize_glyphs(&prepared.scene, px_per_em, phases)?;
+        let packed = pack(&bitmaps, gpu.max_texture_side()).ok_or_else(|| {
+            Error::Input(format!(
+                "atlas: the glyphs at {px_per_em} px/em with subpixel={phases} do not fit in \
+                 one {0}×{0} texture; cache smaller (cache_px_per_em) or with fewer phases",
+                gpu.max_texture_side()
+            ))
+        })?;
+        let texels_per_unit = px_per_em / prepared.scene.units_per_em;
+        let entries: Vec<GpuEntry> = bitmaps
+            .iter()
+            .zip(&packed.corners)
+            .map(|(b, &(x, y))| entry(b, x, y, texels_per_unit))
+            .collect();
+        let cache = gpu.catching_errors("building the atlas", || {
+            // One byte a texel: coverage is all an atlas of grey glyphs holds, 8 bits are
+            // what every atlas stores (within 1/510 of the exact value), and R8Unorm is
+            // filterable on every device.
+            let size = wgpu::Extent3d {
+                width: packed.width,
+                height: packed.height,
+                depth_or_array_layers: 1,
+            };
+            let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
+                label: Some("atlas"),
+                size,
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format: wgpu::TextureFormat::R8Unorm,
+                usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+                view_formats: &[],
+            });
+            gpu.queue.write_texture(
+                texture.as_image_copy(),
+                &packed.texels,
+                wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(packed.width),
+                    rows_per_image: None,
+                },
+                size,
+            );
+            let entry_buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("atlas entries"),
+                size: (entries.len().max(1) * size_of::<GpuEntry>()) as u64,
+                usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            gpu.queue
+                .write_buffer(&entry_buffer, 0, bytemuck::cast_slice(&entries));
+            let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
+            let buffers = [
+                prepared.instances.frame(),
+                prepared.instances.buffer(),
+                &entry_buffer,
+            ];
+            let mut bound: Vec<wgpu::BindGroupEntry> = (0u32..)
+                .zip(buffers)
+                .map(|(binding, buffer)| wgpu::BindGroupEntry {
+                    binding,
+                    resource: buffer.as_entire_binding(),
+                })
+                .collect();
+            bound.push(wgpu::BindGroupEntry {
+                binding: 3,
+                resource: wgpu::BindingResource::TextureView(&view),
+            });
+            bound.push(wgpu::BindGroupEntry {
+                binding: 4,
+                resource: wgpu::BindingResource::Sampler(&pipeline.sampler),
+            });
+            let bind_group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some(NAME),
+                layout: &pipeline.layout,
+                entries: &bound,
+            });
+            Ok(Cache {
+                px_per_em,
+                bind_group,
+                bytes: prepared.instances.bytes()
+                    + entry_buffer.size()
+                    + u64::from(packed.width) * u64::from(packed.height),
+            })
+        })?;
+        prepared.cache = Some(cache);
+        Ok(())
+    }
+}
+
+/// Every glyph of `scene` at `px_per_em`, `phases` × `phases` times (once for 0), in
+/// the order the shader indexes them: glyph, then phase row, then phase column.
+fn rasterize_glyphs(scene: &Scene, px_per_em: f64, phases: u32) -> Result<Vec<Bitmap>, Error> {
+    let steps = phases.max(1);
+    let mut bitmaps = Vec::with_capacity(scene.glyphs.len() * (steps * steps) as usize);
+    for glyph in &scene.glyphs {
+        let alone = Scene {
+            units_per_em: scene.units_per_em,
+            glyphs: vec![glyph.clone()],
+            instances: vec![Instance {
+                glyph: 0,
+                position: DVec2::ZERO,
+            }],
+        };
+        let s = px_per_em / scene.units_per_em;
+        let (left, right) = (glyph.bounds.min.x * s, glyph.bounds.max.x * s);
+        let (bottom, top) = (glyph.bounds.min.y * s, glyph.bounds.max.y * s);
+        // Whole pixels around the ink, the padding, and one more for the phase shift.
+        let width = right.ceil() - left.floor() + (2 * PAD_TEXELS + 1) as f64;
+        let height = top.ceil() - bottom.floor() + (2 * PAD_TEXELS + 1) as f64;
+        let side = f64::from(crate::camera::MAX_IMAGE_SIDE);
+        if width > side || height > side {
+            return Err(Error::Input(format!(
+                "atlas: glyph {} at {px_per_em} px/em needs a {width}×{height} bitmap, over \
+                 {side} a side; cache smaller (cache_px_per_em)",
+                glyph.id
+            )));
+        }
+        for row in 0..steps {
+            for column in 0..steps {
+                let phase = DVec2::new(f64::from(column), f64::from(row)) / f64::from(steps);
+                let origin = DVec2::new(
+                    PAD_TEXELS as f64 - left.floor(),
+                    PAD_TEXELS as f64 + top.ceil(),
+                ) + phase;
+                let camera = Camera::new(width as u32, height as u32, px_per_em, origin);
+                let image = reference::rasterize(&alone, &camera)?;
+                bitmaps.push(Bitmap {
+                    width: image.width,
+                    height: image.height,
+                    coverage: image
+                        .data
+                        .iter()
+                        .map(|v| (v * 255.0).round() as u8)
+                        .collect(),
+                    origin,
+                });
+            }
+        }
+    }
+    Ok(bitmaps)
+}
+
+/// A bitmap placed with its top-left texel at (x, y), as the shader reads it.
+fn entry(b: &Bitmap, x: u32, y: u32, texels_per_unit: f64) -> GpuEntry {
+    let (w, h) = (f64::from(b.width), f64::from(b.height));
+    // Bitmap pixel (X, Y) shows local (x, y) = ((X − ox) / s, (oy − Y) / s).
+    let quad = [
+        -b.origin.x / texels_per_unit,
+        (b.origin.y - h) / texels_per_unit,
+        (w - b.origin.x) / texels_per_unit,
+        b.origin.y / texels_per_unit,
+    ];
+    let corner = DVec2::new(f64::from(x), f64::from(y));
+    GpuEntry {
+        quad: quad.map(|v| v as f32),
+        origin: (corner + b.origin).as_vec2().to_array(),
+        texels_per_unit: texels_per_unit as f32,
+        _pad: 0.0,
+        texels: [
+            x as f32,
+            y as f32,
+            (corner.x + w) as f32,
+            (corner.y + h) as f32,
+        ],
+    }
+}
+
+/// The atlas texture: every bitmap at its corner.
+struct Packed {
+    width: u32,
+    height: u32,
+    texels: Vec<u8>,
+    /// Each bitmap's top-left texel, in the bitmaps' order.
+    corners: Vec<(u32, u32)>,
+}
+
+/// Shelf packing, tallest bitmaps first, into a texture about as wide as it is tall;
+/// None if it would need a side over `max_side`. Each bitmap carries its own zero
+/// border, so they can touch.
+fn pack(bitmaps: &[Bitmap], max_side: u32) -> Option<Packed> {
+    let area: u64 = bitmaps
+        .iter()
+        .map(|b| u64::from(b.width) * u64::from(b.height))
+        .sum();
+    let widest = bitmaps.iter().map(|b| b.width).max().unwrap_or(1);
+    let width = ((area as f64).sqrt() * 1.1).ceil().max(f64::from(widest)) as u32;
+    if width > max_side {
+        return None;
+    }
+    let mut order: Vec<usize> = (0..bitmaps.len()).collect();
+    order.sort_by_key(|&i| std::cmp::Reverse(bitmaps[i].height));
+    let mut corners = vec![(0, 0); bitmaps.len()];
+    let (mut x, mut y, mut shelf_height) = (0u32, 0u32, 0u32);
+    for &i in &order {
+        let b = &bitmaps[i];
+        if x + b.width > width {
+            (x, y, shelf_height) = (0, y + shelf_height, 0);
+        }
+        corners[i] = (x, y);
+        x += b.width;
+        shelf_height = shelf_height.max(b.height);
+    }
+    let height = (y + shelf_height).max(1);
+    if height > max_side {
+        return None;
+    }
+    let mut texels = vec![0u8; width as usize * height as usize];
+    for (b, &(x, y)) in bitmaps.iter().zip(&corners) {
+        for (row, line) in b.coverage.chunks_exact(b.width as usize).enumerate() {
+            let start = (y as usize + row) * width as usize + x as usize;
+            texels[start..start + line.len()].copy_from_slice(line);
+        }
+    }
+    Some(Packed {
+        width,
+        height,
+        texels,
+        corners,
+    })
+}
+
+impl Method for Atlas {
+    fn name(&self) -> &'static str {
+        NAME
+    }
+
+    fn prepare(&mut self, gpu: &GpuContext, scene: &Scene) -> Result<(), Error> {
+        let instances =
+            gpu.catching_errors("preparing 'atlas'", || Ok(Instances::new(gpu, scene)))?;
+        self.prepared = Some(Prepared {
+            scene: scene.clone(),
+            instances,
+            cache: None,
+        });
+        // A fixed size is cached now, so that `prepare` holds all the CPU work.
+        match self.settings.cache_px_per_em {
+            Some(size) => self.build_cache(gpu, size),
+            None => Ok(()),
+        }
+    }
+
+    fn encode(
+        &mut self,
+        gpu: &GpuContext,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &CoverageTarget,
+        camera: &Camera,
+    ) -> Result<(), Error> {
+        let prepared = self
+            .prepared
+            .as_ref()
+            .ok_or_else(|| super::not_prepared(NAME))?;
+        if prepared.cache.is_none() {
+            self.build_cache(gpu, auto_cache_size(camera.size_px_per_em))?;
+        }
+        let (Some(pipeline), Some(prepared)) = (&self.pipeline, &mut self.prepared) else {
+            return Err(super::not_prepared(NAME));
+        };
+        // A pixel of margin: snapping moves a glyph by up to half a pixel.
+        let visible = prepared.instances.update(gpu, camera, 1.0)?;
+        let cache = prepared.cache.as_ref().expect("built above");
+        let mut pass = target.clearing_pass(encoder, NAME);
+        if visible > 0 {
+            pass.set_pipeline(&pipeline.pipeline);
+            pass.set_bind_group(0, &cache.bind_group, &[]);
+            pass.draw(0..4, 0..visible);
+        }
+        Ok(())
+    }
+
+    fn gpu_bytes(&self) -> u64 {
+        self.prepared
+            .as_ref()
+            .and_then(|p| p.cache.as_ref())
+            .map_or(0, |c| c.bytes)
+    }
+}

@@ -1,0 +1,202 @@
+//! `glyphscope bench` as a user runs it: `--quick` on one scene writes every output,
+//! with every method and the atlas baseline in both views and finite numbers; a case's
+//! error is the one `render --error-image --stats` gives for the same command line; bad
+//! input fails with exit code 2 before anything is measured.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use serde_json::Value;
+
+fn bin() -> Command {
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_glyphscope"));
+    cmd.current_dir(env!("CARGO_MANIFEST_DIR"));
+    cmd
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("glyphscope-bench-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+fn run(args: &[&str]) -> Output {
+    bin().args(args).output().expect("the binary runs")
+}
+
+fn succeeds(args: &[&str]) -> Output {
+    let out = run(args);
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    out
+}
+
+fn read_json(path: &Path) -> Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+fn number(v: &Value, what: &str) -> f64 {
+    let n = v
+        .as_f64()
+        .unwrap_or_else(|| panic!("{what} is not a number: {v}"));
+    assert!(n.is_finite(), "{what} = {n}");
+    n
+}
+
+const METHODS: [&str; 6] = [
+    "reference",
+    "winding",
+    "sdf-cells",
+    "xor-stencil",
+    "tessellation",
+    "atlas",
+];
+
+/// The quick bench on the headlines (the whole `--quick` run takes about two minutes on
+/// a loaded two-core machine; every method and both views are still here).
+#[test]
+fn quick_bench_outputs_agree_with_render() {
+    let out = scratch("quick");
+    succeeds(&[
+        "bench",
+        "--quick",
+        "--scenes",
+        "headlines",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    for file in glyphscope::bench::OUTPUTS {
+        let len = std::fs::metadata(out.join(file)).unwrap().len();
+        assert!(len > 500, "{file}: {len} bytes");
+    }
+    let json = read_json(&out.join("bench.json"));
+    assert!(json["adapter"].as_str().unwrap().len() > 3);
+    let cases = json["cases"].as_array().unwrap();
+    for view in ["own", "moved"] {
+        // After caching, --quick measures the atlas and winding, the contrast.
+        let expected: &[&str] = if view == "own" {
+            &METHODS
+        } else {
+            &["reference", "winding", "atlas"]
+        };
+        for &method in expected {
+            let of: Vec<&Value> = cases
+                .iter()
+                .filter(|c| c["view"] == view && c["method"] == method)
+                .collect();
+            assert!(!of.is_empty(), "{method} missing in the {view} view");
+        }
+        let baseline = cases
+            .iter()
+            .find(|c| c["view"] == view && c["method"] == "atlas")
+            .unwrap();
+        assert_eq!(
+            baseline["params"][0][0], "cache_px_per_em",
+            "the default first"
+        );
+        assert_eq!(
+            baseline["params"][0][1], "120",
+            "cached at the scene's size"
+        );
+    }
+    for case in cases {
+        let what = format!("{} {} {}", case["view"], case["method"], case["params"]);
+        assert!(number(&case["gpu_ms"], &what) > 0.0, "{what}");
+        for key in ["mae_255", "p99_255", "max", "rmse_255"] {
+            assert!(number(&case["error"][key], &what) >= 0.0, "{what}");
+        }
+        if case["method"] != "reference" {
+            let (lo, hi) = (&case["gpu_ms_range"][0], &case["gpu_ms_range"][1]);
+            assert!(number(lo, &what) <= number(hi, &what), "{what}");
+            assert!(case["gpu_bytes"].as_u64().unwrap() > 0, "{what}");
+        }
+    }
+    // The Markdown holds a row per case plus the fastest-per-level tables.
+    let md = std::fs::read_to_string(out.join("bench.md")).unwrap();
+    assert!(md.contains("× atlas") && md.contains("Fastest at each error level"));
+    let csv = std::fs::read_to_string(out.join("bench.csv")).unwrap();
+    assert_eq!(csv.lines().count(), cases.len() + 1);
+
+    // One case rerun by `render` from the command line the bench reports: the same
+    // error. The atlas after caching takes its cache size as a parameter like any other.
+    for (view, method) in [("own", "winding"), ("moved", "atlas")] {
+        let case = cases
+            .iter()
+            .find(|c| c["view"] == view && c["method"] == method)
+            .unwrap();
+        let scene = json["scenes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|s| s["view"] == view)
+            .unwrap();
+        let (png, err, stats) = (scratch("r.png"), scratch("r-err.png"), scratch("r.json"));
+        let mut args: Vec<String> = vec!["render".into(), "--method".into(), method.into()];
+        args.extend(
+            scene["render_args"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|a| a.as_str().unwrap().to_owned()),
+        );
+        for param in case["params"].as_array().unwrap() {
+            args.push("--param".into());
+            args.push(format!(
+                "{}={}",
+                param[0].as_str().unwrap(),
+                param[1].as_str().unwrap()
+            ));
+        }
+        for (flag, path) in [
+            ("--out", &png),
+            ("--error-image", &err),
+            ("--stats", &stats),
+        ] {
+            args.extend([flag.into(), path.to_str().unwrap().to_owned()]);
+        }
+        succeeds(&args.iter().map(String::as_str).collect::<Vec<_>>());
+        let rendered = read_json(&stats)["error"].clone();
+        for key in ["mae_255", "p99_255", "max"] {
+            let (a, b) = (
+                number(&case["error"][key], key),
+                number(&rendered[key], key),
+            );
+            assert!(
+                (a - b).abs() <= 1e-6 * a.abs().max(1.0),
+                "{view} {method} {key}: bench {a}, render {b}"
+            );
+        }
+        assert_eq!(case["error"]["pixels_over_05"], rendered["pixels_over_05"]);
+    }
+}
+
+#[test]
+fn bad_input_fails_cleanly_before_measuring() {
+    let file = scratch("a-file");
+    std::fs::write(&file, "not a folder").unwrap();
+    let out_dir = scratch("unused");
+    let out_dir = out_dir.to_str().unwrap();
+    for (args, expect) in [
+        (
+            vec!["--scenes", "nope", "--out", out_dir],
+            "unknown scene 'nope'",
+        ),
+        (
+            vec!["--methods", "bounds", "--out", out_dir],
+            "no method 'bounds'",
+        ),
+        (vec!["--frames", "0", "--out", out_dir], "at least 1"),
+        (vec!["--out", file.to_str().unwrap()], "cannot write into"),
+    ] {
+        let mut all = vec!["bench", "--quick"];
+        all.extend(&args);
+        let result = run(&all);
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        assert_eq!(result.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+        assert!(stderr.contains(expect), "{args:?}: {stderr}");
+    }
+}
