@@ -286,13 +286,15 @@ fn unique_methods(points: &[SweepPoint]) -> Vec<&'static str> {
 }
 
 fn method_color(k: usize) -> egui::Color32 {
-    const COLORS: [egui::Color32; 6] = [
+    // No grey: the Pareto front is drawn in grey.
+    const COLORS: [egui::Color32; 7] = [
         egui::Color32::from_rgb(80, 170, 255),
         egui::Color32::from_rgb(255, 140, 60),
         egui::Color32::from_rgb(120, 220, 120),
         egui::Color32::from_rgb(230, 90, 200),
         egui::Color32::from_rgb(240, 220, 80),
-        egui::Color32::from_rgb(160, 160, 160),
+        egui::Color32::from_rgb(90, 220, 220),
+        egui::Color32::from_rgb(255, 90, 90),
     ];
     COLORS[k % COLORS.len()]
 }
