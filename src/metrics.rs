@@ -97,6 +97,26 @@ pub fn error_image(
     out
 }
 
+/// Indices of the (time, error) points that no other point beats on both, by increasing
+/// time: the settings worth choosing. Of equal points the first listed is kept.
+pub fn pareto_front(points: &[(f64, f64)]) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..points.len()).collect();
+    order.sort_by(|&a, &b| {
+        let (p, q) = (points[a], points[b]);
+        p.0.total_cmp(&q.0).then(p.1.total_cmp(&q.1))
+    });
+    let mut front: Vec<usize> = Vec::new();
+    for i in order {
+        if front
+            .last()
+            .is_none_or(|&last| points[i].1 < points[last].1)
+        {
+            front.push(i);
+        }
+    }
+    front
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -153,5 +173,19 @@ mod tests {
     #[test]
     fn size_mismatch_is_an_error() {
         assert!(compare(&img(&[0.0]), &img(&[0.0, 0.0])).is_err());
+    }
+
+    #[test]
+    fn pareto_front_keeps_only_unbeaten_points() {
+        let points = [
+            (1.0, 5.0),
+            (2.0, 6.0), // slower and worse than the first
+            (3.0, 1.0),
+            (0.5, 9.0),
+            (4.0, 1.0), // as good as the third, slower
+            (3.0, 1.0), // the third again
+        ];
+        assert_eq!(pareto_front(&points), vec![3, 0, 2]);
+        assert!(pareto_front(&[]).is_empty());
     }
 }

@@ -85,22 +85,8 @@ pub fn combinations(specs: &[ParamSpec]) -> Vec<Vec<(String, String)>> {
 
 /// Indices of the points no other point beats on both time and error, fastest first.
 pub fn pareto_front(points: &[SweepPoint]) -> Vec<usize> {
-    let mut order: Vec<usize> = (0..points.len()).collect();
-    order.sort_by(|&a, &b| {
-        points[a]
-            .gpu_ms
-            .total_cmp(&points[b].gpu_ms)
-            .then(points[a].mae_255.total_cmp(&points[b].mae_255))
-    });
-    let mut front = Vec::new();
-    let mut best_error = f64::INFINITY;
-    for i in order {
-        if points[i].mae_255 < best_error {
-            best_error = points[i].mae_255;
-            front.push(i);
-        }
-    }
-    front
+    let time_and_error: Vec<(f64, f64)> = points.iter().map(|p| (p.gpu_ms, p.mae_255)).collect();
+    metrics::pareto_front(&time_and_error)
 }
 
 impl Sweep {
@@ -343,28 +329,6 @@ fn measure(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn point(gpu_ms: f64, mae_255: f64) -> SweepPoint {
-        SweepPoint {
-            method: "m",
-            params: Vec::new(),
-            gpu_ms,
-            mae_255,
-            max: 0.0,
-        }
-    }
-
-    #[test]
-    fn pareto_front_keeps_only_unbeaten_points() {
-        let points = [
-            point(1.0, 5.0),
-            point(2.0, 6.0), // slower and worse than the first
-            point(3.0, 1.0),
-            point(0.5, 9.0),
-            point(4.0, 1.0), // as good as the third, slower
-        ];
-        assert_eq!(pareto_front(&points), vec![3, 0, 2]);
-    }
 
     #[test]
     fn combinations_cover_every_choice_but_overlays() {

@@ -10,6 +10,7 @@ use plotters::prelude::*;
 use super::run::{BenchResult, Case, View};
 use super::sweep::BENCH_METHODS;
 use crate::Error;
+use crate::metrics::pareto_front;
 
 /// Mean errors are drawn no lower than this (1/255): a log axis has no zero.
 const MAE_FLOOR: f64 = 0.01;
@@ -70,19 +71,6 @@ fn draw_legend<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
         .border_style(BLACK)
         .draw()
         .map_err(plot_error)
-}
-
-/// The points no other point beats on both time and error, by increasing time.
-pub fn pareto_front(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
-    let mut sorted = points.to_vec();
-    sorted.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
-    let mut front: Vec<(f64, f64)> = Vec::new();
-    for p in sorted {
-        if front.last().is_none_or(|last| p.1 < last.1) {
-            front.push(p);
-        }
-    }
-    front
 }
 
 /// (GPU ms, MAE) of a case, if it was timed on the GPU.
@@ -157,7 +145,10 @@ pub fn time_against_error(result: &BenchResult, path: &Path) -> Result<(), Error
             }
             let c = colour(method);
             chart
-                .draw_series(LineSeries::new(pareto_front(&points), c.stroke_width(2)))
+                .draw_series(LineSeries::new(
+                    pareto_front(&points).into_iter().map(|i| points[i]),
+                    c.stroke_width(2),
+                ))
                 .map_err(plot_error)?;
             chart
                 .draw_series(points.iter().map(|&p| Circle::new(p, 4, c.filled())))
@@ -218,15 +209,4 @@ pub fn points_against_error(result: &BenchResult, path: &Path) -> Result<(), Err
     }
     draw_legend(&mut chart)?;
     root.present().map_err(plot_error)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn pareto_front_keeps_only_unbeaten_points() {
-        let front = pareto_front(&[(3.0, 1.0), (1.0, 5.0), (2.0, 6.0), (2.5, 2.0), (4.0, 1.5)]);
-        assert_eq!(front, vec![(1.0, 5.0), (2.5, 2.0), (3.0, 1.0)]);
-    }
 }
