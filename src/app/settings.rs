@@ -38,7 +38,7 @@ impl Default for Settings {
             panes: [
                 PaneSettings::method("winding"),
                 PaneSettings::method("reference"),
-                PaneSettings::method("bounds"),
+                PaneSettings::method("sdf-cells"),
                 PaneSettings {
                     source: PaneSource::Difference {
                         first: 0,
