@@ -115,9 +115,9 @@ pub fn overlay_description(overlay: Overlay) -> &'static str {
 /// A pane at run time: its GPU surface and the numbers shown with it.
 pub struct Pane {
     pub surface: SharedSurface,
-    /// What the surface's method was made from: the pane's source and overlay, and the
+    /// What the surface's method was made from: the pane's source and method overlay, and the
     /// scene generation it was prepared for.
-    built: Option<(PaneSource, PaneOverlay, u64)>,
+    built: Option<(PaneSource, Option<String>, u64)>,
     /// Why the pane shows nothing (method unavailable, bad parameters, preparing failed).
     pub problem: Option<String>,
     pub gpu_bytes: u64,
@@ -155,7 +155,7 @@ impl Pane {
         let generation = scene.map_or(0, |(_, g)| g);
         let wanted = (
             settings.source.clone(),
-            settings.overlay.clone(),
+            method_overlay(settings),
             generation,
         );
         if self.built.as_ref() == Some(&wanted) {
@@ -185,8 +185,8 @@ impl Pane {
             return;
         };
         let mut params = params.clone();
-        if let PaneOverlay::Method(overlay) = &settings.overlay {
-            params.push(("overlay".into(), overlay.clone()));
+        if let Some(overlay) = method_overlay(settings) {
+            params.push(("overlay".into(), overlay));
         }
         let start = Instant::now();
         let made = methods::create(name, &params).and_then(|mut method| {
@@ -206,7 +206,7 @@ impl Pane {
     /// Whether the pane's method was made from `settings` for scene `generation`.
     pub fn is_built_for(&self, settings: &PaneSettings, generation: u64) -> bool {
         self.built.as_ref().is_some_and(|(source, overlay, g)| {
-            (source, overlay, *g) == (&settings.source, &settings.overlay, generation)
+            (source, overlay, *g) == (&settings.source, &method_overlay(settings), generation)
         })
     }
 
@@ -425,4 +425,13 @@ fn overlay_controls(ui: &mut egui::Ui, pane: &mut PaneSettings, catalog: &Catalo
         ui.checkbox(&mut pane.outline, "outline points")
             .on_hover_text("the font's outline: on-curve points filled, off-curve hollow");
     });
+}
+
+/// The `overlay` parameter a pane's method is made with. Only method overlays change the
+/// method; the error overlay is the compositor's, so toggling it prepares nothing.
+fn method_overlay(settings: &PaneSettings) -> Option<String> {
+    match &settings.overlay {
+        PaneOverlay::Method(name) => Some(name.clone()),
+        PaneOverlay::None | PaneOverlay::Error => None,
+    }
 }

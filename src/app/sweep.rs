@@ -12,7 +12,9 @@ use egui_plot::{Legend, Line, MarkerShape, Plot, PlotPoints, Points};
 
 use super::panes::Catalog;
 use crate::camera::Camera;
-use crate::gpu::{self, CoverageTarget, GpuContext};
+use crate::cli::{self, FrameTiming};
+use crate::coverage::CoverageImage;
+use crate::gpu::GpuContext;
 use crate::methods::{self, ParamSpec};
 use crate::metrics;
 use crate::reference;
@@ -147,22 +149,15 @@ impl Sweep {
                     let _ = sender.send(m);
                     ctx.request_repaint();
                 };
-                let prepared = reference::rasterize(&scene, &camera)
-                    .map_err(|e| format!("reference: {e}"))
-                    .and_then(|r| {
-                        let target = CoverageTarget::new(&gpu, camera.width, camera.height)
-                            .map_err(|e| e.to_string())?;
-                        Ok((r, target))
-                    });
-                match prepared {
-                    Err(problem) => send(Message::Problem(problem)),
-                    Ok((reference, target)) => {
+                match reference::rasterize(&scene, &camera) {
+                    Err(e) => send(Message::Problem(format!("reference: {e}"))),
+                    Ok(reference) => {
                         for (method, params) in jobs {
                             if cancel.load(Ordering::Relaxed) {
                                 break;
                             }
                             let measured =
-                                measure(&gpu, &scene, &camera, &target, &reference, method, params);
+                                measure(&gpu, &scene, &camera, &reference, method, params);
                             send(match measured {
                                 Ok(point) => Message::Point(point),
                                 Err(e) => Message::Problem(format!("{method}: {e}")),
@@ -301,28 +296,31 @@ fn nearest(points: &[SweepPoint], x: f64, y: f64) -> Option<usize> {
     })
 }
 
+/// One point: the method drawn and timed exactly as `render --stats` and the bench do.
 fn measure(
     gpu: &GpuContext,
     scene: &Scene,
     camera: &Camera,
-    target: &CoverageTarget,
-    reference: &crate::coverage::CoverageImage,
+    reference: &CoverageImage,
     method: &'static str,
     params: Vec<(String, String)>,
 ) -> Result<SweepPoint, crate::Error> {
-    let mut m = methods::create(method, &params)?;
-    m.prepare(gpu, scene)?;
-    let mut times = gpu::time_frames(gpu, m.as_mut(), target, camera, WARMUP_FRAMES, TIMED_FRAMES)?
-        .ok_or_else(|| crate::Error::Gpu("this GPU has no timestamp queries".into()))?;
-    times.sort_by(f64::total_cmp);
-    gpu::render_frame(gpu, m.as_mut(), target, camera)?;
-    let stats = metrics::compare(&target.readback(gpu)?, reference)?;
+    let timing = FrameTiming {
+        warmup: WARMUP_FRAMES,
+        frames: TIMED_FRAMES,
+    };
+    let measured = cli::measure(Some(gpu), scene, camera, method, &params, timing)?;
+    let error = metrics::compare(&measured.image, reference)?;
+    let gpu_ms = measured
+        .stats
+        .gpu_ms
+        .ok_or_else(|| crate::Error::Gpu(format!("'{method}' drew no timed frame")))?;
     Ok(SweepPoint {
         method,
         params,
-        gpu_ms: times[times.len() / 2],
-        mae_255: stats.mae_255,
-        max: stats.max,
+        gpu_ms,
+        mae_255: error.mae_255,
+        max: error.max,
     })
 }
 
