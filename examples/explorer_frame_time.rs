@@ -12,13 +12,9 @@ use std::time::{Duration, Instant};
 
 use glyphscope::app::headless::Headless;
 use glyphscope::app::settings::{Layout, PaneSettings, PaneSource, Settings};
+use glyphscope::metrics::median;
 
 const FRAMES: usize = 40;
-
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
 
 fn main() -> Result<(), glyphscope::Error> {
     let mut screen = Headless::new(1920, 1080)?;
@@ -63,7 +59,10 @@ fn main() -> Result<(), glyphscope::Error> {
             screen.frame(&mut app)?;
             times.push(t.elapsed().as_secs_f64() * 1e3);
         }
-        println!("frame, {what}: median {:.1} ms", median(times));
+        println!(
+            "frame, {what}: median {:.1} ms",
+            median(times).unwrap_or(f64::NAN)
+        );
     }
     for pane in 0..4 {
         if let Some(ms) = app.pane_gpu_ms(pane) {

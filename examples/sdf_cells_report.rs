@@ -19,7 +19,7 @@ use glyphscope::methods::{self, Method};
 type Params = Vec<(String, String)>;
 use glyphscope::methods::sdf_cells::SdfCells;
 use glyphscope::methods::sdf_cells::curves::overlapping_contours;
-use glyphscope::metrics::{ErrorStats, compare};
+use glyphscope::metrics::{self, ErrorStats, compare};
 use glyphscope::reference;
 use glyphscope::scene::Scene;
 
@@ -219,10 +219,7 @@ fn page_report(gpu: &GpuContext) {
     }
     // Interleaved rounds, so that load from elsewhere falls on every mode alike; each
     // round's median per mode, and each round's ratio to the estimate.
-    let median = |mut t: Vec<f64>| {
-        t.sort_by(f64::total_cmp);
-        t[t.len() / 2]
-    };
+    let median = |t: Vec<f64>| metrics::median(t).expect("frames were timed");
     let rounds: Vec<Vec<f64>> = (0..9)
         .map(|_| {
             methods

@@ -13,7 +13,7 @@ use glyphscope::camera::Camera;
 use glyphscope::font::Font;
 use glyphscope::gpu::{CoverageTarget, GpuContext, render_frame, time_frames};
 use glyphscope::methods::{self, Method};
-use glyphscope::metrics::compare;
+use glyphscope::metrics::{self, compare};
 use glyphscope::reference;
 use glyphscope::scene::Scene;
 
@@ -110,8 +110,7 @@ fn main() {
     println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|");
     let mut default_ms = None;
     for run in &mut runs {
-        run.times.sort_by(f64::total_cmp);
-        let median = run.times[run.times.len() / 2];
+        let median = metrics::median(run.times.iter().copied()).expect("frames were timed");
         let default_ms = *default_ms.get_or_insert(median);
         render_frame(&gpu, run.method.as_mut(), &target, &camera).unwrap();
         let error = compare(&target.readback(&gpu).unwrap(), &expected).unwrap();

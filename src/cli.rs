@@ -443,7 +443,7 @@ pub fn measure(
         };
         times.sort_by(f64::total_cmp);
         if let (Some(first), Some(last)) = (times.first(), times.last()) {
-            stats.gpu_ms = Some(times[times.len() / 2]);
+            stats.gpu_ms = metrics::median(times.iter().copied());
             stats.gpu_ms_range = Some((*first, *last));
             stats.gpu_clock = Some(clock.to_owned());
         }

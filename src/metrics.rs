@@ -62,6 +62,14 @@ pub fn compare(image: &CoverageImage, reference: &CoverageImage) -> Result<Error
     Ok(stats)
 }
 
+/// The middle value, the upper one of an even count (None for none): the one median
+/// every timing in the project quotes.
+pub fn median(values: impl IntoIterator<Item = f64>) -> Option<f64> {
+    let mut v: Vec<f64> = values.into_iter().collect();
+    v.sort_by(f64::total_cmp);
+    v.get(v.len() / 2).copied()
+}
+
 /// The value below which a fraction `q` of `values` lies (nearest rank; NaN counts as
 /// the largest); 0 for none. Reorders `values`.
 fn percentile(values: &mut [f64], q: f64) -> f64 {

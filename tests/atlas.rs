@@ -62,6 +62,18 @@ fn exact_at_the_cached_size_on_whole_pixels() {
     }
 }
 
+/// On a cached phase other than zero, and a different one along each axis, the atlas
+/// draws exactly what it cached: a phase row and column swapped would be off here.
+#[test]
+fn exact_on_cached_quarter_phases() {
+    for offset in [DVec2::new(0.25, 0.5), DVec2::new(0.75, 0.25)] {
+        let (scene, camera) = row(offset);
+        let e = error_of("atlas", &[("subpixel", "4")], &scene, &camera);
+        assert!(e.max < 1.2 / 255.0, "pens off by {offset}: {e:?}");
+        assert!(e.mae_255 < 0.05, "pens off by {offset}: {e:?}");
+    }
+}
+
 #[test]
 fn between_phases_the_error_is_the_snap() {
     // Pens a third of a pixel and more off the grid in x and y.

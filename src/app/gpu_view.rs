@@ -492,9 +492,7 @@ impl FrameTimer {
 
     /// Median GPU time of the recent frames, and how many there are.
     pub fn median_ms(&self) -> Option<(f64, usize)> {
-        let mut times: Vec<f64> = self.recent.iter().copied().collect();
-        times.sort_by(f64::total_cmp);
-        times.get(times.len() / 2).map(|&m| (m, times.len()))
+        crate::metrics::median(self.recent.iter().copied()).map(|m| (m, self.recent.len()))
     }
 
     pub fn clear(&mut self) {

@@ -26,12 +26,9 @@ pub fn fastest_within<'a>(cases: &[&'a Case], level: f64) -> Option<&'a Case> {
         .iter()
         .copied()
         .filter(|c| c.method != "reference" && c.error.mae_255 <= level)
-        .filter(|c| c.gpu_ms.is_some())
-        .min_by(|a, b| {
-            a.gpu_ms
-                .unwrap_or(f64::INFINITY)
-                .total_cmp(&b.gpu_ms.unwrap_or(f64::INFINITY))
-        })
+        .filter_map(|c| Some((c, c.gpu_ms?)))
+        .min_by(|(_, a), (_, b)| a.total_cmp(b))
+        .map(|(c, _)| c)
 }
 
 fn cases_of<'a>(result: &'a BenchResult, info: &SceneInfo) -> Vec<&'a Case> {

@@ -128,7 +128,7 @@ impl Case {
 
     /// Whether this is the baseline every time is divided by.
     pub fn is_baseline(&self) -> bool {
-        self.method == sweep::BASELINE.0 && self.settings() == "default"
+        self.method == sweep::BASELINE && self.settings() == "default"
     }
 }
 
@@ -386,8 +386,9 @@ fn combine_rounds(rounds: Vec<Vec<Case>>) -> Vec<Case> {
             let all: Vec<&Case> = std::iter::once(&case)
                 .chain(rest.iter().map(|r| &r[i]))
                 .collect();
-            let gpu_ms = median(all.iter().filter_map(|c| c.gpu_ms));
-            let cpu_prepare_ms = median(all.iter().map(|c| c.cpu_prepare_ms)).unwrap_or(0.0);
+            let gpu_ms = metrics::median(all.iter().filter_map(|c| c.gpu_ms));
+            let cpu_prepare_ms =
+                metrics::median(all.iter().map(|c| c.cpu_prepare_ms)).unwrap_or(0.0);
             let ranges = all.iter().filter_map(|c| c.gpu_ms_range);
             let gpu_ms_range = ranges.reduce(|a, b| (a.0.min(b.0), a.1.max(b.1)));
             Case {
@@ -398,13 +399,6 @@ fn combine_rounds(rounds: Vec<Vec<Case>>) -> Vec<Case> {
             }
         })
         .collect()
-}
-
-/// The middle value (the upper one of an even count).
-fn median(values: impl Iterator<Item = f64>) -> Option<f64> {
-    let mut v: Vec<f64> = values.collect();
-    v.sort_by(f64::total_cmp);
-    v.get(v.len() / 2).copied()
 }
 
 /// The `render` arguments that draw a view (add `--method` and `--param`s).

@@ -156,10 +156,6 @@ impl Atlas {
         })
     }
 
-    pub fn settings(&self) -> Settings {
-        self.settings
-    }
-
     /// The size the glyphs are cached at, once they are.
     pub fn cached_px_per_em(&self) -> Option<f64> {
         self.prepared
@@ -277,14 +273,8 @@ impl Atlas {
                 },
                 size,
             );
-            let entry_buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("atlas entries"),
-                size: (entries.len().max(1) * size_of::<GpuEntry>()) as u64,
-                usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
-            });
-            gpu.queue
-                .write_buffer(&entry_buffer, 0, bytemuck::cast_slice(&entries));
+            let entry_buffer =
+                gpu.buffer_of("atlas entries", &entries, wgpu::BufferUsages::STORAGE);
             let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
             let buffers = [
                 prepared.instances.frame(),
@@ -364,11 +354,7 @@ fn rasterize_glyphs(scene: &Scene, px_per_em: f64, phases: u32) -> Result<Vec<Bi
                 bitmaps.push(Bitmap {
                     width: image.width,
                     height: image.height,
-                    coverage: image
-                        .data
-                        .iter()
-                        .map(|v| (v * 255.0).round() as u8)
-                        .collect(),
+                    coverage: image.to_gray8().into_raw(),
                     origin,
                 });
             }
