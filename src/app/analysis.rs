@@ -30,6 +30,9 @@ pub struct Request {
     pub captures: Vec<(usize, Arc<CoverageImage>)>,
     /// The panes to count curves per pixel for.
     pub counts: Vec<Count>,
+    /// Each pane's surface generation when the request was made: a result for a pane
+    /// whose method has since been remade is not that method's.
+    pub pane_generations: Vec<u64>,
 }
 
 /// (pane, method, parameters).
@@ -45,6 +48,8 @@ pub struct Outcome {
     pub reference_ms: Option<f64>,
     pub errors: Vec<(usize, Result<ErrorStats, String>)>,
     pub curves: Vec<(usize, Result<Option<CurveCost>, String>)>,
+    /// As in the request.
+    pub pane_generations: Vec<u64>,
 }
 
 /// The worker's prepared copy of a pane's method: (scene generation, name, parameters).
@@ -154,6 +159,7 @@ fn analyse(request: &Request, last: &mut Option<(u64, Camera, Arc<CoverageImage>
         reference_ms,
         errors,
         curves: Vec::new(),
+        pane_generations: request.pane_generations.clone(),
     }
 }
 

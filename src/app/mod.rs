@@ -483,13 +483,27 @@ impl Explorer {
         let Some(outcome) = self.analysis.receive() else {
             return;
         };
-        for (pane, result) in outcome.errors {
+        // Results for a pane whose method was remade meanwhile belong to the old one.
+        let current = |pane: usize| {
+            lock(&self.panes[pane].surface).generation == outcome.pane_generations[pane]
+        };
+        let errors: Vec<_> = outcome
+            .errors
+            .into_iter()
+            .filter(|(p, _)| current(*p))
+            .collect();
+        let curves: Vec<_> = outcome
+            .curves
+            .into_iter()
+            .filter(|(p, _)| current(*p))
+            .collect();
+        for (pane, result) in errors {
             match result {
                 Ok(stats) => self.panes[pane].error = Some((outcome.camera, stats)),
                 Err(e) => self.panes[pane].problem = Some(e),
             }
         }
-        for (pane, result) in outcome.curves {
+        for (pane, result) in curves {
             match result {
                 Ok(cost) => self.panes[pane].curves = cost.map(|c| (outcome.camera, c)),
                 Err(e) => self.panes[pane].problem = Some(e),

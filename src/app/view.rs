@@ -485,6 +485,11 @@ impl Explorer {
         }
         let mut captures = Vec::new();
         let mut counts = Vec::new();
+        let pane_generations = self
+            .panes
+            .iter()
+            .map(|pane| lock(&pane.surface).generation)
+            .collect();
         for (index, pane) in self.panes[..visible].iter_mut().enumerate() {
             let surface = lock(&pane.surface);
             if surface.method.is_none() || surface.draw_error.is_some() {
@@ -516,6 +521,7 @@ impl Explorer {
             camera,
             captures,
             counts,
+            pane_generations,
         });
         self.view.analysed = Some(key);
     }
