@@ -113,6 +113,11 @@ impl Explorer {
         let (scroll, pinch) = ui.input(|i| (i.smooth_scroll_delta.y, i.zoom_delta()));
         let factor = f64::from(pinch) * (f64::from(scroll) * WHEEL_ZOOM_PER_POINT).exp();
         if factor != 1.0 {
+            let (width, height) = (rect.width() * ppp, rect.height() * ppp);
+            let anchor =
+                self.settings
+                    .camera
+                    .untilted(anchor, width.round() as u32, height.round() as u32);
             self.settings.camera.zoom(factor, anchor, upem);
         }
         let (x, y) = (local.x.floor(), local.y.floor());
