@@ -5,21 +5,33 @@
 use super::cases::{Case, Trait};
 
 /// A method's claim: no pixel off by more than `max_error` on every case but those
-/// with one of the `except` traits (its documented limitations), or on none.
+/// with one of the `except` traits (its documented limitations), or on none; on its
+/// limitations, no pixel off by more than `limitation_max` where that is given, so a
+/// regression inside a limitation still breaks the claim.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Claim {
     /// None: the method claims no bound; its errors are documented limitations.
     pub max_error: Option<f64>,
     pub except: &'static [Trait],
+    /// The looser bound that still holds on the limitations (None: none does).
+    pub limitation_max: Option<f64>,
     /// The claim, and its limitations, in the README's words.
     pub statement: &'static str,
 }
 
 impl Claim {
-    /// The bound this claim sets on `case`, or None where the case is a limitation.
+    /// Whether `case` is one of this claim's documented limitations.
+    pub fn is_limitation(&self, case: &Case) -> bool {
+        self.max_error.is_none() || case.traits.iter().any(|t| self.except.contains(t))
+    }
+
+    /// The bound this claim sets on `case`, if any.
     pub fn bound(&self, case: &Case) -> Option<f64> {
-        let excluded = case.traits.iter().any(|t| self.except.contains(t));
-        self.max_error.filter(|_| !excluded)
+        if self.is_limitation(case) {
+            self.limitation_max
+        } else {
+            self.max_error
+        }
     }
 }
 
@@ -52,6 +64,8 @@ pub const VARIANTS: &[Variant] = &[
         claim: Claim {
             max_error: Some(0.5),
             except: &[Trait::DenseOverlaps],
+            // Measured 0.717 on 256 stacked contours.
+            limitation_max: Some(0.8),
             statement: "no pixel off by more than 0.5 anywhere; a window crossed by more \
                         than 8 edges falls back to its averaged winding",
         },
@@ -63,6 +77,7 @@ pub const VARIANTS: &[Variant] = &[
         claim: Claim {
             max_error: None,
             except: &[],
+            limitation_max: None,
             statement: "estimate (the seed's): artifacts where the nearest chord's tangent \
                         puts a pixel on the wrong side, and cracks along overlaps",
         },
@@ -74,6 +89,8 @@ pub const VARIANTS: &[Variant] = &[
         claim: Claim {
             max_error: Some(0.5),
             except: &[Trait::Overlapping, Trait::SubpixelDetail],
+            // Measured 0.500 on overlaps, 0.620 on sub-pixel detail.
+            limitation_max: Some(0.8),
             statement: "no pixel off by more than 0.5 on outlines without overlapping \
                         contours; one edge per pixel, so detail under a pixel (a contour \
                         or several edges inside one) reads up to 0.5 + w/2",
@@ -86,6 +103,8 @@ pub const VARIANTS: &[Variant] = &[
         claim: Claim {
             max_error: Some(0.5),
             except: &[Trait::DenseOverlaps],
+            // A wrapped counter reads a covered pixel as empty: no bound.
+            limitation_max: None,
             statement: "within half a level of the reference with four or more samples; \
                         8-bit counters read a winding of 256 as 0",
         },
@@ -97,6 +116,8 @@ pub const VARIANTS: &[Variant] = &[
         claim: Claim {
             max_error: Some(0.5),
             except: &[Trait::SubpixelDetail],
+            // Measured 0.692 at 2 px/em.
+            limitation_max: Some(0.8),
             statement: "screen-space subdivision with 4x MSAA: no pixel off by more than 0.5; \
                         four point samples cannot resolve several edges inside one pixel",
         },

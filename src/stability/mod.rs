@@ -83,10 +83,10 @@ fn worst_location(o: &Outcome) -> String {
 }
 
 fn verdict(o: &Outcome) -> &'static str {
-    match (o.breaks_claim(), o.bound) {
+    match (o.breaks_claim(), o.limitation) {
         (true, _) => "BROKEN",
-        (false, Some(_)) => "ok",
-        (false, None) => "limitation",
+        (false, false) => "ok",
+        (false, true) => "limitation",
     }
 }
 
@@ -97,9 +97,11 @@ pub fn long_table(outcomes: &[Outcome]) -> String {
          |---|---|---:|---:|---:|---|---|---|\n",
     );
     for o in outcomes {
-        let claim = o
-            .bound
-            .map_or("limitation".to_owned(), |b| format!("≤ {b}"));
+        let claim = match (o.limitation, o.bound) {
+            (false, Some(b)) => format!("≤ {b}"),
+            (true, Some(b)) => format!("limitation, ≤ {b}"),
+            (_, None) => "limitation".to_owned(),
+        };
         writeln!(
             out,
             "| {} | {} | {:.2} | {:.3} | {} | {} | {claim} | {} |",
@@ -203,6 +205,7 @@ mod tests {
             artifact_pixels: 3,
             frames: 8,
             worst: Worst::default(),
+            limitation: bound.is_none(),
             bound,
             failure: None,
             worst_images: None,

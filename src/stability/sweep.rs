@@ -70,8 +70,10 @@ pub struct Outcome {
     pub artifact_pixels: usize,
     pub frames: usize,
     pub worst: Worst,
-    /// The claimed bound on the largest error, or None where the case is a documented
-    /// limitation of the method.
+    /// Whether the case is a documented limitation of the method.
+    pub limitation: bool,
+    /// The claimed bound on the largest error (on a limitation, the looser one that
+    /// still holds), if any.
     pub bound: Option<f64>,
     /// A failure to prepare or draw, which breaks any claim.
     pub failure: Option<String>,
@@ -112,6 +114,7 @@ pub fn run(
                     artifact_pixels: 0,
                     frames: 0,
                     worst: Worst::default(),
+                    limitation: variant.claim.is_limitation(case),
                     bound: variant.claim.bound(case),
                     failure: None,
                     worst_images: None,

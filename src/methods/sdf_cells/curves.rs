@@ -172,6 +172,21 @@ mod tests {
         }
     }
 
+    /// Zero length is judged in f32, the precision the shader sees: a segment 1e-7 units
+    /// long at 14 units is one point there (its tangent would be NaN) and is dropped,
+    /// while one that is distinct in f32 is kept.
+    #[test]
+    fn curves_that_are_points_in_f32_are_dropped() {
+        let start = DVec2::new(14.0, 14.0);
+        let collapsed = Segment::Line(start, start + DVec2::new(1e-7, 0.0));
+        assert_ne!(start, start + DVec2::new(1e-7, 0.0), "distinct in f64");
+        assert!(as_quad(&collapsed).is_none());
+        let short = Segment::Line(start, start + DVec2::new(1e-3, 0.0));
+        assert!(as_quad(&short).is_some());
+        let point = Segment::Quad(start, start, start);
+        assert!(as_quad(&point).is_none());
+    }
+
     #[test]
     fn layout_puts_curves_on_even_points_after_their_predecessor() {
         let layout = CurveLayout::new(&square(true));
