@@ -12,7 +12,8 @@ use glam::DVec2;
 use glyphscope::camera::Camera;
 use glyphscope::font::{Font, GlyphId, SHIPPED_FONTS};
 use glyphscope::geometry::DEFAULT_QUAD_TOLERANCE_EM;
-use glyphscope::gpu::{CoverageTarget, GpuContext, render_frame, time_frames};
+use glyphscope::gpu::{CoverageTarget, GpuContext};
+use glyphscope::methods::frame::{render_frame, time_frames};
 use glyphscope::methods::{self, Method};
 
 /// Owned `--param` pairs.

@@ -11,7 +11,8 @@
 use glam::DVec2;
 use glyphscope::camera::Camera;
 use glyphscope::font::Font;
-use glyphscope::gpu::{CoverageTarget, GpuContext, render_frame, time_frames};
+use glyphscope::gpu::{CoverageTarget, GpuContext};
+use glyphscope::methods::frame::{render_frame, time_frames};
 use glyphscope::methods::{self, Method};
 use glyphscope::metrics::{self, compare};
 use glyphscope::reference;

@@ -18,11 +18,9 @@ struct Entry {
     texels: vec4<f32>,
 }
 
-@group(0) @binding(0) var<uniform> frame: Frame;
-@group(0) @binding(1) var<storage, read> instances: array<GlyphInstance>;
-@group(0) @binding(2) var<storage, read> entries: array<Entry>;
-@group(0) @binding(3) var atlas: texture_2d<f32>;
-@group(0) @binding(4) var atlas_sampler: sampler;
+@group(1) @binding(0) var<storage, read> entries: array<Entry>;
+@group(1) @binding(1) var atlas: texture_2d<f32>;
+@group(1) @binding(2) var atlas_sampler: sampler;
 
 // Sub-pixel phases per axis: each glyph has PHASES × PHASES bitmaps, and an instance's
 // pen snaps to the nearest 1/PHASES pixel, drawing the bitmap of that phase. 0: no

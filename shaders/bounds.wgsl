@@ -6,13 +6,6 @@
 // projected corners). A pixel's coverage is the area of the pixel square clipped to that
 // quadrilateral: Sutherland–Hodgman against its four edges, then the shoelace formula.
 
-struct View {
-    // Target size in pixels.
-    size: vec2<f32>,
-}
-
-@group(0) @binding(0) var<uniform> view: View;
-
 // Corners are relative to an integer pixel `origin` near the instance, so that f32 holds
 // them to a tiny fraction of a pixel anywhere in a 16384-pixel image.
 struct Instance {
@@ -47,7 +40,7 @@ fn vs_main(@builtin(vertex_index) vertex: u32, instance: Instance) -> Varyings {
     let pick = vec2<f32>(f32(vertex & 1u), f32(vertex >> 1u));
     let pixel = vec2<f32>(instance.origin) + mix(low, high, pick);
     // Pixels are y down, clip space is y up.
-    let clip = vec2<f32>(2.0 * pixel.x / view.size.x - 1.0, 1.0 - 2.0 * pixel.y / view.size.y);
+    let clip = vec2<f32>(2.0 * pixel.x / frame.size.x - 1.0, 1.0 - 2.0 * pixel.y / frame.size.y);
 
     var out: Varyings;
     out.position = vec4<f32>(clip, 0.0, 1.0);

@@ -1,4 +1,6 @@
-// Shared by every method shader (prepended to each one by `gpu::shaders`).
+// Shared by every method shader (prepended to each one by `gpu::shaders`, after the
+// one line it writes from Rust: `const COST_SCALE: f32`, the curves per pixel at the top
+// of the cost heat map's scale, which the app's legend reads from the same constant).
 //
 // Conventions: a glyph's local coordinates are its font units, y up, origin at its pen
 // position. Image coordinates are pixels, y down, pixel (i, j) covering [i, i+1) × [j, j+1).
@@ -16,6 +18,10 @@ struct Frame {
     // Target size in pixels.
     size: vec2<f32>,
 }
+
+// `@group(0)` of every method shader; each method binds its own data at `@group(1)`.
+@group(0) @binding(0) var<uniform> frame: Frame;
+@group(0) @binding(1) var<storage, read> instances: array<GlyphInstance>;
 
 // A homogeneous image point (X·w, Y·w, w) → clip space, keeping w so that varyings are
 // interpolated perspective-correctly.

@@ -30,16 +30,12 @@ struct Settings {
     dilate: f32,
     outline: f32,
     glow: f32,
-    // Curves per pixel drawn white on the heat map.
-    heat_scale: f32,
 }
 
-@group(0) @binding(0) var<uniform> frame: Frame;
-@group(0) @binding(1) var<storage, read> instances: array<GlyphInstance>;
-@group(0) @binding(2) var<storage, read> glyphs: array<GlyphCells>;
-@group(0) @binding(3) var<storage, read> points: array<vec2<f32>>;
-@group(0) @binding(4) var<storage, read> words: array<u32>;
-@group(0) @binding(5) var<uniform> settings: Settings;
+@group(1) @binding(0) var<storage, read> glyphs: array<GlyphCells>;
+@group(1) @binding(1) var<storage, read> points: array<vec2<f32>>;
+@group(1) @binding(2) var<storage, read> words: array<u32>;
+@group(1) @binding(3) var<uniform> settings: Settings;
 
 const MODE_EXACT = 1u;
 const OUTPUT_EQUAL_DISTANCE = 1u;
@@ -453,7 +449,7 @@ fn fs_main(in: GlyphQuad) -> @location(0) vec4<f32> {
             }
         }
         case OUTPUT_COST_HEAT_MAP: {
-            color = mix(heat_color(f32(field.cost) / settings.heat_scale), color, 0.25);
+            color = mix(heat_color(f32(field.cost) / COST_SCALE), color, 0.25);
         }
         case OUTPUT_COST_COUNT: {
             color = vec3<f32>(f32(field.cost), 0.0, 0.0);

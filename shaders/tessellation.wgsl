@@ -6,10 +6,8 @@
 // overlap within a glyph, and where instances overlap their samples then unite, as the
 // reference unites them.
 
-@group(0) @binding(0) var<uniform> frame: Frame;
-@group(0) @binding(1) var<storage, read> instances: array<GlyphInstance>;
 // The polyline points, for the points overlay.
-@group(0) @binding(2) var<storage, read> markers: array<Marker>;
+@group(1) @binding(0) var<storage, read> markers: array<Marker>;
 
 struct Marker {
     position: vec2<f32>,

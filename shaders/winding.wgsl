@@ -33,12 +33,10 @@ struct Band {
     count: u32,
 }
 
-@group(0) @binding(0) var<uniform> frame: Frame;
-@group(0) @binding(1) var<storage, read> instances: array<GlyphInstance>;
-@group(0) @binding(2) var<storage, read> glyphs: array<Glyph>;
-@group(0) @binding(3) var<storage, read> bands: array<Band>;
-@group(0) @binding(4) var<storage, read> band_curves: array<u32>;
-@group(0) @binding(5) var<storage, read> curves: array<Curve>;
+@group(1) @binding(0) var<storage, read> glyphs: array<Glyph>;
+@group(1) @binding(1) var<storage, read> bands: array<Band>;
+@group(1) @binding(2) var<storage, read> band_curves: array<u32>;
+@group(1) @binding(3) var<storage, read> curves: array<Curve>;
 
 // Pipeline constants: one pipeline per parameter combination, no per-pixel branching
 // on them.
@@ -47,9 +45,6 @@ override SAMPLES: u32 = 0u;       // 1, 4 (2×2 sub-pixels tiling the pixel), 0:
 override EVEN_ODD: bool = false;  // fill rule; nonzero by default
 override USE_BANDS: bool = true;  // false: every curve of the glyph for every ray
 override OVERLAY: u32 = 0u;       // 0 none, 1 curve classes, 2 cost heat map
-
-// Cost heat map: this many curves evaluated per pixel is the top of the scale.
-const COST_SCALE: f32 = 16.0;
 
 // `SAMPLES` auto: four sub-samples where a pixel spans more than this part of an em
 // (text under 32 px/em, or the far side of a tilt), where one sample's error reaches

@@ -14,15 +14,13 @@
 // triangle) is rasterized from bit-identical vertices, so the rasterizer's tie rule
 // gives each sample on it to exactly one side and no sample is counted twice or never.
 
-@group(0) @binding(0) var<storage, read> instances: array<GlyphInstance>;
-@group(0) @binding(1) var<uniform> frame: Frame;
 // Control-point bounds of each distinct glyph: min in xy, max in zw (font units).
-@group(0) @binding(2) var<storage, read> glyph_bounds: array<vec4<f32>>;
+@group(1) @binding(0) var<storage, read> glyph_bounds: array<vec4<f32>>;
 // Fan triangles, three points each, every glyph's run starting at a multiple of 3.
-@group(0) @binding(3) var<storage, read> fan_points: array<vec2<f32>>;
+@group(1) @binding(1) var<storage, read> fan_points: array<vec2<f32>>;
 // Loop–Blinn triangles (p0, p1, p2) of the quadratics, the same way.
-@group(0) @binding(4) var<storage, read> curve_points: array<vec2<f32>>;
-@group(0) @binding(5) var<uniform> jitter: Jitter;
+@group(1) @binding(2) var<storage, read> curve_points: array<vec2<f32>>;
+@group(1) @binding(3) var<uniform> jitter: Jitter;
 
 struct Jitter {
     // This pass's sub-pixel shift of the whole image, pixels.

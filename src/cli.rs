@@ -5,19 +5,16 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use clap::{Args, Parser, Subcommand};
-use glam::DVec2;
-use serde::Serialize;
 
 use crate::Error;
-use crate::camera::{Camera, MAX_IMAGE_SIDE, MAX_SIZE_PX_PER_EM};
 use crate::coverage::CoverageImage;
-use crate::font::Font;
-use crate::gpu::{self, CoverageTarget, GpuContext};
-use crate::methods;
-use crate::metrics::{self, ErrorStats};
+use crate::gpu::GpuContext;
+use crate::measure::{self, Measured, RENDER_TIMING, RenderStats, ms_since};
+use crate::methods::registry;
+use crate::metrics;
 use crate::reference;
-use crate::scene::Scene;
 use crate::stability::{self, sweep::SweepSize};
+use crate::view::{ViewArgs, parse_key_value};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -104,48 +101,14 @@ pub fn run_bench(args: &BenchArgs) -> Result<(), Error> {
     Ok(())
 }
 
+/// `glyphscope render`'s arguments: a view, the method that draws it, and what to write.
 #[derive(Args, Clone, Debug)]
 pub struct RenderArgs {
-    /// Font file (.ttf/.otf); the embedded DejaVu Sans when absent.
-    #[arg(long)]
-    pub font: Option<PathBuf>,
-    /// Text to shape; '\n' (or a literal backslash-n) starts a new line.
-    #[arg(
-        long,
-        required_unless_present = "glyph_id",
-        conflicts_with = "glyph_id"
-    )]
-    pub text: Option<String>,
-    /// One glyph by its id in the font.
-    #[arg(long)]
-    pub glyph_id: Option<u32>,
-    /// Size in pixels per em.
-    #[arg(long, allow_negative_numbers = true)]
-    pub size: f64,
-    /// reference, bounds, winding, sdf-cells, xor-stencil, tessellation or atlas.
-    #[arg(long)]
+    #[command(flatten)]
+    pub view: ViewArgs,
+    /// The method that draws it; one of the registry's (see `--help`).
+    #[arg(long, help = method_help())]
     pub method: String,
-    /// Image width; by default the ink box plus a margin.
-    #[arg(long)]
-    pub width: Option<u32>,
-    /// Image height; by default the ink box plus a margin.
-    #[arg(long)]
-    pub height: Option<u32>,
-    /// Baseline origin X,Y in pixels; by default the ink box starts at the margin.
-    #[arg(long, value_parser = parse_pair, allow_hyphen_values = true)]
-    pub origin: Option<DVec2>,
-    /// Matrix A,B,C,D: X = ox + (A·x + B·y)·s, Y = oy − (C·x + D·y)·s.
-    #[arg(long, value_parser = parse_matrix, allow_hyphen_values = true)]
-    pub matrix: Option<[f64; 4]>,
-    /// Moves scene and view together by DX,DY pixels (the image must not change).
-    #[arg(long, value_parser = parse_pair, allow_hyphen_values = true)]
-    pub world_offset: Option<DVec2>,
-    /// Perspective tilt in degrees about the image's horizontal centre line.
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
-    pub tilt: f64,
-    /// Variable-font axis values, TAG=VALUE[,TAG=VALUE...] (e.g. wght=700).
-    #[arg(long, value_delimiter = ',', value_parser = parse_variation)]
-    pub variation: Vec<(String, f32)>,
     /// Method parameter KEY=VALUE; repeat for several.
     #[arg(long = "param", value_parser = parse_key_value)]
     pub params: Vec<(String, String)>,
@@ -163,22 +126,12 @@ pub struct RenderArgs {
 }
 
 impl RenderArgs {
-    /// `render --text TEXT --size SIZE --method reference` in the default font and
-    /// frame, with no output: the start of a scene built in code.
-    pub fn text(text: &str, size: f64) -> RenderArgs {
+    /// `view` drawn by the reference, with no output: the start of a render built in
+    /// code.
+    pub fn of(view: ViewArgs) -> RenderArgs {
         RenderArgs {
-            font: None,
-            text: Some(text.to_owned()),
-            glyph_id: None,
-            size,
-            method: "reference".into(),
-            width: None,
-            height: None,
-            origin: None,
-            matrix: None,
-            world_offset: None,
-            tilt: 0.0,
-            variation: Vec::new(),
+            view,
+            method: registry::REFERENCE.name.into(),
             params: Vec::new(),
             out: PathBuf::new(),
             stats: None,
@@ -187,43 +140,9 @@ impl RenderArgs {
     }
 }
 
-/// Margin around the ink box of a default frame, pixels.
-pub const FRAME_MARGIN_PX: f64 = 4.0;
-
-/// What `render --stats` writes.
-#[derive(Clone, Debug, Serialize)]
-pub struct RenderStats {
-    pub method: String,
-    pub params: Vec<(String, String)>,
-    pub adapter: String,
-    /// Median GPU time of one frame after a warm-up; None for CPU methods.
-    pub gpu_ms: Option<f64>,
-    /// (min, max) of the timed frames.
-    pub gpu_ms_range: Option<(f64, f64)>,
-    /// How the frames were timed: timestamp queries, or the CPU's clock where the
-    /// device has none.
-    pub gpu_clock: Option<String>,
-    /// Font outlines and scene for the reference; plus the method's GPU data for GPU
-    /// methods.
-    pub cpu_prepare_ms: f64,
-    /// The reference's rasterization time; None for GPU methods.
-    pub cpu_render_ms: Option<f64>,
-    /// GPU memory the method holds once it has drawn: its scene data and intermediate
-    /// attachments (the coverage target not counted).
-    pub gpu_bytes: u64,
-    pub width: u32,
-    pub height: u32,
-    pub size_px_per_em: f64,
-    pub instances: usize,
-    pub distinct_glyphs: usize,
-    /// Sum of coverage over the image, pixels.
-    pub covered_area_px: f64,
-    /// Error against the reference, when `--error-image` asked for it.
-    pub error: Option<ErrorStats>,
-    /// Curves evaluated per covered pixel, for methods with that notion.
-    pub curves_per_pixel: Option<methods::CurveCost>,
-    /// The meshes built, for methods that draw meshes.
-    pub mesh: Option<methods::MeshStats>,
+/// `--method`'s help: the registry's names and summaries.
+fn method_help() -> String {
+    format!("The method that draws it: {}", registry::help())
 }
 
 /// A rendered image, its statistics, and the reference it was compared with (if any).
@@ -235,122 +154,32 @@ pub struct Rendered {
     pub stats: RenderStats,
 }
 
-/// Loads the font, applying `--variation` values.
-pub fn load_font(args: &RenderArgs) -> Result<Font, Error> {
-    let font = match &args.font {
-        Some(path) => Font::from_path(path)?,
-        None => Font::default_font(),
-    };
-    if args.variation.is_empty() {
-        Ok(font)
-    } else {
-        font.with_variations(&args.variation)
-    }
-}
-
-/// Builds the scene and camera that `args` describe, checking every input.
-pub fn scene_and_camera(args: &RenderArgs) -> Result<(Scene, Camera), Error> {
-    let size = args.size;
-    if !size.is_finite() || size <= 0.0 {
-        return Err(Error::Input(format!(
-            "--size must be a positive number of px/em, got {size}"
-        )));
-    }
-    if size > MAX_SIZE_PX_PER_EM {
-        return Err(Error::Input(format!(
-            "--size {size} is over the limit of {MAX_SIZE_PX_PER_EM}"
-        )));
-    }
-    if !methods::METHOD_NAMES.contains(&args.method.as_str()) {
-        return Err(Error::Input(format!(
-            "unknown method '{}'; choose one of: {}",
-            args.method,
-            methods::METHOD_NAMES.join(", ")
-        )));
-    }
-    let font = load_font(args)?;
-    let scene = match (&args.text, args.glyph_id) {
-        (Some(text), _) => Scene::from_text(&font, text)?,
-        (None, Some(id)) => Scene::from_glyph_id(&font, id)?,
-        (None, None) => return Err(Error::Input("give --text or --glyph-id".into())),
-    };
-    let mut camera = Camera::new(1, 1, size, DVec2::ZERO);
-    if let Some([a, b, c, d]) = args.matrix {
-        camera.matrix = Camera::matrix_from_rows(a, b, c, d);
-    }
-    camera.validate()?;
-    // The frame: ink bounds under the matrix, before any tilt (which turns about the
-    // frame's centre and so needs the frame first).
-    let ink = camera.ink_bounds(&scene)?;
-    camera.origin = args
-        .origin
-        .unwrap_or(DVec2::splat(FRAME_MARGIN_PX) - ink.min);
-    let ink_max = ink.max + camera.origin;
-    let side = |given: Option<u32>, extent: f64, flag: &str| -> Result<u32, Error> {
-        if let Some(v) = given {
-            return Ok(v);
-        }
-        let v = (extent.max(0.0) + FRAME_MARGIN_PX).ceil();
-        if v > f64::from(MAX_IMAGE_SIDE) {
-            return Err(Error::Input(format!(
-                "the text is {v} px {flag} at this size, over the limit of {MAX_IMAGE_SIDE}; \
-                 pass --width and --height to view part of it"
-            )));
-        }
-        Ok(v.max(1.0) as u32)
-    };
-    camera.width = side(args.width, ink_max.x, "wide")?;
-    camera.height = side(args.height, ink_max.y, "tall")?;
-    camera.world_offset = args.world_offset.unwrap_or(DVec2::ZERO);
-    camera.tilt_deg = args.tilt;
-    camera.validate()?;
-    // Fails early, with a clear message, if the tilt puts ink behind the eye.
-    camera.ink_bounds(&scene)?;
-    Ok((scene, camera))
-}
-
-/// How many frames are timed, after how many untimed warm-up frames (shaders compile
-/// lazily on the first frames).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-pub struct FrameTiming {
-    pub warmup: usize,
-    pub frames: usize,
-}
-
-/// `render --stats` times 21 frames after 5 warm-up frames.
-pub const RENDER_TIMING: FrameTiming = FrameTiming {
-    warmup: 5,
-    frames: 21,
-};
-
-/// How `gpu_ms` was measured.
-pub const CLOCK_TIMESTAMPS: &str = "timestamp queries";
-pub const CLOCK_WALL: &str = "wall clock of submit and wait (no timestamp queries)";
-
 /// Renders what `args` describe (nothing is written).
 pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
+    let method = registry::find(&args.method)?;
     let start = Instant::now();
-    let (scene, camera) = scene_and_camera(args)?;
+    let (scene, camera) = args.view.build()?;
     let scene_ms = ms_since(start);
-    let gpu = match args.method.as_str() {
-        "reference" => None,
-        _ => Some(GpuContext::new()?),
+    let gpu = if method.is_reference() {
+        None
+    } else {
+        Some(GpuContext::new()?)
     };
     let Measured {
         image,
         overlay,
         mut stats,
-    } = measure(
+    } = measure::measure(
         gpu.as_ref(),
         &scene,
         &camera,
-        &args.method,
+        method,
         &args.params,
         RENDER_TIMING,
     )?;
     stats.cpu_prepare_ms += scene_ms;
     let reference = match &args.error_image {
-        Some(_) if args.method == "reference" => Some(image.clone()),
+        Some(_) if method.is_reference() => Some(image.clone()),
         Some(_) => Some(reference::rasterize(&scene, &camera)?),
         None => None,
     };
@@ -363,123 +192,6 @@ pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
         reference,
         stats,
     })
-}
-
-/// A method's image of a scene and what was measured drawing it.
-pub struct Measured {
-    pub image: CoverageImage,
-    /// The overlay picture, when the `overlay` parameter asked for one.
-    pub overlay: Option<image::RgbImage>,
-    /// Everything but `error`; `cpu_prepare_ms` is the method's own preparation.
-    pub stats: RenderStats,
-}
-
-/// Draws `scene` through `camera` with method `method` and measures it: the one
-/// measurement `render --stats` and the bench share, so their figures agree. `gpu` is
-/// needed for every method but the reference.
-pub fn measure(
-    gpu: Option<&GpuContext>,
-    scene: &Scene,
-    camera: &Camera,
-    method: &str,
-    params: &[(String, String)],
-    timing: FrameTiming,
-) -> Result<Measured, Error> {
-    let mut stats = RenderStats {
-        method: method.to_owned(),
-        params: params.to_vec(),
-        adapter: String::new(),
-        gpu_ms: None,
-        gpu_ms_range: None,
-        gpu_clock: None,
-        cpu_prepare_ms: 0.0,
-        cpu_render_ms: None,
-        gpu_bytes: 0,
-        width: camera.width,
-        height: camera.height,
-        size_px_per_em: camera.size_px_per_em,
-        instances: scene.instances.len(),
-        distinct_glyphs: scene.glyphs.len(),
-        covered_area_px: 0.0,
-        error: None,
-        curves_per_pixel: None,
-        mesh: None,
-    };
-    let mut overlay = None;
-    let image = if method == "reference" {
-        methods::reject_unknown_params("reference", params, &[])?;
-        stats.adapter = "cpu (exact reference rasterizer)".into();
-        let start = Instant::now();
-        let image = reference::rasterize(scene, camera)?;
-        stats.cpu_render_ms = Some(ms_since(start));
-        image
-    } else {
-        let mut method = methods::create(method, params)?;
-        let gpu = gpu.ok_or_else(|| Error::Gpu("a GPU method needs a GPU context".into()))?;
-        stats.adapter = gpu.adapter_name();
-        let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
-        let start = Instant::now();
-        method.prepare(gpu, scene)?;
-        stats.cpu_prepare_ms = ms_since(start);
-        gpu::render_frame(gpu, method.as_mut(), &target, camera)?;
-        let image = target.readback(gpu)?;
-        if methods::param(params, "overlay").is_some_and(|v| v != "none") {
-            overlay = Some(target.readback_color(gpu)?);
-        }
-        stats.curves_per_pixel = method.curves_per_pixel(gpu, camera)?;
-        let (mut times, clock) = match gpu::time_frames(
-            gpu,
-            method.as_mut(),
-            &target,
-            camera,
-            timing.warmup,
-            timing.frames,
-        )? {
-            Some(times) => (times, CLOCK_TIMESTAMPS),
-            None => (
-                wall_clock_frames(gpu, method.as_mut(), &target, camera, timing)?,
-                CLOCK_WALL,
-            ),
-        };
-        times.sort_by(f64::total_cmp);
-        if let (Some(first), Some(last)) = (times.first(), times.last()) {
-            stats.gpu_ms = metrics::median(times.iter().copied());
-            stats.gpu_ms_range = Some((*first, *last));
-            stats.gpu_clock = Some(clock.to_owned());
-        }
-        // After the frames: what a method allocates on its first frame (intermediate
-        // attachments, meshes that depend on the camera) counts too.
-        stats.gpu_bytes = method.gpu_bytes();
-        stats.mesh = method.mesh_stats();
-        image
-    };
-    stats.covered_area_px = image.sum();
-    Ok(Measured {
-        image,
-        overlay,
-        stats,
-    })
-}
-
-/// Frame times from the CPU's clock, for devices without timestamp queries: each frame
-/// from encoding to the GPU going idle, so it includes the submission's overhead.
-fn wall_clock_frames(
-    gpu: &GpuContext,
-    method: &mut dyn methods::Method,
-    target: &CoverageTarget,
-    camera: &Camera,
-    timing: FrameTiming,
-) -> Result<Vec<f64>, Error> {
-    for _ in 0..timing.warmup {
-        gpu::render_frame(gpu, method, target, camera)?;
-    }
-    (0..timing.frames)
-        .map(|_| {
-            let start = Instant::now();
-            gpu::render_frame(gpu, method, target, camera)?;
-            Ok(ms_since(start))
-        })
-        .collect()
 }
 
 /// `glyphscope render`: renders, then writes the PNG and, if asked, the statistics.
@@ -534,58 +246,4 @@ pub fn run_stability(args: &StabilityArgs) -> Result<bool, Error> {
         eprintln!("claim broken: {line}");
     }
     Ok(broken.is_empty())
-}
-
-pub(crate) fn ms_since(start: Instant) -> f64 {
-    start.elapsed().as_secs_f64() * 1e3
-}
-
-fn parse_number(s: &str) -> Result<f64, String> {
-    let v: f64 = s
-        .trim()
-        .parse()
-        .map_err(|_| format!("'{s}' is not a number"))?;
-    if v.is_finite() {
-        Ok(v)
-    } else {
-        Err(format!("'{s}' is not a finite number"))
-    }
-}
-
-fn parse_numbers<const N: usize>(s: &str) -> Result<[f64; N], String> {
-    let parts: Vec<&str> = s.split(',').collect();
-    if parts.len() != N {
-        return Err(format!("expected {N} comma-separated numbers, got '{s}'"));
-    }
-    let mut out = [0.0; N];
-    for (o, p) in out.iter_mut().zip(parts) {
-        *o = parse_number(p)?;
-    }
-    Ok(out)
-}
-
-fn parse_pair(s: &str) -> Result<DVec2, String> {
-    parse_numbers::<2>(s).map(DVec2::from_array)
-}
-
-fn parse_matrix(s: &str) -> Result<[f64; 4], String> {
-    parse_numbers::<4>(s)
-}
-
-fn parse_key_value(s: &str) -> Result<(String, String), String> {
-    match s.split_once('=') {
-        Some((k, v)) if !k.trim().is_empty() => Ok((k.trim().to_owned(), v.trim().to_owned())),
-        _ => Err(format!("expected KEY=VALUE, got '{s}'")),
-    }
-}
-
-fn parse_variation(s: &str) -> Result<(String, f32), String> {
-    let (tag, value) = parse_key_value(s)?;
-    if tag.len() != 4 || !tag.is_ascii() {
-        return Err(format!(
-            "axis tag '{tag}' must be 4 ASCII characters (e.g. wght)"
-        ));
-    }
-    let value = parse_number(&value)?;
-    Ok((tag, value as f32))
 }

@@ -11,12 +11,14 @@ pub mod coverage;
 pub mod font;
 pub mod geometry;
 pub mod gpu;
+pub mod measure;
 pub mod methods;
 pub mod metrics;
 pub mod reference;
 pub mod scene;
 pub mod shaping;
 pub mod stability;
+pub mod view;
 
 /// Every failure the core reports. Each message is one line a user can act on.
 #[derive(Debug, thiserror::Error)]

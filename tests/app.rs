@@ -13,7 +13,8 @@ use egui_kittest::{Harness, wgpu::WgpuTestRenderer};
 use glyphscope::app::Explorer;
 use glyphscope::app::settings::{Layout, PaneOverlay, PaneSettings, PaneSource, Settings};
 use glyphscope::coverage::CoverageImage;
-use glyphscope::methods::{self, METHOD_NAMES, Overlay};
+use glyphscope::methods::registry::{self, REFERENCE};
+use glyphscope::methods::{self, Overlay};
 use glyphscope::metrics;
 
 const SIZE: [f32; 2] = [1200.0, 700.0];
@@ -102,10 +103,8 @@ fn gpu() -> &'static glyphscope::gpu::GpuContext {
 }
 
 fn gpu_methods() -> Vec<&'static str> {
-    METHOD_NAMES
-        .iter()
-        .copied()
-        .filter(|&n| n != "reference" && methods::create(n, &[]).is_ok())
+    registry::names()
+        .filter(|&n| n != REFERENCE.name && methods::create(n, &[]).is_ok())
         .collect()
 }
 
@@ -163,7 +162,7 @@ fn every_method_in_every_layout_shows_its_own_coverage() {
         }
     }
     // Methods that are not implemented yet are offered greyed, with the reason.
-    for name in METHOD_NAMES.iter().filter(|&&n| n != "reference") {
+    for name in registry::names().filter(|&n| n != REFERENCE.name) {
         if let Err(e) = methods::create(name, &[]) {
             harness.state_mut().settings.panes[0] = PaneSettings::method(name);
             harness.step();
@@ -193,11 +192,11 @@ fn the_method_picker_switches_the_pane_and_greys_what_is_missing() {
     );
     harness.get_by_value("bounds").click();
     harness.run_ok();
-    for name in METHOD_NAMES {
+    for name in registry::names() {
         let disabled = harness.get_by_label(name).accesskit_node().is_disabled();
         assert_eq!(
             disabled,
-            methods::create(name, &[]).is_err() && *name != "reference",
+            methods::create(name, &[]).is_err() && name != REFERENCE.name,
             "{name}"
         );
     }

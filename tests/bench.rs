@@ -6,6 +6,7 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+use glyphscope::methods::registry;
 use serde_json::Value;
 
 fn bin() -> Command {
@@ -46,14 +47,12 @@ fn number(v: &Value, what: &str) -> f64 {
     n
 }
 
-const METHODS: [&str; 6] = [
-    "reference",
-    "winding",
-    "sdf-cells",
-    "xor-stencil",
-    "tessellation",
-    "atlas",
-];
+/// What the bench measures: the reference and every benched method of the registry.
+fn measured() -> Vec<&'static str> {
+    std::iter::once(registry::REFERENCE.name)
+        .chain(registry::benched().map(|m| m.name))
+        .collect()
+}
 
 /// The quick bench on the headlines (the whole `--quick` run takes about two minutes on
 /// a loaded two-core machine; every method and both views are still here).
@@ -77,12 +76,16 @@ fn quick_bench_outputs_agree_with_render() {
     let cases = json["cases"].as_array().unwrap();
     for view in ["own", "moved"] {
         // After caching, --quick measures the atlas and winding, the contrast.
-        let expected: &[&str] = if view == "own" {
-            &METHODS
+        let expected: Vec<&str> = if view == "own" {
+            measured()
         } else {
-            &["reference", "winding", "atlas"]
+            vec![
+                registry::REFERENCE.name,
+                "winding",
+                registry::baseline().name,
+            ]
         };
-        for &method in expected {
+        for method in expected {
             let of: Vec<&Value> = cases
                 .iter()
                 .filter(|c| c["view"] == view && c["method"] == method)

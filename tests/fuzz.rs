@@ -18,9 +18,9 @@ use glyphscope::methods::tessellation::{
 };
 use glyphscope::methods::winding::{BandCount, GlyphData};
 use glyphscope::methods::xor_stencil::{GeometryData, tolerance_halvings};
-use glyphscope::methods::{self, METHOD_NAMES};
+use glyphscope::methods::{frame, registry};
+use glyphscope::reference;
 use glyphscope::scene::Scene;
-use glyphscope::{gpu, reference};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
 
@@ -201,10 +201,11 @@ proptest! {
         let reference = reference::rasterize(&scene, &camera).unwrap();
         let in_range = |v: &f32| (0.0..=1.0).contains(v);
         prop_assert!(reference.data.iter().all(in_range));
-        for name in METHOD_NAMES.iter().filter(|n| **n != "reference") {
-            let mut method = methods::create(name, &[]).unwrap();
+        for info in registry::METHODS.iter().filter(|m| !m.is_reference()) {
+            let name = info.name;
+            let mut method = (info.create.unwrap())(&[]).unwrap();
             method.prepare(common::gpu(), &scene).unwrap();
-            let image = gpu::render_image(common::gpu(), method.as_mut(), &camera).unwrap();
+            let image = frame::render_image(common::gpu(), method.as_mut(), &camera).unwrap();
             prop_assert!(image.data.iter().all(in_range), "{name}: coverage out of [0, 1]");
         }
     }

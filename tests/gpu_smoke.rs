@@ -14,7 +14,8 @@ use glam::DVec2;
 use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
 use glyphscope::geometry::{Contour, Outline, Segment};
-use glyphscope::gpu::{CoverageTarget, GpuContext, render_frame, time_frames};
+use glyphscope::gpu::{CoverageTarget, GpuContext};
+use glyphscope::methods::frame::{render_frame, time_frames};
 use glyphscope::scene::Scene;
 use glyphscope::{Error, methods, reference};
 

@@ -1,10 +1,11 @@
-//! Every method shader, exactly as it is compiled (common part prepended), parses and
-//! validates with naga; and every WGSL file in `shaders/` is one of them, so none goes
-//! unchecked.
+//! Every shader of every method in the registry, exactly as it is compiled (common part
+//! prepended), parses and validates with naga; every WGSL file in `shaders/` belongs to
+//! a method, so none goes unchecked; and every cost heat map draws on the one shared
+//! scale the app's legend reads.
 
 use std::path::Path;
 
-use glyphscope::gpu::shaders::{METHOD_SHADERS, source};
+use glyphscope::methods::registry;
 
 fn validate(name: &str, source: &str) -> Result<(), String> {
     let module = naga::front::wgsl::parse_str(source)
@@ -18,11 +19,14 @@ fn validate(name: &str, source: &str) -> Result<(), String> {
     Ok(())
 }
 
+fn shaders() -> impl Iterator<Item = glyphscope::gpu::shaders::Shader> {
+    registry::METHODS.iter().filter_map(|m| m.shader)
+}
+
 #[test]
 fn every_shader_parses_and_validates() {
-    let failures: Vec<String> = METHOD_SHADERS
-        .iter()
-        .filter_map(|(name, _)| validate(name, &source(name)).err())
+    let failures: Vec<String> = shaders()
+        .filter_map(|s| validate(s.file, &s.source()).err())
         .collect();
     assert!(
         failures.is_empty(),
@@ -33,7 +37,7 @@ fn every_shader_parses_and_validates() {
 }
 
 #[test]
-fn every_wgsl_file_is_compiled_somewhere() {
+fn every_wgsl_file_belongs_to_a_method() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders");
     for entry in std::fs::read_dir(&dir).expect("shaders/ exists") {
         let name = entry
@@ -43,9 +47,28 @@ fn every_wgsl_file_is_compiled_somewhere() {
             .into_owned();
         if name.ends_with(".wgsl") && name != "common.wgsl" {
             assert!(
-                METHOD_SHADERS.iter().any(|(n, _)| *n == name),
-                "shaders/{name} is not in gpu::shaders::METHOD_SHADERS"
+                shaders().any(|s| s.file == name),
+                "shaders/{name} is no method's shader in the registry"
             );
         }
     }
+}
+
+/// The legend labels the top of the heat scale with `COST_SCALE_CURVES`: a shader that
+/// divided its cost by a scale of its own (as sdf-cells once did, by 32 under a "16+"
+/// legend) would draw a different picture than the legend says.
+#[test]
+fn every_cost_heat_map_uses_the_shared_scale() {
+    let mut drawing = 0;
+    for shader in shaders() {
+        assert!(
+            !shader.body.contains("COST_SCALE:") && !shader.body.contains("heat_scale"),
+            "{}: a cost scale of its own",
+            shader.file
+        );
+        if shader.body.contains("/ COST_SCALE)") {
+            drawing += 1;
+        }
+    }
+    assert!(drawing >= 2, "winding and sdf-cells draw cost heat maps");
 }

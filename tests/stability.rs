@@ -4,15 +4,16 @@
 
 mod common;
 
-use glyphscope::stability::{self, cases, claims::VARIANTS, sweep};
+use glyphscope::stability::{self, cases, claims, sweep};
 
 #[test]
 fn every_method_keeps_its_claims_on_every_hard_case() {
     let cases = cases::all();
     let size = sweep::SweepSize::quick();
-    let outcomes = sweep::run(common::gpu(), &cases, VARIANTS, &size, |_| {}).unwrap();
+    let variants = claims::variants();
+    let outcomes = sweep::run(common::gpu(), &cases, &variants, &size, |_| {}).unwrap();
     println!("{}", stability::matrix_table(&outcomes));
-    assert_eq!(outcomes.len(), cases.len() * VARIANTS.len());
+    assert_eq!(outcomes.len(), cases.len() * variants.len());
     for o in &outcomes {
         assert_eq!(o.frames, size.cameras(), "{} × {}", o.case, o.variant);
         assert!(o.mae_255.is_finite(), "{} × {}", o.case, o.variant);

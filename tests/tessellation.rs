@@ -16,7 +16,8 @@ use glyphscope::cli::{RenderArgs, render};
 use glyphscope::coverage::CoverageImage;
 use glyphscope::font::{Font, SHIPPED_FONTS};
 use glyphscope::geometry::{Contour, Outline, Segment, project};
-use glyphscope::gpu::{CoverageTarget, GpuContext, render_frame};
+use glyphscope::gpu::{CoverageTarget, GpuContext};
+use glyphscope::methods::frame::render_frame;
 use glyphscope::methods::tessellation::mesh::GlyphMesh;
 use glyphscope::methods::tessellation::subdivision::{
     self, PointKind, Subdivision, Tag, TaggedContour,
@@ -24,6 +25,7 @@ use glyphscope::methods::tessellation::subdivision::{
 use glyphscope::methods::{self, MeshStats, Method};
 use glyphscope::metrics::{ErrorStats, compare};
 use glyphscope::scene::Scene;
+use glyphscope::view::ViewArgs;
 use glyphscope::{Error, reference};
 
 fn gpu() -> &'static GpuContext {
@@ -559,7 +561,7 @@ fn the_command_line_reports_points_triangles_and_area_error() {
             .chunks(2)
             .map(|kv| (kv[0].to_string(), kv[1].to_string()))
             .collect(),
-        ..RenderArgs::text("gg", 24.0)
+        ..RenderArgs::of(ViewArgs::text("gg", 24.0))
     };
     // A mode's own parameter picks the mode.
     let asa = render(&args(&["threshold", "13"])).unwrap();

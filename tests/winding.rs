@@ -10,7 +10,7 @@ use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
 use glyphscope::font::{Font, SHIPPED_FONTS};
 use glyphscope::gpu::{self, GpuContext};
-use glyphscope::methods::{self, Method};
+use glyphscope::methods::{self, Method, frame};
 use glyphscope::metrics::{ErrorStats, compare};
 use glyphscope::reference;
 use glyphscope::scene::Scene;
@@ -30,7 +30,7 @@ fn winding(params: &[(&str, &str)]) -> Box<dyn Method> {
 
 fn render(gpu: &GpuContext, method: &mut dyn Method, scene: &Scene, cam: &Camera) -> CoverageImage {
     method.prepare(gpu, scene).unwrap();
-    gpu::render_image(gpu, method, cam).unwrap()
+    frame::render_image(gpu, method, cam).unwrap()
 }
 
 /// Error of `winding` with `params` against the reference, for one frame.
@@ -63,7 +63,7 @@ fn sweep(
     let (mut mae, mut max, mut over_half) = (0.0, 0.0f64, 0);
     for k in 0..16 {
         let cam = framed(scene, size, matrix, subpixel(k));
-        let got = gpu::render_image(gpu, method.as_mut(), &cam).unwrap();
+        let got = frame::render_image(gpu, method.as_mut(), &cam).unwrap();
         let s = compare(&got, &reference::rasterize(scene, &cam).unwrap()).unwrap();
         mae += s.mae_255 / 16.0;
         max = max.max(s.max);
@@ -165,7 +165,7 @@ fn far_from_the_origin_nothing_changes() {
     let mut method = winding(&[]);
     let near = render(&gpu, method.as_mut(), &scene, &cam);
     cam.world_offset = DVec2::new(1.0e5, -1.0e5);
-    let far = gpu::render_image(&gpu, method.as_mut(), &cam).unwrap();
+    let far = frame::render_image(&gpu, method.as_mut(), &cam).unwrap();
     assert!(
         compare(&far, &near).unwrap().max < 1e-3,
         "a 100 000 px world offset changed the image"
@@ -299,7 +299,7 @@ fn overlays_draw_classes_and_cost() {
         let mut method = winding(params);
         method.prepare(&gpu, &scene).unwrap();
         let target = gpu::CoverageTarget::new(&gpu, cam.width, cam.height).unwrap();
-        gpu::render_frame(&gpu, method.as_mut(), &target, &cam).unwrap();
+        frame::render_frame(&gpu, method.as_mut(), &target, &cam).unwrap();
         (
             target.readback_color(&gpu).unwrap(),
             target.readback(&gpu).unwrap(),

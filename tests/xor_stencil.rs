@@ -20,7 +20,8 @@ use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
 use glyphscope::font::{Font, SHIPPED_FONTS};
 use glyphscope::geometry::{Contour, Outline, Segment, project};
-use glyphscope::gpu::{CoverageTarget, GpuContext, render_frame};
+use glyphscope::gpu::{CoverageTarget, GpuContext};
+use glyphscope::methods::frame::render_frame;
 use glyphscope::methods::xor_stencil::{FillRule, Settings, XorStencil, jitter_offsets};
 use glyphscope::methods::{self, Method, Overlay};
 use glyphscope::metrics::compare;
@@ -597,7 +598,8 @@ fn within_half_a_level_of_the_reference_with_four_or_more_samples() {
                             DVec2::new(0.25 * offset as f64 + 0.07, 0.3 * k as f64 + 0.11);
                         let camera = framed(&scene, size, *matrix, subpixel);
                         let got =
-                            glyphscope::gpu::render_image(gpu(), &mut method, &camera).unwrap();
+                            glyphscope::methods::frame::render_image(gpu(), &mut method, &camera)
+                                .unwrap();
                         let e =
                             compare(&got, &reference::rasterize(&scene, &camera).unwrap()).unwrap();
                         assert_eq!(

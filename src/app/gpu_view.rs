@@ -13,6 +13,7 @@ use egui_wgpu::wgpu;
 
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
+use crate::gpu::timing::{Timestamps, intervals_ms};
 use crate::gpu::{CoverageTarget, GpuContext};
 use crate::methods::Method;
 
@@ -54,11 +55,11 @@ pub struct Compositor {
 
 /// The compositor's source: the shared heat scale first, then the pane shader.
 pub fn composite_wgsl() -> String {
-    format!(
-        "{}\n{}",
-        crate::gpu::shaders::COMMON_WGSL,
-        include_str!("composite.wgsl")
-    )
+    crate::gpu::shaders::Shader {
+        file: "composite.wgsl",
+        body: include_str!("composite.wgsl"),
+    }
+    .source()
 }
 
 impl Compositor {
@@ -395,9 +396,7 @@ const MAPPING: u8 = 2;
 const MAPPED: u8 = 3;
 
 struct TimerSlot {
-    queries: wgpu::QuerySet,
-    resolved: wgpu::Buffer,
-    readable: wgpu::Buffer,
+    timestamps: Timestamps,
     state: Arc<AtomicU8>,
 }
 
@@ -413,74 +412,53 @@ impl FrameTimer {
         let index = match free {
             Some(i) => i,
             None if self.slots.len() < TIMER_SLOTS => {
-                let buffer = |label, usage| {
-                    gpu.device.create_buffer(&wgpu::BufferDescriptor {
-                        label: Some(label),
-                        size: 16,
-                        usage,
-                        mapped_at_creation: false,
-                    })
-                };
                 self.slots.push(TimerSlot {
-                    queries: gpu.device.create_query_set(&wgpu::QuerySetDescriptor {
-                        label: Some("pane timestamps"),
-                        ty: wgpu::QueryType::Timestamp,
-                        count: 2,
-                    }),
-                    resolved: buffer(
-                        "pane timestamps",
-                        wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
-                    ),
-                    readable: buffer(
-                        "pane timestamp readback",
-                        wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-                    ),
+                    timestamps: Timestamps::new(gpu, "pane timestamps", 2),
                     state: Arc::new(AtomicU8::new(FREE)),
                 });
                 self.slots.len() - 1
             }
             None => return None,
         };
-        encoder.write_timestamp(&self.slots[index].queries, 0);
+        self.slots[index].timestamps.write(encoder, 0);
         Some(index)
     }
 
     fn end(&mut self, encoder: &mut wgpu::CommandEncoder, index: usize) {
         let slot = &self.slots[index];
-        encoder.write_timestamp(&slot.queries, 1);
-        encoder.resolve_query_set(&slot.queries, 0..2, &slot.resolved, 0);
-        encoder.copy_buffer_to_buffer(&slot.resolved, 0, &slot.readable, 0, 16);
+        slot.timestamps.write(encoder, 1);
+        slot.timestamps.resolve(encoder);
         slot.state.store(RECORDED, Ordering::Release);
     }
 
     /// Called from the UI each frame, after the frames recorded so far were submitted:
     /// starts reading the recorded slots and takes the times that have arrived.
     pub fn collect(&mut self, gpu: &GpuContext) {
-        let ms_per_tick = f64::from(gpu.queue.get_timestamp_period()) * 1e-6;
         for slot in &self.slots {
+            let readable = &slot.timestamps.readable;
             match slot.state.load(Ordering::Acquire) {
                 RECORDED => {
                     slot.state.store(MAPPING, Ordering::Release);
                     let state = slot.state.clone();
-                    slot.readable
-                        .map_async(wgpu::MapMode::Read, .., move |result| {
-                            state.store(
-                                if result.is_ok() { MAPPED } else { FREE },
-                                Ordering::Release,
-                            );
-                        });
+                    readable.map_async(wgpu::MapMode::Read, .., move |result| {
+                        state.store(
+                            if result.is_ok() { MAPPED } else { FREE },
+                            Ordering::Release,
+                        );
+                    });
                 }
                 MAPPED => {
-                    if let Ok(bytes) = slot.readable.get_mapped_range(..) {
-                        let ticks: [u64; 2] = bytemuck::pod_read_unaligned(&bytes[..16]);
+                    if let Ok(bytes) = readable.get_mapped_range(..) {
+                        let intervals = intervals_ms(gpu, &bytes);
                         drop(bytes);
-                        let ms = ticks[1].saturating_sub(ticks[0]) as f64 * ms_per_tick;
-                        if self.recent.len() == TIMED_WINDOW {
-                            self.recent.pop_front();
+                        for ms in intervals {
+                            if self.recent.len() == TIMED_WINDOW {
+                                self.recent.pop_front();
+                            }
+                            self.recent.push_back(ms);
                         }
-                        self.recent.push_back(ms);
                     }
-                    slot.readable.unmap();
+                    readable.unmap();
                     slot.state.store(FREE, Ordering::Release);
                 }
                 _ => {}

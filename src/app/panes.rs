@@ -12,12 +12,13 @@ use super::settings::{PaneOverlay, PaneSettings, PaneSource};
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
 use crate::gpu::GpuContext;
-use crate::methods::{self, CurveCost, METHOD_NAMES, Overlay, ParamSpec};
+use crate::methods::registry;
+use crate::methods::{self, CurveCost, Overlay, ParamSpec};
 use crate::metrics::ErrorStats;
 use crate::scene::Scene;
 
 /// The CPU reference's name among the methods.
-pub const REFERENCE: &str = "reference";
+pub const REFERENCE: &str = registry::REFERENCE.name;
 
 /// Every method of this build, and what each can do.
 pub struct Catalog {
@@ -32,19 +33,20 @@ pub struct MethodEntry {
 }
 
 impl Catalog {
-    /// Asks each method of [`METHOD_NAMES`] for itself with default parameters.
+    /// Asks each method of the registry for itself with default parameters.
     pub fn discover() -> Catalog {
-        let methods = METHOD_NAMES
+        let methods = registry::METHODS
             .iter()
-            .map(|&name| {
-                if name == REFERENCE {
+            .map(|info| {
+                let name = info.name;
+                let Some(create) = info.create else {
                     return MethodEntry {
                         name,
                         unavailable: None,
                         overlays: &[],
                     };
-                }
-                match methods::create(name, &[]) {
+                };
+                match create(&[]) {
                     Ok(method) => MethodEntry {
                         name,
                         unavailable: None,

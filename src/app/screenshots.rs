@@ -10,6 +10,7 @@ use super::panes::{Catalog, REFERENCE};
 use super::settings::{Layout, PaneOverlay, PaneSettings, PaneSource, Settings};
 use crate::Error;
 use crate::methods::Overlay;
+use crate::methods::registry::{self, Role};
 
 /// Screen size of every screenshot, pixels.
 const WIDTH: u32 = 1400;
@@ -54,7 +55,7 @@ pub fn write_all(dir: &Path) -> Result<Vec<String>, Error> {
             false,
         )?;
     }
-    if let Some(method) = catalog.gpu_methods().find(|m| m.name != "bounds") {
+    if let Some(method) = catalog.gpu_methods().find(|m| !is_diagnostic(m.name)) {
         let mut pane = PaneSettings::method(method.name);
         pane.overlay = PaneOverlay::Error;
         let mut settings = one_pane(pane);
@@ -74,16 +75,19 @@ pub fn write_all(dir: &Path) -> Result<Vec<String>, Error> {
     Ok(written)
 }
 
-/// The GPU methods in a 2×2 grid (the diagnostic `bounds` last), the reference and a
+/// Whether `name` is a diagnostic (a check of the GPU path, not a way to draw text).
+fn is_diagnostic(name: &str) -> bool {
+    registry::find(name).is_ok_and(|m| m.role == Role::Diagnostic)
+}
+
+/// The GPU methods in a 2×2 grid (the diagnostics last), the reference and a
 /// difference filling any panes left.
 fn methods_side_by_side(catalog: &Catalog) -> Settings {
-    let mut names: Vec<&str> = catalog
-        .gpu_methods()
-        .map(|m| m.name)
-        .filter(|n| *n != "bounds")
-        .collect();
+    let drawn: Vec<&str> = catalog.gpu_methods().map(|m| m.name).collect();
+    let (diagnostics, mut names): (Vec<&str>, Vec<&str>) =
+        drawn.into_iter().partition(|n| is_diagnostic(n));
     names.push(REFERENCE);
-    names.push("bounds");
+    names.extend(diagnostics);
     let mut settings = Settings {
         layout: Layout::Grid,
         ..Settings::default()

@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use serde::{Deserialize, Serialize};
 
 use crate::font::SHIPPED_FONTS;
+use crate::methods::registry;
 
 /// Shown at first start: a pangram and the classic type-proofing word.
 pub const DEFAULT_TEXT: &str = "Hamburgefonstiv\nThe quick brown fox jumps over the lazy dog.";
@@ -37,7 +38,7 @@ impl Default for Settings {
             layout: Layout::SideBySide,
             panes: [
                 PaneSettings::method("winding"),
-                PaneSettings::method("reference"),
+                PaneSettings::method(registry::REFERENCE.name),
                 PaneSettings::method("sdf-cells"),
                 PaneSettings {
                     source: PaneSource::Difference {
@@ -197,7 +198,7 @@ impl PaneSettings {
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum PaneSource {
-    /// A method of [`crate::methods::METHOD_NAMES`] (the reference included) with its
+    /// A method of the registry (the reference included) with its
     /// parameters other than `overlay`, as `--param` would give them.
     Method {
         name: String,

@@ -12,9 +12,10 @@ use egui_plot::{Legend, Line, MarkerShape, Plot, PlotPoints, Points};
 
 use super::panes::Catalog;
 use crate::camera::Camera;
-use crate::cli::{self, FrameTiming};
 use crate::coverage::CoverageImage;
 use crate::gpu::GpuContext;
+use crate::measure::{self, FrameTiming};
+use crate::methods::registry;
 use crate::methods::{self, ParamSpec};
 use crate::metrics;
 use crate::reference;
@@ -309,7 +310,14 @@ fn measure(
         warmup: WARMUP_FRAMES,
         frames: TIMED_FRAMES,
     };
-    let measured = cli::measure(Some(gpu), scene, camera, method, &params, timing)?;
+    let measured = measure::measure(
+        Some(gpu),
+        scene,
+        camera,
+        registry::find(method)?,
+        &params,
+        timing,
+    )?;
     let error = metrics::compare(&measured.image, reference)?;
     let gpu_ms = measured
         .stats

@@ -13,8 +13,9 @@ use super::gpu_view::{CompositeMode, PanePaint, Source, lock};
 use super::outline;
 use super::panes::REFERENCE;
 use super::settings::{PaneOverlay, PaneSource};
-use super::{COST_SCALE_CURVES, Explorer, REST_SECONDS, ViewKey, color, pane_letter};
+use super::{Explorer, REST_SECONDS, ViewKey, color, pane_letter};
 use crate::camera::Camera;
+use crate::gpu::shaders::COST_SCALE_CURVES;
 use crate::methods::Overlay;
 
 /// Space between panes, points.

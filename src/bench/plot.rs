@@ -8,8 +8,8 @@ use plotters::coord::ranged1d::ValueFormatter;
 use plotters::prelude::*;
 
 use super::run::{BenchResult, Case, View};
-use super::sweep::BENCH_METHODS;
 use crate::Error;
+use crate::methods::registry;
 use crate::metrics::pareto_front;
 
 /// Mean errors are drawn no lower than this (1/255): a log axis has no zero.
@@ -18,20 +18,12 @@ const MAE_FLOOR: f64 = 0.01;
 /// Labels per axis: log axes offer one per grid line, which crowd into each other.
 const LABELS: usize = 6;
 
-/// One colour per benched method, in [`BENCH_METHODS`]' order.
-const COLOURS: [RGBColor; 5] = [
-    RGBColor(31, 119, 180),
-    RGBColor(44, 160, 44),
-    RGBColor(214, 39, 40),
-    RGBColor(148, 103, 189),
-    RGBColor(255, 127, 14),
-];
-
+/// A method's colour, from its registry row.
 fn colour(method: &str) -> RGBColor {
-    BENCH_METHODS
-        .iter()
-        .position(|m| *m == method)
-        .map_or(BLACK, |i| COLOURS[i % COLOURS.len()])
+    registry::find(method).map_or(BLACK, |m| {
+        let [r, g, b] = m.colour;
+        RGBColor(r, g, b)
+    })
 }
 
 fn plot_error(e: impl std::fmt::Debug) -> Error {
@@ -75,7 +67,7 @@ fn draw_legend<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
 
 /// (GPU ms, MAE) of a case, if it was timed on the GPU.
 fn time_and_error(case: &Case) -> Option<(f64, f64)> {
-    if case.method == "reference" {
+    if case.is_reference() {
         return None;
     }
     Some((case.gpu_ms?, case.error.mae_255.max(MAE_FLOOR)))
@@ -134,10 +126,10 @@ pub fn time_against_error(result: &BenchResult, path: &Path) -> Result<(), Error
             &mut chart,
             &format!("GPU ms per frame ({})", result.adapter),
         )?;
-        for method in BENCH_METHODS {
+        for method in registry::benched().map(|m| m.name) {
             let points: Vec<(f64, f64)> = cases
                 .iter()
-                .filter(|c| c.method == *method)
+                .filter(|c| c.method == method)
                 .filter_map(|c| time_and_error(c))
                 .collect();
             if points.is_empty() {
@@ -153,7 +145,7 @@ pub fn time_against_error(result: &BenchResult, path: &Path) -> Result<(), Error
             chart
                 .draw_series(points.iter().map(|&p| Circle::new(p, 4, c.filled())))
                 .map_err(plot_error)?
-                .label(*method)
+                .label(method)
                 .legend(move |(x, y)| Circle::new((x + 8, y), 4, c.filled()));
         }
         draw_legend(&mut chart)?;

@@ -10,7 +10,7 @@ pub const ERROR_LEVELS: &[f64] = &[0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0];
 
 /// A case's GPU time over the atlas baseline's in the same scene and view.
 pub fn ratio_to_baseline(result: &BenchResult, case: &Case) -> Option<f64> {
-    if case.method == "reference" {
+    if case.is_reference() {
         return None;
     }
     let baseline = result
@@ -25,7 +25,7 @@ pub fn fastest_within<'a>(cases: &[&'a Case], level: f64) -> Option<&'a Case> {
     cases
         .iter()
         .copied()
-        .filter(|c| c.method != "reference" && c.error.mae_255 <= level)
+        .filter(|c| !c.is_reference() && c.error.mae_255 <= level)
         .filter_map(|c| Some((c, c.gpu_ms?)))
         .min_by(|(_, a), (_, b)| a.total_cmp(b))
         .map(|(c, _)| c)
@@ -162,7 +162,7 @@ fn summary(result: &BenchResult, md: &mut String) {
         let gpu: Vec<&Case> = cases
             .iter()
             .copied()
-            .filter(|c| c.method != "reference")
+            .filter(|c| !c.is_reference())
             .collect();
         if gpu.is_empty() {
             continue;

@@ -1,16 +1,17 @@
-//! Measuring: every case through `cli::measure`, the function `render --stats` uses, with
+//! Measuring: every case through [`measure::measure`], the function `render --stats` uses, with
 //! the reference rasterized once per scene and view and shared by every case.
 
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
 
 use super::scenes::{self, BenchScene};
-use super::sweep::{self, BENCH_METHODS};
+use super::sweep;
 use crate::Error;
 use crate::camera::Camera;
-use crate::cli::{self, FrameTiming, Measured, RenderArgs};
 use crate::gpu::GpuContext;
-use crate::methods::{self, atlas};
+use crate::measure::{self, FrameTiming, Measured};
+use crate::methods::registry::{self, MethodInfo};
+use crate::methods::{self, atlas, winding};
 use crate::metrics::{self, ErrorStats};
 use crate::scene::Scene;
 
@@ -49,7 +50,8 @@ pub struct BenchOptions {
     pub quick: bool,
     /// Scene names; empty for all.
     pub scenes: Vec<String>,
-    /// Method names (of [`BENCH_METHODS`] and `reference`); empty for all.
+    /// Method names (the benched methods of the registry, and the reference); empty
+    /// for all.
     pub methods: Vec<String>,
     /// Timed frames per case, over all rounds, overriding the default (21, or 3 with
     /// `quick`).
@@ -128,7 +130,12 @@ impl Case {
 
     /// Whether this is the baseline every time is divided by.
     pub fn is_baseline(&self) -> bool {
-        self.method == sweep::BASELINE && self.settings() == "default"
+        self.method == registry::baseline().name && self.settings() == "default"
+    }
+
+    /// Whether this is the reference's own row (its CPU time, no GPU time).
+    pub fn is_reference(&self) -> bool {
+        self.method == registry::REFERENCE.name
     }
 }
 
@@ -146,24 +153,24 @@ impl ViewUnderTest<'_> {
     fn measure(
         &self,
         gpu: &GpuContext,
-        method: &str,
+        method: &MethodInfo,
         params: Vec<(String, String)>,
         timing: FrameTiming,
     ) -> Result<Case, Error> {
         let reference = &self.reference;
-        let (stats, error) = if method == "reference" {
+        let (stats, error) = if method.is_reference() {
             let exact = metrics::compare(&reference.image, &reference.image)?;
             (reference.stats.clone(), exact)
         } else {
             let (scene, camera) = (&self.scene, &self.camera);
-            let measured = cli::measure(Some(gpu), scene, camera, method, &params, timing)?;
+            let measured = measure::measure(Some(gpu), scene, camera, method, &params, timing)?;
             let error = metrics::compare(&measured.image, &reference.image)?;
             (measured.stats, error)
         };
         Ok(Case {
             scene: self.scene_name.to_owned(),
             view: self.view,
-            method: method.to_owned(),
+            method: method.name.to_owned(),
             params,
             gpu_ms: stats.gpu_ms.or(stats.cpu_render_ms),
             gpu_ms_range: stats.gpu_ms_range,
@@ -203,7 +210,7 @@ fn distinct<T: PartialEq>(names: &[T]) -> Vec<&T> {
 }
 
 /// Checks the options, naming what is unknown.
-fn check(options: &BenchOptions) -> Result<(Vec<BenchScene>, Vec<String>), Error> {
+fn check(options: &BenchOptions) -> Result<(Vec<BenchScene>, Vec<&'static MethodInfo>), Error> {
     let names: Vec<&str> = if options.scenes.is_empty() {
         scenes::SCENE_NAMES.to_vec()
     } else {
@@ -216,23 +223,23 @@ fn check(options: &BenchOptions) -> Result<(Vec<BenchScene>, Vec<String>), Error
         .into_iter()
         .map(scenes::scene)
         .collect::<Result<Vec<_>, _>>()?;
-    let methods: Vec<String> = if options.methods.is_empty() {
-        std::iter::once("reference")
-            .chain(BENCH_METHODS.iter().copied())
-            .map(String::from)
-            .collect()
+    let measurable = || std::iter::once(&registry::REFERENCE).chain(registry::benched());
+    let methods = if options.methods.is_empty() {
+        measurable().collect()
     } else {
-        options.methods.clone()
+        distinct(&options.methods)
+            .into_iter()
+            .map(|name| {
+                measurable().find(|m| m.name == name).ok_or_else(|| {
+                    let names: Vec<_> = measurable().map(|m| m.name).collect();
+                    Error::Input(format!(
+                        "the bench has no method '{name}'; choose from: {}",
+                        names.join(", ")
+                    ))
+                })
+            })
+            .collect::<Result<Vec<_>, _>>()?
     };
-    for method in &methods {
-        if method != "reference" && !BENCH_METHODS.contains(&method.as_str()) {
-            return Err(Error::Input(format!(
-                "the bench has no method '{method}'; choose from: reference, {}",
-                BENCH_METHODS.join(", ")
-            )));
-        }
-    }
-    let methods: Vec<String> = distinct(&methods).into_iter().cloned().collect();
     if options.frames == Some(0) {
         return Err(Error::Input("--frames must be at least 1".into()));
     }
@@ -243,26 +250,35 @@ fn check(options: &BenchOptions) -> Result<(Vec<BenchScene>, Vec<String>), Error
 /// caching, the atlas's settings and each other method's default (how they fare under
 /// the same zoom and turn) — with `quick`, only `winding`'s, the contrast.
 fn settings_for(
-    method: &str,
+    method: &MethodInfo,
     view: View,
     quick: bool,
     cache_px_per_em: f64,
 ) -> Vec<Vec<(String, String)>> {
-    if method == "reference" {
+    if method.is_reference() {
         return vec![Vec::new()];
     }
+    let is_baseline = method.role == registry::Role::Baseline;
     let mut all = sweep::sweep(method, quick);
-    if view == View::Moved && method != "atlas" {
-        let kept = if quick && method != "winding" { 0 } else { 1 };
+    if view == View::Moved && !is_baseline {
+        let kept = if quick && method.name != QUICK_MOVED_CONTRAST {
+            0
+        } else {
+            1
+        };
         all.truncate(kept);
     }
-    if method == "atlas" {
+    if is_baseline {
         for params in &mut all {
             params.push(("cache_px_per_em".into(), cache_px_per_em.to_string()));
         }
     }
     all
 }
+
+/// In the view after caching, `--quick` keeps one method's default beside the atlas:
+/// the contrast.
+const QUICK_MOVED_CONTRAST: &str = winding::NAME;
 
 /// Runs the bench, showing progress on stderr when it is a terminal.
 pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
@@ -304,17 +320,23 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
         cases: Vec::new(),
     };
     for bench_scene in &chosen {
-        let (_, own_camera) = cli::scene_and_camera(&bench_scene.args)?;
+        let (_, own_camera) = bench_scene.args.build()?;
         let cache = atlas::auto_cache_size(own_camera.size_px_per_em);
         for view in [View::Own, View::Moved] {
             let args = match view {
                 View::Own => bench_scene.args.clone(),
                 View::Moved => scenes::moved_args(&bench_scene.args, &own_camera),
             };
-            let (scene, camera) = cli::scene_and_camera(&args)?;
+            let (scene, camera) = args.build()?;
             progress.set_message(format!("{} ({view:?}): reference", bench_scene.name));
-            let reference =
-                cli::measure(None, &scene, &camera, "reference", &[], timing.per_round)?;
+            let reference = measure::measure(
+                None,
+                &scene,
+                &camera,
+                &registry::REFERENCE,
+                &[],
+                timing.per_round,
+            )?;
             result.scenes.push(SceneInfo {
                 name: bench_scene.name.into(),
                 view,
@@ -325,7 +347,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
                 instances: scene.instances.len(),
                 distinct_glyphs: scene.glyphs.len(),
                 atlas_cache_px_per_em: cache,
-                render_args: render_command(&args),
+                render_args: args.command_line(),
             });
             let here = ViewUnderTest {
                 scene_name: bench_scene.name,
@@ -334,12 +356,12 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
                 camera,
                 reference,
             };
-            let plan: Vec<(&String, Vec<(String, String)>)> = methods
+            let plan: Vec<(&MethodInfo, Vec<(String, String)>)> = methods
                 .iter()
                 .flat_map(|m| {
                     settings_for(m, view, options.quick, cache)
                         .into_iter()
-                        .map(move |p| (m, p))
+                        .map(move |p| (*m, p))
                 })
                 .collect();
             let mut rounds = Vec::with_capacity(timing.rounds);
@@ -349,8 +371,9 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
                     let settings: Vec<String> =
                         params.iter().map(|(k, v)| format!("{k}={v}")).collect();
                     progress.set_message(format!(
-                        "{} ({view:?}): {method} {}",
+                        "{} ({view:?}): {} {}",
                         bench_scene.name,
+                        method.name,
                         settings.join(" ")
                     ));
                     round.push(here.measure(&gpu, method, params.clone(), timing.per_round)?);
@@ -399,40 +422,6 @@ fn combine_rounds(rounds: Vec<Vec<Case>>) -> Vec<Case> {
             }
         })
         .collect()
-}
-
-/// The `render` arguments that draw a view (add `--method` and `--param`s).
-fn render_command(args: &RenderArgs) -> Vec<String> {
-    let mut out = Vec::new();
-    if let Some(font) = &args.font {
-        out.extend(["--font".into(), font.display().to_string()]);
-    }
-    if let Some(text) = &args.text {
-        out.extend(["--text".into(), text.clone()]);
-    }
-    out.extend(["--size".into(), args.size.to_string()]);
-    let pair = |v: glam::DVec2| format!("{},{}", v.x, v.y);
-    if let (Some(w), Some(h)) = (args.width, args.height) {
-        out.extend([
-            "--width".into(),
-            w.to_string(),
-            "--height".into(),
-            h.to_string(),
-        ]);
-    }
-    if let Some(origin) = args.origin {
-        out.extend(["--origin".into(), pair(origin)]);
-    }
-    if let Some(m) = args.matrix {
-        out.extend(["--matrix".into(), m.map(|v| v.to_string()).join(",")]);
-    }
-    if args.tilt != 0.0 {
-        out.extend(["--tilt".into(), args.tilt.to_string()]);
-    }
-    for (tag, value) in &args.variation {
-        out.extend(["--variation".into(), format!("{tag}={value}")]);
-    }
-    out
 }
 
 #[cfg(test)]

@@ -7,9 +7,9 @@ use glam::{DMat2, DVec2};
 
 use crate::Error;
 use crate::camera::Camera;
-use crate::cli::RenderArgs;
 use crate::font::Font;
 use crate::geometry::Segment;
+use crate::view::ViewArgs;
 
 /// The standard page: 2 929 glyphs of DejaVu Sans.
 pub const PAGE_TEXT: &str = include_str!("../../tests/data/page.txt");
@@ -19,12 +19,12 @@ pub const MOVED_ZOOM: f64 = 2.5;
 /// …and turns the text by this much, degrees.
 pub const MOVED_ROTATION_DEG: f64 = 30.0;
 
-/// A standard scene: what it shows, and the `render` arguments that draw it.
+/// A standard scene: what it shows, and the view that draws it.
 #[derive(Clone, Debug)]
 pub struct BenchScene {
     pub name: &'static str,
     pub about: &'static str,
-    pub args: RenderArgs,
+    pub args: ViewArgs,
 }
 
 /// Every standard scene's name, in the order they run.
@@ -56,7 +56,7 @@ pub fn scene(name: &str) -> Result<BenchScene, Error> {
     let (about, args) = match name {
         "page" => (
             "the standard page: 2 929 glyphs of DejaVu Sans at 16 px/em, 1920×1080",
-            RenderArgs {
+            ViewArgs {
                 width: Some(1920),
                 height: Some(1080),
                 origin: Some(DVec2::new(24.0, 40.0)),
@@ -76,7 +76,7 @@ pub fn scene(name: &str) -> Result<BenchScene, Error> {
         "rotated" => (
             "the page's first six lines at 20 px/em, rotated 30° and tilted 35° in \
              perspective",
-            RenderArgs {
+            ViewArgs {
                 matrix: Some(rotation_rows(30.0)),
                 tilt: 35.0,
                 ..text_args(None, &first_lines(PAGE_TEXT, 6), 20.0)
@@ -93,7 +93,7 @@ pub fn scene(name: &str) -> Result<BenchScene, Error> {
         ),
         "inter-900" => (
             "Inter variable at weight 900, whose glyphs overlap their own contours, 48 px/em",
-            RenderArgs {
+            ViewArgs {
                 variation: vec![("wght".into(), 900.0)],
                 ..text_args(
                     Some("Inter-roman.var.ttf"),
@@ -117,15 +117,15 @@ pub fn scene(name: &str) -> Result<BenchScene, Error> {
 
 /// The scene's view after caching: zoomed by [`MOVED_ZOOM`] about the image centre and
 /// turned by [`MOVED_ROTATION_DEG`], same image size and tilt. `camera` is the scene's
-/// own, as `cli::scene_and_camera` framed it.
-pub fn moved_args(args: &RenderArgs, camera: &Camera) -> RenderArgs {
+/// own, as [`ViewArgs::build`] framed it.
+pub fn moved_args(args: &ViewArgs, camera: &Camera) -> ViewArgs {
     let rotation = rotation(MOVED_ROTATION_DEG);
     // Image space is font space flipped in y: the same turn seen there is F·R·F.
     let flip = DMat2::from_diagonal(DVec2::new(1.0, -1.0));
     let centre = DVec2::new(f64::from(camera.width), f64::from(camera.height)) / 2.0;
     let origin = centre + MOVED_ZOOM * (flip * rotation * flip) * (camera.origin - centre);
     let m = rotation * camera.matrix;
-    RenderArgs {
+    ViewArgs {
         size: camera.size_px_per_em * MOVED_ZOOM,
         width: Some(camera.width),
         height: Some(camera.height),
@@ -141,10 +141,10 @@ fn font_path(file: &str) -> PathBuf {
     PathBuf::from("fonts").join(file)
 }
 
-fn text_args(font: Option<&str>, text: &str, size: f64) -> RenderArgs {
-    RenderArgs {
+fn text_args(font: Option<&str>, text: &str, size: f64) -> ViewArgs {
+    ViewArgs {
         font: font.map(font_path),
-        ..RenderArgs::text(text, size)
+        ..ViewArgs::text(text, size)
     }
 }
 
@@ -164,7 +164,7 @@ fn rotation_rows(degrees: f64) -> [f64; 4] {
 
 /// 'O' at 20 000 px/em seen through a 512×512 window whose centre is the point halfway
 /// along the glyph's first curve: the edge, as the camera sees it zoomed right in.
-fn edge_args() -> Result<RenderArgs, Error> {
+fn edge_args() -> Result<ViewArgs, Error> {
     const SIZE: f64 = 20_000.0;
     const SIDE: u32 = 512;
     let font = Font::default_font();
@@ -179,7 +179,7 @@ fn edge_args() -> Result<RenderArgs, Error> {
         .ok_or_else(|| Error::Font("'O' has no curve".into()))?;
     let s = SIZE / font.units_per_em();
     let centre = f64::from(SIDE) / 2.0;
-    Ok(RenderArgs {
+    Ok(ViewArgs {
         width: Some(SIDE),
         height: Some(SIDE),
         origin: Some(DVec2::new(centre - on_edge.x * s, centre + on_edge.y * s)),
@@ -190,16 +190,15 @@ fn edge_args() -> Result<RenderArgs, Error> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::cli::scene_and_camera;
     use crate::geometry::project;
 
     #[test]
     fn every_scene_builds() {
         for name in SCENE_NAMES {
             let scene = scene(name).unwrap();
-            let (s, camera) = scene_and_camera(&scene.args).unwrap();
+            let (s, camera) = scene.args.build().unwrap();
             assert!(!s.instances.is_empty(), "{name}");
-            scene_and_camera(&moved_args(&scene.args, &camera)).unwrap();
+            moved_args(&scene.args, &camera).build().unwrap();
         }
         assert!(scene("nope").is_err());
     }
@@ -208,8 +207,8 @@ mod tests {
     #[test]
     fn moved_view_zooms_and_turns_about_the_centre() {
         let page = scene("page").unwrap();
-        let (s, camera) = scene_and_camera(&page.args).unwrap();
-        let (_, moved) = scene_and_camera(&moved_args(&page.args, &camera)).unwrap();
+        let (s, camera) = page.args.build().unwrap();
+        let (_, moved) = moved_args(&page.args, &camera).build().unwrap();
         let pen = s.instances[100].position;
         let centre = DVec2::new(960.0, 540.0);
         let before = project(&camera.glyph_to_image(s.units_per_em, pen), DVec2::ZERO) - centre;

@@ -1,41 +1,48 @@
-//! Method shaders as they are compiled: each file in `shaders/` prefixed with the shared
-//! `common.wgsl`. The naga test validates exactly these sources.
+//! Shaders as they are compiled: a file of `shaders/` prefixed with the shared
+//! `common.wgsl`. Each method names its own file ([`crate::method_shader!`]); the naga
+//! test validates exactly these sources, for every method of the registry.
 
-/// Shared WGSL prepended to every method shader.
+/// Shared WGSL prepended to every shader.
 pub const COMMON_WGSL: &str = include_str!("../../shaders/common.wgsl");
 
-/// Every method shader, by file name. A new shader is added here, and only here.
-pub const METHOD_SHADERS: &[(&str, &str)] = &[
-    ("atlas.wgsl", include_str!("../../shaders/atlas.wgsl")),
-    ("bounds.wgsl", include_str!("../../shaders/bounds.wgsl")),
-    ("winding.wgsl", include_str!("../../shaders/winding.wgsl")),
-    (
-        "tessellation.wgsl",
-        include_str!("../../shaders/tessellation.wgsl"),
-    ),
-    (
-        "xor_stencil.wgsl",
-        include_str!("../../shaders/xor_stencil.wgsl"),
-    ),
-    (
-        "sdf_cells.wgsl",
-        include_str!("../../shaders/sdf_cells.wgsl"),
-    ),
-];
+/// Curves evaluated per pixel at the top of every cost heat map's scale: `COST_SCALE`
+/// in the shaders, and the legend's label.
+pub const COST_SCALE_CURVES: u32 = 16;
 
-/// The full source of a method shader, common part included.
-pub fn source(file: &str) -> String {
-    let (_, body) = METHOD_SHADERS
-        .iter()
-        .find(|(name, _)| *name == file)
-        .unwrap_or_else(|| panic!("shader '{file}' is not in METHOD_SHADERS"));
-    format!("{COMMON_WGSL}\n{body}")
+/// One WGSL file of `shaders/`, its text included in the binary.
+#[derive(Clone, Copy, Debug)]
+pub struct Shader {
+    /// Its file name in `shaders/`.
+    pub file: &'static str,
+    /// The file's text, without the common part.
+    pub body: &'static str,
 }
 
-/// Compiles a method shader on `device`.
-pub fn create_module(device: &wgpu::Device, file: &str) -> wgpu::ShaderModule {
-    device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some(file),
-        source: wgpu::ShaderSource::Wgsl(source(file).into()),
-    })
+impl Shader {
+    /// The full source, common part included.
+    pub fn source(&self) -> String {
+        format!(
+            "const COST_SCALE: f32 = {COST_SCALE_CURVES}.0;\n{COMMON_WGSL}\n{}",
+            self.body
+        )
+    }
+
+    /// Compiles it on `device`.
+    pub fn module(&self, device: &wgpu::Device) -> wgpu::ShaderModule {
+        device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(self.file),
+            source: wgpu::ShaderSource::Wgsl(self.source().into()),
+        })
+    }
+}
+
+/// The [`Shader`] of `shaders/$file`, wherever the module naming it sits.
+#[macro_export]
+macro_rules! method_shader {
+    ($file:literal) => {
+        $crate::gpu::shaders::Shader {
+            file: $file,
+            body: include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/shaders/", $file)),
+        }
+    };
 }

@@ -35,46 +35,6 @@ impl CoverageTarget {
         }
     };
 
-    /// The pipeline of methods that draw one quad (a 4-vertex triangle strip) per
-    /// instance, `vs_main` and `fs_main` of `module`, adding coverage up in a target.
-    pub fn quad_pipeline(
-        device: &wgpu::Device,
-        label: &str,
-        layout: &wgpu::PipelineLayout,
-        module: &wgpu::ShaderModule,
-        constants: &[(&str, f64)],
-        vertex_buffers: &[Option<wgpu::VertexBufferLayout<'_>>],
-    ) -> wgpu::RenderPipeline {
-        let options = wgpu::PipelineCompilationOptions {
-            constants,
-            ..Default::default()
-        };
-        device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some(label),
-            layout: Some(layout),
-            vertex: wgpu::VertexState {
-                module,
-                entry_point: Some("vs_main"),
-                compilation_options: options.clone(),
-                buffers: vertex_buffers,
-            },
-            primitive: wgpu::PrimitiveState {
-                topology: wgpu::PrimitiveTopology::TriangleStrip,
-                ..Default::default()
-            },
-            depth_stencil: None,
-            multisample: wgpu::MultisampleState::default(),
-            fragment: Some(wgpu::FragmentState {
-                module,
-                entry_point: Some("fs_main"),
-                compilation_options: options,
-                targets: &[Some(Self::ADDITIVE)],
-            }),
-            multiview_mask: None,
-            cache: None,
-        })
-    }
-
     /// Bytes of one texel of [`Self::FORMAT`].
     const TEXEL_BYTES: u32 = 8;
 

@@ -1,106 +1,81 @@
-//! GPU time per frame, from timestamps written on the command encoder just before and
-//! just after a method records its frame.
+//! Timestamp queries: a query set with the buffers that resolve it and bring it back to
+//! the CPU. The measured frame loop and the app's live pane timer both time with it.
 
-use super::{CoverageTarget, GpuContext, check_frame, render_frame};
+use super::GpuContext;
 use crate::Error;
-use crate::camera::Camera;
-use crate::methods::Method;
 
 /// Bytes of one resolved timestamp.
 const TIMESTAMP_BYTES: u64 = 8;
 
-/// GPU time of `frames` frames, in milliseconds each, after `warmup` untimed frames.
-/// `Ok(None)` when the device has no timestamp queries.
-///
-/// Only the GPU work the method records on the encoder is timed: data it uploads with
-/// `Queue::write_buffer` is copied before the encoder runs, and CPU time is not counted.
-pub fn time_frames(
-    gpu: &GpuContext,
-    method: &mut dyn Method,
-    target: &CoverageTarget,
-    camera: &Camera,
-    warmup: usize,
-    frames: usize,
-) -> Result<Option<Vec<f64>>, Error> {
-    if !gpu.has_timestamps() {
-        return Ok(None);
-    }
-    check_frame(target, camera)?;
-    // First frames pay for lazy shader compilation and first-use allocations.
-    for _ in 0..warmup {
-        render_frame(gpu, method, target, camera)?;
-    }
-    // A query set holds at most QUERY_SET_MAX_QUERIES timestamps: two a frame.
-    let batch_limit = wgpu::QUERY_SET_MAX_QUERIES / 2;
-    let mut times = Vec::with_capacity(frames);
-    while times.len() < frames {
-        let batch = u32::try_from(frames - times.len())
-            .unwrap_or(u32::MAX)
-            .min(batch_limit);
-        times.extend(time_batch(gpu, method, target, camera, batch)?);
-    }
-    Ok(Some(times))
+/// `count` timestamps written on command encoders, resolved and read back in pairs:
+/// timestamp 2k opens interval k and 2k + 1 closes it.
+pub struct Timestamps {
+    queries: wgpu::QuerySet,
+    resolved: wgpu::Buffer,
+    /// Mappable copy of `resolved`.
+    pub readable: wgpu::Buffer,
+    count: u32,
 }
 
-fn time_batch(
-    gpu: &GpuContext,
-    method: &mut dyn Method,
-    target: &CoverageTarget,
-    camera: &Camera,
-    frames: u32,
-) -> Result<Vec<f64>, Error> {
-    let queries = 2 * frames;
-    let bytes = u64::from(queries) * TIMESTAMP_BYTES;
-    let resolved_bytes = gpu.catching_errors(&format!("timing '{}'", method.name()), || {
-        let timestamps = gpu.device.create_query_set(&wgpu::QuerySetDescriptor {
-            label: Some("frame timestamps"),
-            ty: wgpu::QueryType::Timestamp,
-            count: queries,
-        });
-        for frame in 0..frames {
-            let mut encoder = gpu
-                .device
-                .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                    label: Some("timed frame"),
-                });
-            encoder.write_timestamp(&timestamps, 2 * frame);
-            method.encode(gpu, &mut encoder, target, camera)?;
-            encoder.write_timestamp(&timestamps, 2 * frame + 1);
-            gpu.queue.submit([encoder.finish()]);
-            // One frame at a time, as `render_frame` draws them: no frame's work overlaps
-            // the next one's timestamps.
-            gpu.wait_idle()?;
+impl Timestamps {
+    /// At most [`wgpu::QUERY_SET_MAX_QUERIES`] timestamps; the device must have
+    /// timestamp queries ([`GpuContext::has_timestamps`]).
+    pub fn new(gpu: &GpuContext, label: &str, count: u32) -> Timestamps {
+        let bytes = u64::from(count) * TIMESTAMP_BYTES;
+        let buffer = |usage| {
+            gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size: bytes,
+                usage,
+                mapped_at_creation: false,
+            })
+        };
+        Timestamps {
+            queries: gpu.device.create_query_set(&wgpu::QuerySetDescriptor {
+                label: Some(label),
+                ty: wgpu::QueryType::Timestamp,
+                count,
+            }),
+            resolved: buffer(wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC),
+            readable: buffer(wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ),
+            count,
         }
-        let resolved = gpu.device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("resolved timestamps"),
-            size: bytes,
-            usage: wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
-            mapped_at_creation: false,
-        });
-        let readable = gpu.device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("timestamp readback"),
-            size: bytes,
-            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-            mapped_at_creation: false,
-        });
+    }
+
+    /// Writes timestamp `index` when the GPU reaches this point of `encoder`.
+    pub fn write(&self, encoder: &mut wgpu::CommandEncoder, index: u32) {
+        encoder.write_timestamp(&self.queries, index);
+    }
+
+    /// Records the resolve of every timestamp into [`Self::readable`].
+    pub fn resolve(&self, encoder: &mut wgpu::CommandEncoder) {
+        encoder.resolve_query_set(&self.queries, 0..self.count, &self.resolved, 0);
+        let bytes = u64::from(self.count) * TIMESTAMP_BYTES;
+        encoder.copy_buffer_to_buffer(&self.resolved, 0, &self.readable, 0, bytes);
+    }
+
+    /// Submits the resolve, waits for it and returns each interval's length, ms.
+    pub fn read_intervals(&self, gpu: &GpuContext) -> Result<Vec<f64>, Error> {
         let mut encoder = gpu
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor {
                 label: Some("resolve timestamps"),
             });
-        encoder.resolve_query_set(&timestamps, 0..queries, &resolved, 0);
-        encoder.copy_buffer_to_buffer(&resolved, 0, &readable, 0, bytes);
+        self.resolve(&mut encoder);
         gpu.queue.submit([encoder.finish()]);
-        gpu.read_buffer(&readable)
-    })?;
+        Ok(intervals_ms(gpu, &gpu.read_buffer(&self.readable)?))
+    }
+}
 
+/// Lengths of the intervals in resolved timestamp bytes (pairs of start and end), ms.
+pub fn intervals_ms(gpu: &GpuContext, resolved: &[u8]) -> Vec<f64> {
     let ms_per_tick = f64::from(gpu.queue.get_timestamp_period()) * 1e-6;
-    let ticks: Vec<u64> = resolved_bytes
+    let ticks: Vec<u64> = resolved
         .chunks_exact(TIMESTAMP_BYTES as usize)
         .map(|b| u64::from_le_bytes(b.try_into().expect("eight bytes")))
         .collect();
-    Ok(ticks
+    ticks
         .chunks_exact(2)
-        .map(|frame| frame[1].saturating_sub(frame[0]) as f64 * ms_per_tick)
-        .collect())
+        .map(|pair| pair[1].saturating_sub(pair[0]) as f64 * ms_per_tick)
+        .collect()
 }

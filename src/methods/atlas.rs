@@ -17,14 +17,38 @@
 use glam::DVec2;
 
 use super::instances::Instances;
+use super::registry::{MethodInfo, Role, bench_at};
 use super::{Method, ParamSpec, Params, param, reject_unknown_params};
 use crate::Error;
 use crate::camera::Camera;
-use crate::gpu::{self, CoverageTarget, GpuContext};
+use crate::gpu::kit::{self, PipelineBuilder, Slot};
+use crate::gpu::shaders::Shader;
+use crate::gpu::{CoverageTarget, GpuContext};
 use crate::reference;
 use crate::scene::{Instance, Scene};
 
+/// `atlas`' row in the registry: the baseline every bench time is divided by.
+pub const INFO: MethodInfo = MethodInfo {
+    name: NAME,
+    summary: "the baseline: each glyph rasterized once by the reference into a texture \
+              atlas at 4 × 4 sub-pixel phases, one bilinear quad per glyph",
+    role: Role::Baseline,
+    shader: Some(SHADER),
+    params: PARAMS,
+    colour: [255, 127, 14],
+    // The cache size is added per scene: the scene's own.
+    bench: &[
+        bench_at(&[], true),
+        bench_at(&[("subpixel", "1")], true),
+        bench_at(&[("subpixel", "off")], false),
+    ],
+    // Exact only at the size it cached: it claims nothing under a moving camera.
+    claims: &[],
+    create: Some(|params| Ok(Box::new(Atlas::new(params)?))),
+};
+
 pub const NAME: &str = "atlas";
+const SHADER: Shader = crate::method_shader!("atlas.wgsl");
 
 /// Caching never goes above this size by itself: a glyph at 20 000 px/em would need a
 /// bitmap of hundreds of megabytes. Beyond it the atlas magnifies, as real ones do.
@@ -168,47 +192,14 @@ impl Atlas {
         let phases = self.settings.phases;
         self.pipeline.get_or_insert_with(|| {
             let device = &gpu.device;
-            let buffer = gpu::buffer_entry;
-            let storage = wgpu::BufferBindingType::Storage { read_only: true };
-            let (vertex, fragment) = (wgpu::ShaderStages::VERTEX, wgpu::ShaderStages::FRAGMENT);
-            let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-                label: Some(NAME),
-                entries: &[
-                    buffer(0, vertex, wgpu::BufferBindingType::Uniform),
-                    buffer(1, vertex, storage),
-                    buffer(2, vertex | fragment, storage),
-                    wgpu::BindGroupLayoutEntry {
-                        binding: 3,
-                        visibility: fragment,
-                        ty: wgpu::BindingType::Texture {
-                            sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                            view_dimension: wgpu::TextureViewDimension::D2,
-                            multisampled: false,
-                        },
-                        count: None,
-                    },
-                    wgpu::BindGroupLayoutEntry {
-                        binding: 4,
-                        visibility: fragment,
-                        ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
-                        count: None,
-                    },
-                ],
-            });
-            let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-                label: Some(NAME),
-                bind_group_layouts: &[Some(&layout)],
-                immediate_size: 0,
-            });
-            let module = gpu::shaders::create_module(device, "atlas.wgsl");
-            let pipeline = CoverageTarget::quad_pipeline(
-                device,
-                NAME,
-                &pipeline_layout,
-                &module,
-                &[("PHASES", f64::from(phases))],
-                &[],
-            );
+            // entries, the atlas, its sampler (`@group(1)` of atlas.wgsl).
+            let layout = kit::layout(gpu, NAME, &[Slot::Storage, Slot::Texture, Slot::Sampler]);
+            let pipeline_layout = kit::pipeline_layout(gpu, NAME, Some(&layout));
+            let module = SHADER.module(device);
+            let constants = [("PHASES", f64::from(phases))];
+            let pipeline = PipelineBuilder::new(NAME, &pipeline_layout, &module)
+                .constants(&constants)
+                .build(device);
             let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
                 label: Some(NAME),
                 mag_filter: wgpu::FilterMode::Linear,
@@ -276,31 +267,16 @@ impl Atlas {
             let entry_buffer =
                 gpu.buffer_of("atlas entries", &entries, wgpu::BufferUsages::STORAGE);
             let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
-            let buffers = [
-                prepared.instances.frame(),
-                prepared.instances.buffer(),
-                &entry_buffer,
-            ];
-            let mut bound: Vec<wgpu::BindGroupEntry> = (0u32..)
-                .zip(buffers)
-                .map(|(binding, buffer)| wgpu::BindGroupEntry {
-                    binding,
-                    resource: buffer.as_entire_binding(),
-                })
-                .collect();
-            bound.push(wgpu::BindGroupEntry {
-                binding: 3,
-                resource: wgpu::BindingResource::TextureView(&view),
-            });
-            bound.push(wgpu::BindGroupEntry {
-                binding: 4,
-                resource: wgpu::BindingResource::Sampler(&pipeline.sampler),
-            });
-            let bind_group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some(NAME),
-                layout: &pipeline.layout,
-                entries: &bound,
-            });
+            let bind_group = kit::bind_group(
+                gpu,
+                NAME,
+                &pipeline.layout,
+                &[
+                    entry_buffer.as_entire_binding(),
+                    wgpu::BindingResource::TextureView(&view),
+                    wgpu::BindingResource::Sampler(&pipeline.sampler),
+                ],
+            );
             Ok(Cache {
                 px_per_em,
                 bind_group,
@@ -485,7 +461,8 @@ impl Method for Atlas {
         let mut pass = target.clearing_pass(encoder, NAME);
         if visible > 0 {
             pass.set_pipeline(&pipeline.pipeline);
-            pass.set_bind_group(0, &cache.bind_group, &[]);
+            pass.set_bind_group(0, prepared.instances.bind_group(), &[]);
+            pass.set_bind_group(1, &cache.bind_group, &[]);
             pass.draw(0..4, 0..visible);
         }
         Ok(())

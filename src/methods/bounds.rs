@@ -12,12 +12,32 @@
 
 use glam::DVec2;
 
+use super::registry::{MethodInfo, Role};
 use super::{Method, Params, reject_unknown_params};
 use crate::Error;
 use crate::camera::Camera;
 use crate::geometry::{Rect, project};
+use crate::gpu::kit::{self, PipelineBuilder, Slot};
+use crate::gpu::shaders::Shader;
 use crate::gpu::{CoverageTarget, GpuContext};
 use crate::scene::Scene;
+
+/// `bounds`' row in the registry: a diagnostic, not benched.
+pub const INFO: MethodInfo = MethodInfo {
+    name: NAME,
+    summary: "diagnostic: each glyph's control-point box with exact box-filter coverage, \
+              a check of the GPU path",
+    role: Role::Diagnostic,
+    shader: Some(SHADER),
+    params: &[],
+    colour: [127, 127, 127],
+    bench: &[],
+    claims: &[],
+    create: Some(|params| Ok(Box::new(Bounds::new(params)?))),
+};
+
+pub const NAME: &str = "bounds";
+const SHADER: Shader = crate::method_shader!("bounds.wgsl");
 
 pub struct Bounds {
     /// Built on the first `prepare`; it depends on the device only.
@@ -28,7 +48,7 @@ pub struct Bounds {
 
 impl Bounds {
     pub fn new(params: &Params) -> Result<Bounds, Error> {
-        reject_unknown_params("bounds", params, &[])?;
+        reject_unknown_params(NAME, params, &[])?;
         Ok(Bounds {
             pipeline: None,
             prepared: None,
@@ -70,22 +90,12 @@ const QUAD_ATTRIBUTES: [wgpu::VertexAttribute; 3] =
 impl QuadPipeline {
     fn new(gpu: &GpuContext) -> QuadPipeline {
         let device = &gpu.device;
-        let shader = crate::gpu::shaders::create_module(device, "bounds.wgsl");
-        let bind_group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("bounds view"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::VERTEX,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: false,
-                    min_binding_size: None,
-                },
-                count: None,
-            }],
-        });
+        let shader = SHADER.module(device);
+        // Only the `Frame` uniform of `@group(0)`: the corners come per instance, mapped
+        // on the CPU.
+        let bind_group_layout = kit::layout(gpu, NAME, &[Slot::Uniform]);
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("bounds"),
+            label: Some(NAME),
             bind_group_layouts: &[Some(&bind_group_layout)],
             immediate_size: 0,
         });
@@ -94,22 +104,22 @@ impl QuadPipeline {
             step_mode: wgpu::VertexStepMode::Instance,
             attributes: &QUAD_ATTRIBUTES,
         };
-        let pipeline =
-            CoverageTarget::quad_pipeline(device, "bounds", &layout, &shader, &[], &[Some(quads)]);
+        let buffers = [Some(quads)];
+        let pipeline = PipelineBuilder::new(NAME, &layout, &shader)
+            .vertex_buffers(&buffers)
+            .build(device);
         let view_buffer = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("bounds view"),
             size: size_of::<[f32; 2]>() as wgpu::BufferAddress,
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("bounds view"),
-            layout: &bind_group_layout,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: view_buffer.as_entire_binding(),
-            }],
-        });
+        let bind_group = kit::bind_group(
+            gpu,
+            NAME,
+            &bind_group_layout,
+            &[view_buffer.as_entire_binding()],
+        );
         QuadPipeline {
             pipeline,
             view_buffer,
@@ -120,7 +130,7 @@ impl QuadPipeline {
 
 impl Method for Bounds {
     fn name(&self) -> &'static str {
-        "bounds"
+        NAME
     }
 
     fn prepare(&mut self, gpu: &GpuContext, scene: &Scene) -> Result<(), Error> {
@@ -157,7 +167,7 @@ impl Method for Bounds {
         camera: &Camera,
     ) -> Result<(), Error> {
         let (Some(pipeline), Some(scene)) = (&self.pipeline, &mut self.prepared) else {
-            return Err(super::not_prepared("bounds"));
+            return Err(super::not_prepared(NAME));
         };
         let view = Rect {
             min: DVec2::ZERO,
@@ -191,7 +201,7 @@ impl Method for Bounds {
                 .write_buffer(&scene.quad_buffer, 0, bytemuck::cast_slice(&scene.quads));
         }
 
-        let mut pass = target.clearing_pass(encoder, "bounds");
+        let mut pass = target.clearing_pass(encoder, NAME);
         if !scene.quads.is_empty() {
             pass.set_pipeline(&pipeline.pipeline);
             pass.set_bind_group(0, &pipeline.bind_group, &[]);

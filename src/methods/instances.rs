@@ -13,7 +13,7 @@ use glam::{DMat3, DVec2};
 use crate::Error;
 use crate::camera::Camera;
 use crate::geometry::Rect;
-use crate::gpu::GpuContext;
+use crate::gpu::{GpuContext, kit};
 use crate::scene::Scene;
 
 /// `GlyphInstance` as WGSL lays it out in a storage buffer (mat3x3 columns are padded
@@ -42,6 +42,8 @@ pub struct Instances {
     buffer: wgpu::Buffer,
     /// `Frame` of `common.wgsl`: the target size.
     frame: wgpu::Buffer,
+    /// `@group(0)` of every method shader: `frame` and `buffer`.
+    bind_group: wgpu::BindGroup,
 }
 
 impl Instances {
@@ -64,6 +66,12 @@ impl Instances {
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
+        let bind_group = kit::bind_group(
+            gpu,
+            "frame and instances",
+            &kit::frame_layout(gpu),
+            &[frame.as_entire_binding(), buffer.as_entire_binding()],
+        );
         Instances {
             units_per_em: scene.units_per_em,
             staging: Vec::with_capacity(placed.len()),
@@ -71,6 +79,7 @@ impl Instances {
             placed,
             buffer,
             frame,
+            bind_group,
         }
     }
 
@@ -142,14 +151,10 @@ impl Instances {
         &self.written
     }
 
-    /// The `array<GlyphInstance>` storage buffer.
-    pub fn buffer(&self) -> &wgpu::Buffer {
-        &self.buffer
-    }
-
-    /// The `Frame` uniform buffer.
-    pub fn frame(&self) -> &wgpu::Buffer {
-        &self.frame
+    /// `@group(0)` of every method shader: the `Frame` uniform and the
+    /// `array<GlyphInstance>` (see [`kit::frame_layout`]).
+    pub fn bind_group(&self) -> &wgpu::BindGroup {
+        &self.bind_group
     }
 
     pub fn bytes(&self) -> u64 {

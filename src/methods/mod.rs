@@ -88,11 +88,7 @@ pub struct GlyphMeshStats {
 }
 
 /// Curves a method evaluated per pixel with nonzero coverage.
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
-pub struct CurveCost {
-    pub mean: f64,
-    pub max: u32,
-}
+pub use crate::gpu::kit::CurveCost;
 
 /// A debug picture a method draws instead of plain coverage. With an overlay on, the
 /// target's rgb holds the complete picture to show (premultiplied, over black) and its
@@ -172,33 +168,14 @@ pub fn param<'a>(params: &'a Params, key: &str) -> Option<&'a str> {
 /// A `--param KEY=VALUE` list, in the order given.
 pub type Params = [(String, String)];
 
-/// Every method name `--method` accepts, the CPU reference included.
-pub const METHOD_NAMES: &[&str] = &[
-    "reference",
-    "bounds",
-    "winding",
-    "sdf-cells",
-    "xor-stencil",
-    "tessellation",
-    "atlas",
-];
-
-/// Creates a GPU method by name. The reference is not a GPU method: callers handle it.
+/// Creates the GPU method called `name` (see [`registry`]). The reference is not a GPU
+/// method: callers ask the registry whether a name is the reference and handle it.
 pub fn create(name: &str, params: &Params) -> Result<Box<dyn Method>, Error> {
-    Ok(match name {
-        "bounds" => Box::new(bounds::Bounds::new(params)?),
-        "winding" => Box::new(winding::Winding::new(params)?),
-        "sdf-cells" => Box::new(sdf_cells::SdfCells::new(params)?),
-        "xor-stencil" => Box::new(xor_stencil::XorStencil::new(params)?),
-        "tessellation" => Box::new(tessellation::Tessellation::new(params)?),
-        "atlas" => Box::new(atlas::Atlas::new(params)?),
-        _ => {
-            return Err(Error::Input(format!(
-                "unknown method '{name}'; choose one of: {}",
-                METHOD_NAMES.join(", ")
-            )));
-        }
-    })
+    let info = registry::find(name)?;
+    let create = info.create.ok_or_else(|| {
+        Error::Input(format!("'{name}' is drawn on the CPU, not by a GPU method"))
+    })?;
+    create(params)
 }
 
 /// One parameter a method takes, described for controls and help.
@@ -215,14 +192,7 @@ pub struct ParamSpec {
 
 /// The parameters of method `name` (none for unknown names and the reference).
 pub fn param_specs(name: &str) -> &'static [ParamSpec] {
-    match name {
-        "winding" => winding::PARAMS,
-        "tessellation" => tessellation::PARAMS,
-        "xor-stencil" => xor_stencil::PARAMS,
-        "sdf-cells" => sdf_cells::params::PARAMS,
-        "atlas" => atlas::PARAMS,
-        _ => &[],
-    }
+    registry::find(name).map_or(&[], |m| m.params)
 }
 
 /// The error of a method asked to draw before `prepare`: a caller's bug, reported
@@ -252,32 +222,10 @@ pub fn reject_unknown_params(method: &str, params: &Params, known: &[&str]) -> R
 
 pub mod atlas;
 pub mod bounds;
+pub mod frame;
 pub mod instances;
+pub mod registry;
 pub mod sdf_cells;
 pub mod tessellation;
 pub mod winding;
 pub mod xor_stencil;
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// What the specs offer, `create` accepts: the app builds its controls from them.
-    #[test]
-    fn every_listed_parameter_value_is_accepted() {
-        for name in METHOD_NAMES.iter().filter(|n| **n != "reference") {
-            for spec in param_specs(name) {
-                let mut values: Vec<String> = spec.choices.iter().map(|v| v.to_string()).collect();
-                if let Some((lo, hi)) = spec.range {
-                    values.extend([lo.to_string(), hi.to_string()]);
-                }
-                for value in values {
-                    let params = vec![(spec.key.to_string(), value.clone())];
-                    if let Err(e) = create(name, &params) {
-                        panic!("{name} {}={value}: {e}", spec.key);
-                    }
-                }
-            }
-        }
-    }
-}

@@ -32,15 +32,53 @@ use std::ops::Range;
 use glam::DVec2;
 
 use super::instances::Instances;
+use super::registry::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at};
 use super::{
     CurveCost, Method, Overlay, ParamSpec, Params, param, parse_overlay, reject_unknown_params,
 };
 use crate::Error;
 use crate::camera::Camera;
 use crate::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Rect, Segment, jacobian_bound};
+use crate::gpu::kit::{self, Slot};
 use crate::gpu::msaa::{Attachments, STENCIL_FORMAT};
+use crate::gpu::shaders::Shader;
 use crate::gpu::{CoverageTarget, GpuContext};
 use crate::scene::Scene;
+
+/// `xor-stencil`'s row in the registry.
+pub const INFO: MethodInfo = MethodInfo {
+    name: NAME,
+    summary: "winding counted per sample in the stencil by a triangle fan and Loop–Blinn \
+              curve triangles, MSAA and jittered passes (Evan Wallace's method)",
+    role: Role::Method,
+    shader: Some(SHADER),
+    params: PARAMS,
+    colour: [214, 39, 40],
+    // Samples × jittered passes: from aliased to 16 coverage levels and beyond.
+    bench: &[
+        bench_at(&[], true),
+        bench_at(&[("msaa", "1"), ("passes", "1")], true),
+        bench_at(&[("msaa", "4"), ("passes", "1")], false),
+        bench_at(&[("msaa", "1"), ("passes", "4")], false),
+        bench_at(&[("msaa", "1"), ("passes", "16")], false),
+    ],
+    claims: &[ClaimedSetting {
+        label: NAME,
+        params: &[],
+        claim: Claim {
+            max_error: Some(0.5),
+            except: &[Trait::DenseOverlaps],
+            // A wrapped counter reads a covered pixel as empty: no bound.
+            limitation_max: None,
+            statement: "within half a level of the reference with four or more samples; \
+                        8-bit counters read a winding of 256 as 0",
+        },
+    }],
+    create: Some(|params| Ok(Box::new(XorStencil::new(params)?))),
+};
+
+pub const NAME: &str = "xor-stencil";
+const SHADER: Shader = crate::method_shader!("xor_stencil.wgsl");
 
 /// Which samples an outline fills.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -496,43 +534,17 @@ impl Builder<'_> {
 impl Pipelines {
     fn new(gpu: &GpuContext, settings: &Settings) -> Pipelines {
         let device = &gpu.device;
-        let storage = |binding| wgpu::BindGroupLayoutEntry {
-            binding,
-            visibility: wgpu::ShaderStages::VERTEX,
-            ty: wgpu::BindingType::Buffer {
-                ty: wgpu::BufferBindingType::Storage { read_only: true },
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-            count: None,
-        };
-        let uniform = |binding, dynamic| wgpu::BindGroupLayoutEntry {
-            binding,
-            visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-            ty: wgpu::BindingType::Buffer {
-                ty: wgpu::BufferBindingType::Uniform,
-                has_dynamic_offset: dynamic,
-                min_binding_size: None,
-            },
-            count: None,
-        };
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("xor-stencil"),
-            entries: &[
-                storage(0),
-                uniform(1, false),
-                storage(2),
-                storage(3),
-                storage(4),
-                uniform(5, true),
-            ],
-        });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("xor-stencil"),
-            bind_group_layouts: &[Some(&layout)],
-            immediate_size: 0,
-        });
-        let shader = crate::gpu::shaders::create_module(device, "xor_stencil.wgsl");
+        // glyph bounds, fan points, curve points, the jitter of each pass (`@group(1)` of
+        // xor_stencil.wgsl).
+        let slots = [
+            Slot::Storage,
+            Slot::Storage,
+            Slot::Storage,
+            Slot::DynamicUniform,
+        ];
+        let layout = kit::layout(gpu, NAME, &slots);
+        let pipeline_layout = kit::pipeline_layout(gpu, NAME, Some(&layout));
+        let shader = SHADER.module(device);
         let builder = Builder {
             device,
             layout: &pipeline_layout,
@@ -726,47 +738,23 @@ impl Geometry {
     }
 }
 
-fn bind_group(
-    gpu: &GpuContext,
-    pipelines: &Pipelines,
-    instances: &Instances,
-    geometry: &Geometry,
-) -> wgpu::BindGroup {
+fn bind_group(gpu: &GpuContext, pipelines: &Pipelines, geometry: &Geometry) -> wgpu::BindGroup {
     let [bounds, fan, curves] = &geometry.buffers;
-    gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: Some("xor-stencil"),
-        layout: &pipelines.layout,
-        entries: &[
-            wgpu::BindGroupEntry {
-                binding: 0,
-                resource: instances.buffer().as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 1,
-                resource: instances.frame().as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 2,
-                resource: bounds.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 3,
-                resource: fan.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 4,
-                resource: curves.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 5,
-                resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
-                    buffer: &pipelines.jitter,
-                    offset: 0,
-                    size: wgpu::BufferSize::new(size_of::<Jitter>() as u64),
-                }),
-            },
+    kit::bind_group(
+        gpu,
+        NAME,
+        &pipelines.layout,
+        &[
+            bounds.as_entire_binding(),
+            fan.as_entire_binding(),
+            curves.as_entire_binding(),
+            wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                buffer: &pipelines.jitter,
+                offset: 0,
+                size: wgpu::BufferSize::new(size_of::<Jitter>() as u64),
+            }),
         ],
-    })
+    )
 }
 
 impl Prepared {
@@ -789,7 +777,7 @@ impl Prepared {
         };
         let instances = Instances::new(gpu, &scene);
         let geometry = Geometry::new(gpu, &scene, 0);
-        let bind_group = bind_group(gpu, pipelines, &instances, &geometry);
+        let bind_group = bind_group(gpu, pipelines, &geometry);
         Prepared {
             has_cubics: scene.glyphs.iter().any(|g| {
                 g.outline
@@ -842,7 +830,7 @@ impl Prepared {
         let halvings = tolerance_halvings(px_per_em);
         if halvings != self.geometry.halvings {
             self.geometry = Geometry::new(gpu, &self.scene, halvings);
-            self.bind_group = bind_group(gpu, pipelines, &self.instances, &self.geometry);
+            self.bind_group = bind_group(gpu, pipelines, &self.geometry);
         }
         Ok(())
     }
@@ -872,7 +860,8 @@ fn record_passes(
     passes: u32,
 ) {
     for k in 0..passes {
-        pass.set_bind_group(0, &prepared.bind_group, &[jitter_offset(pipelines, k)]);
+        pass.set_bind_group(0, prepared.instances.bind_group(), &[]);
+        pass.set_bind_group(1, &prepared.bind_group, &[jitter_offset(pipelines, k)]);
         for layer in prepared.runs.chunk_by(|a, b| a.layer == b.layer) {
             for (pipeline, ranges) in [
                 (&pipelines.fan, &prepared.geometry.fan_ranges),
@@ -948,7 +937,8 @@ impl Method for XorStencil {
                 record_passes(&mut pass, pipelines, prepared, self.settings.passes);
                 if let Some(lines) = &pipelines.wireframe {
                     let unshifted = jitter_offset(pipelines, self.settings.passes);
-                    pass.set_bind_group(0, &prepared.bind_group, &[unshifted]);
+                    pass.set_bind_group(0, prepared.instances.bind_group(), &[]);
+                    pass.set_bind_group(1, &prepared.bind_group, &[unshifted]);
                     for (pipeline, ranges) in lines.iter().zip([
                         &prepared.geometry.fan_ranges,
                         &prepared.geometry.curve_ranges,
@@ -989,7 +979,7 @@ impl Method for XorStencil {
         camera: &Camera,
     ) -> Result<Option<CurveCost>, Error> {
         let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
-        crate::gpu::render_frame(gpu, self, &target, camera)?;
+        super::frame::render_frame(gpu, self, &target, camera)?;
         let coverage = target.readback(gpu)?;
         let samples = self.settings.samples;
         gpu.catching_errors("counting curve evaluations", || {
@@ -1032,7 +1022,8 @@ impl Method for XorStencil {
                 pass.set_pipeline(pipelines.count.as_ref().expect("built above"));
                 // `render_frame` left this camera's instances and runs in place.
                 for k in 0..self.settings.passes {
-                    pass.set_bind_group(0, &prepared.bind_group, &[jitter_offset(pipelines, k)]);
+                    pass.set_bind_group(0, prepared.instances.bind_group(), &[]);
+                    pass.set_bind_group(1, &prepared.bind_group, &[jitter_offset(pipelines, k)]);
                     for run in &prepared.runs {
                         let points = &prepared.geometry.curve_ranges[run.glyph];
                         if !points.is_empty() {

@@ -50,19 +50,7 @@ pub struct Case {
 }
 
 /// A property of a case that a method's claim may leave out of its scope.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
-pub enum Trait {
-    /// Contours overlap or cross themselves: a distance to the outline is not a
-    /// distance to the filled area's boundary.
-    Overlapping,
-    /// Several edges, or a whole contour, inside one pixel: one distance per pixel (or
-    /// four point samples) cannot resolve them.
-    SubpixelDetail,
-    /// Contours stacked hundreds deep, their edges closer than a pixel: winding numbers
-    /// of 256 wrap an 8-bit stencil counter to 0, and more edges cross one pixel's
-    /// window than a ray keeps sorted there (8).
-    DenseOverlaps,
-}
+pub use crate::methods::registry::Trait;
 
 impl Case {
     /// The case's camera, turned by `rotation_deg` about the view (after the case's own

@@ -12,7 +12,7 @@ use std::path::Path;
 use crate::Error;
 use crate::metrics;
 use cases::Case;
-use claims::{VARIANTS, Variant};
+use claims::Variant;
 use sweep::Outcome;
 
 /// The cases called `names` (all when None), or an input error naming the unknown one.
@@ -35,22 +35,22 @@ pub fn select_cases(names: Option<&[String]>) -> Result<Vec<Case>, Error> {
 /// The variants named by `names` (all when None): a variant's label picks it, a method
 /// name picks all its variants.
 pub fn select_variants(names: Option<&[String]>) -> Result<Vec<Variant>, Error> {
+    let all = claims::variants();
     let Some(names) = names else {
-        return Ok(VARIANTS.to_vec());
+        return Ok(all);
     };
     for name in names {
-        if !VARIANTS.iter().any(|v| v.label == name || v.method == name) {
-            let labels: Vec<_> = VARIANTS.iter().map(|v| v.label).collect();
+        if !all.iter().any(|v| v.label == name || v.method == name) {
+            let labels: Vec<_> = all.iter().map(|v| v.label).collect();
             return Err(Error::Input(format!(
                 "unknown method '{name}'; the stability sweep runs: {}",
                 labels.join(", ")
             )));
         }
     }
-    Ok(VARIANTS
-        .iter()
+    Ok(all
+        .into_iter()
         .filter(|v| names.iter().any(|n| n == v.label || n == v.method))
-        .copied()
         .collect())
 }
 

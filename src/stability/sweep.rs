@@ -9,8 +9,8 @@ use super::cases::Case;
 use super::claims::Variant;
 use crate::Error;
 use crate::coverage::CoverageImage;
-use crate::gpu::{self, GpuContext};
-use crate::methods::{self, Method};
+use crate::gpu::GpuContext;
+use crate::methods::{self, Method, frame};
 use crate::metrics;
 use crate::reference;
 
@@ -114,8 +114,8 @@ pub fn run(
                     artifact_pixels: 0,
                     frames: 0,
                     worst: Worst::default(),
-                    limitation: variant.claim.is_limitation(case),
-                    bound: variant.claim.bound(case),
+                    limitation: variant.claim.is_limitation(case.traits),
+                    bound: variant.claim.bound(case.traits),
                     failure: None,
                     worst_images: None,
                 };
@@ -132,7 +132,7 @@ pub fn run(
                 let reference = reference::rasterize(&case.scene, &camera)?;
                 for (method, outcome) in &mut cells {
                     let Some(m) = method else { continue };
-                    let image = match gpu::render_image(gpu, m.as_mut(), &camera) {
+                    let image = match frame::render_image(gpu, m.as_mut(), &camera) {
                         Ok(image) => image,
                         Err(e) => {
                             outcome.failure = Some(format!(

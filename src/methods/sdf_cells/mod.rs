@@ -29,17 +29,58 @@ pub mod params;
 use glam::DMat2;
 
 use super::instances::Instances;
+use super::registry::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at};
 use super::{CurveCost, Method, Overlay, Params};
 use crate::Error;
 use crate::camera::Camera;
+use crate::gpu::kit::{self, PipelineBuilder, Slot};
+use crate::gpu::shaders::Shader;
 use crate::gpu::{CoverageTarget, GpuContext};
 use crate::scene::Scene;
 use cells::Mode;
 use glyph::PreparedGlyph;
 pub use params::Settings;
 
-/// The cost heat map's full scale: curves evaluated per pixel drawn white.
-pub const HEAT_SCALE: f32 = 32.0;
+/// `sdf-cells`' row in the registry.
+pub const INFO: MethodInfo = MethodInfo {
+    name: params::NAME,
+    summary: "signed distance to the few curves listed in the pixel's cell of a grid over \
+              its glyph (font-demo's method), estimated or exact",
+    role: Role::Method,
+    shader: Some(SHADER),
+    params: params::PARAMS,
+    colour: [44, 160, 44],
+    bench: &[bench_at(&[], true), bench_at(&[("mode", "exact")], true)],
+    claims: &[
+        ClaimedSetting {
+            label: params::NAME,
+            params: &[],
+            claim: Claim {
+                max_error: None,
+                except: &[],
+                limitation_max: None,
+                statement: "estimate (the seed's): artifacts where the nearest chord's \
+                            tangent puts a pixel on the wrong side, and cracks along overlaps",
+            },
+        },
+        ClaimedSetting {
+            label: "sdf-cells exact",
+            params: &[("mode", "exact")],
+            claim: Claim {
+                max_error: Some(0.5),
+                except: &[Trait::Overlapping, Trait::SubpixelDetail],
+                // Measured 0.500 on overlaps, 0.620 on sub-pixel detail.
+                limitation_max: Some(0.8),
+                statement: "no pixel off by more than 0.5 on outlines without overlapping \
+                            contours; one edge per pixel, so detail under a pixel (a contour \
+                            or several edges inside one) reads up to 0.5 + w/2",
+            },
+        },
+    ],
+    create: Some(|params| Ok(Box::new(SdfCells::new(params)?))),
+};
+
+const SHADER: Shader = crate::method_shader!("sdf_cells.wgsl");
 
 pub struct SdfCells {
     settings: Settings,
@@ -96,8 +137,7 @@ struct GpuSettings {
     dilate: f32,
     outline: f32,
     glow: f32,
-    heat_scale: f32,
-    _pad: u32,
+    _pad: [u32; 2],
 }
 
 struct Pipeline {
@@ -160,8 +200,7 @@ impl SdfCells {
             dilate: em(effects.dilate),
             outline: em(effects.outline),
             glow: em(effects.glow),
-            heat_scale: HEAT_SCALE,
-            _pad: 0,
+            _pad: [0; 2],
         }
     }
 
@@ -189,10 +228,11 @@ impl SdfCells {
         let count = scene.instances.update(gpu, camera, reach_px)?;
         gpu.queue
             .write_buffer(&scene.settings, 0, bytemuck::bytes_of(&settings));
-        let mut pass = target.clearing_pass(encoder, "sdf-cells");
+        let mut pass = target.clearing_pass(encoder, params::NAME);
         if count > 0 {
             pass.set_pipeline(&pipeline.pipeline);
-            pass.set_bind_group(0, &scene.bind_group, &[]);
+            pass.set_bind_group(0, scene.instances.bind_group(), &[]);
+            pass.set_bind_group(1, &scene.bind_group, &[]);
             pass.draw(0..4, 0..count);
         }
         Ok(())
@@ -211,33 +251,14 @@ fn magnification(camera: &Camera) -> f64 {
 
 impl Pipeline {
     fn new(gpu: &GpuContext) -> Pipeline {
-        let device = &gpu.device;
-        let shader = crate::gpu::shaders::create_module(device, "sdf_cells.wgsl");
-        let entry = crate::gpu::buffer_entry;
-        let both = wgpu::ShaderStages::VERTEX_FRAGMENT;
-        let fragment = wgpu::ShaderStages::FRAGMENT;
-        let storage = wgpu::BufferBindingType::Storage { read_only: true };
-        let uniform = wgpu::BufferBindingType::Uniform;
-        let bind_group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("sdf-cells"),
-            entries: &[
-                entry(0, wgpu::ShaderStages::VERTEX, uniform),
-                entry(1, wgpu::ShaderStages::VERTEX, storage),
-                entry(2, both, storage),
-                entry(3, fragment, storage),
-                entry(4, fragment, storage),
-                entry(5, fragment, uniform),
-            ],
-        });
-        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("sdf-cells"),
-            bind_group_layouts: &[Some(&bind_group_layout)],
-            immediate_size: 0,
-        });
+        let shader = SHADER.module(&gpu.device);
+        // glyphs, points, words, settings (`@group(1)` of sdf_cells.wgsl).
+        let slots = [Slot::Storage, Slot::Storage, Slot::Storage, Slot::Uniform];
+        let bind_group_layout = kit::layout(gpu, params::NAME, &slots);
+        let layout = kit::pipeline_layout(gpu, params::NAME, Some(&bind_group_layout));
         // Coverage adds up where quads overlap, and so does the cost the cost pass
         // counts.
-        let pipeline =
-            CoverageTarget::quad_pipeline(device, "sdf-cells", &layout, &shader, &[], &[]);
+        let pipeline = PipelineBuilder::new(params::NAME, &layout, &shader).build(&gpu.device);
         Pipeline {
             pipeline,
             bind_group_layout,
@@ -332,27 +353,12 @@ impl Method for SdfCells {
                 usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
                 mapped_at_creation: false,
             });
-            let buffers = [
-                instances.frame(),
-                instances.buffer(),
-                &glyphs,
-                &points,
-                &words,
-                &settings,
-            ];
-            let entries: Vec<wgpu::BindGroupEntry> = buffers
-                .iter()
-                .enumerate()
-                .map(|(binding, buffer)| wgpu::BindGroupEntry {
-                    binding: binding as u32,
-                    resource: buffer.as_entire_binding(),
-                })
-                .collect();
-            let bind_group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some("sdf-cells"),
-                layout: &pipeline.bind_group_layout,
-                entries: &entries,
-            });
+            let bind_group = kit::bind_group(
+                gpu,
+                params::NAME,
+                &pipeline.bind_group_layout,
+                &[&glyphs, &points, &words, &settings].map(wgpu::Buffer::as_entire_binding),
+            );
             self.prepared = Some(PreparedScene {
                 instances,
                 glyphs,
@@ -400,31 +406,9 @@ impl Method for SdfCells {
         gpu: &GpuContext,
         camera: &Camera,
     ) -> Result<Option<CurveCost>, Error> {
-        let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
-        gpu.catching_errors("counting 'sdf-cells' curves", || {
-            let mut encoder = gpu
-                .device
-                .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                    label: Some("sdf-cells cost"),
-                });
-            self.draw(gpu, &mut encoder, &target, camera, Output::CostCount)?;
-            gpu.queue.submit([encoder.finish()]);
-            gpu.wait_idle()
-        })?;
-        let texels = target.read_texels(gpu)?;
-        let (mut sum, mut covered, mut max) = (0.0f64, 0usize, 0u32);
-        for t in texels.iter().filter(|t| t[3] > 0.0) {
-            sum += f64::from(t[0]);
-            covered += 1;
-            max = max.max(t[0].round() as u32);
-        }
-        Ok(Some(CurveCost {
-            mean: if covered == 0 {
-                0.0
-            } else {
-                sum / covered as f64
-            },
-            max,
-        }))
+        kit::count_curves(gpu, (camera.width, camera.height), |encoder, target| {
+            self.draw(gpu, encoder, target, camera, Output::CostCount)
+        })
+        .map(Some)
     }
 }

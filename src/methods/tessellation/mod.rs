@@ -29,6 +29,7 @@ use self::mesh::GlyphMesh;
 use self::store::{MeshKey, MeshStore};
 use self::subdivision::{Polylines, SEED_EM_PER_HEIGHT, Subdivision, TaggedContour};
 use super::instances::Instances;
+use super::registry::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at};
 use super::{
     GlyphMeshStats, MeshStats, Method, Overlay, ParamSpec, Params, param, parse_overlay,
     reject_unknown_params,
@@ -37,11 +38,48 @@ use crate::Error;
 use crate::camera::Camera;
 use crate::font::GlyphId;
 use crate::geometry::{Rect, project};
+use crate::gpu::kit::{self, ColorOut, PipelineBuilder, Slot};
 use crate::gpu::msaa::Attachments;
+use crate::gpu::shaders::Shader;
 use crate::gpu::{CoverageTarget, GpuContext};
 use crate::scene::Scene;
 
-const NAME: &str = "tessellation";
+/// `tessellation`'s row in the registry.
+pub const INFO: MethodInfo = MethodInfo {
+    name: NAME,
+    summary: "outlines subdivided adaptively to a screen-space tolerance, triangulated, \
+              drawn with MSAA (jeffboody's Glyph)",
+    role: Role::Method,
+    shader: Some(SHADER),
+    params: PARAMS,
+    colour: [148, 103, 189],
+    // MSAA is the accuracy; the tolerance and subdivision mode move the points.
+    bench: &[
+        bench_at(&[], true),
+        bench_at(&[("msaa", "1")], true),
+        bench_at(&[("tolerance_px", "0.25")], false),
+        bench_at(&[("tolerance_px", "0.05")], false),
+        bench_at(&[("subdivision", "asa"), ("threshold", "13")], false),
+        bench_at(&[("subdivision", "fsa"), ("steps", "4")], false),
+    ],
+    claims: &[ClaimedSetting {
+        label: NAME,
+        params: &[],
+        claim: Claim {
+            max_error: Some(0.5),
+            except: &[Trait::SubpixelDetail],
+            // Measured 0.692 at 2 px/em.
+            limitation_max: Some(0.8),
+            statement: "screen-space subdivision with 4x MSAA: no pixel off by more than \
+                        0.5; four point samples cannot resolve several edges inside one pixel",
+        },
+    }],
+    create: Some(|params| Ok(Box::new(Tessellation::new(params)?))),
+};
+
+const SHADER: Shader = crate::method_shader!("tessellation.wgsl");
+
+pub const NAME: &str = "tessellation";
 const OVERLAYS: &[Overlay] = &[Overlay::TriangleWireframe, Overlay::SubdivisionPoints];
 
 /// The seed's default for FSA, and the subdivision its errors are measured against.
@@ -92,7 +130,7 @@ struct PreparedScene {
     glyphs: Vec<PreparedGlyph>,
     instances: Instances,
     meshes: MeshStore,
-    /// Frame, instances and the packed markers; remade when the meshes are repacked.
+    /// The packed markers; remade when the meshes are repacked.
     bind_group: Option<wgpu::BindGroup>,
     frame: u64,
     build_ms: f64,
@@ -354,106 +392,36 @@ impl PreparedScene {
             return;
         }
         let markers = &self.meshes.packed().expect("just packed").markers;
-        self.bind_group = Some(gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("tessellation"),
+        self.bind_group = Some(kit::bind_group(
+            gpu,
+            NAME,
             layout,
-            entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: self.instances.frame().as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: self.instances.buffer().as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 2,
-                    resource: markers.as_entire_binding(),
-                },
-            ],
-        }));
+            &[markers.as_entire_binding()],
+        ));
     }
 }
 
 impl Pipelines {
     fn new(gpu: &GpuContext, samples: u32) -> Pipelines {
         let device = &gpu.device;
-        let shader = crate::gpu::shaders::create_module(device, "tessellation.wgsl");
-        let storage = |binding| wgpu::BindGroupLayoutEntry {
-            binding,
-            visibility: wgpu::ShaderStages::VERTEX,
-            ty: wgpu::BindingType::Buffer {
-                ty: wgpu::BufferBindingType::Storage { read_only: true },
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-            count: None,
-        };
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("tessellation"),
-            entries: &[
-                wgpu::BindGroupLayoutEntry {
-                    binding: 0,
-                    visibility: wgpu::ShaderStages::VERTEX,
-                    ty: wgpu::BindingType::Buffer {
-                        ty: wgpu::BufferBindingType::Uniform,
-                        has_dynamic_offset: false,
-                        min_binding_size: None,
-                    },
-                    count: None,
-                },
-                storage(1),
-                storage(2),
-            ],
-        });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("tessellation"),
-            bind_group_layouts: &[Some(&layout)],
-            immediate_size: 0,
-        });
+        let shader = SHADER.module(device);
+        // The markers (`@group(1)` of tessellation.wgsl).
+        let layout = kit::layout(gpu, NAME, &[Slot::Storage]);
+        let pipeline_layout = kit::pipeline_layout(gpu, NAME, Some(&layout));
         let positions = [Some(wgpu::VertexBufferLayout {
             array_stride: size_of::<[f32; 2]>() as wgpu::BufferAddress,
             step_mode: wgpu::VertexStepMode::Vertex,
             attributes: &wgpu::vertex_attr_array![0 => Float32x2],
         })];
-        let pipeline = |label,
-                        vertex_entry,
-                        buffers: &[Option<wgpu::VertexBufferLayout>],
-                        topology,
-                        fragment_entry,
-                        write_mask| {
-            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some(label),
-                layout: Some(&pipeline_layout),
-                vertex: wgpu::VertexState {
-                    module: &shader,
-                    entry_point: Some(vertex_entry),
-                    compilation_options: Default::default(),
-                    buffers,
-                },
-                primitive: wgpu::PrimitiveState {
-                    topology,
-                    ..Default::default()
-                },
-                depth_stencil: None,
-                multisample: wgpu::MultisampleState {
-                    count: samples,
-                    ..Default::default()
-                },
-                fragment: Some(wgpu::FragmentState {
-                    module: &shader,
-                    entry_point: Some(fragment_entry),
-                    compilation_options: Default::default(),
-                    // No blending: a sample is covered or not (see the shader).
-                    targets: &[Some(wgpu::ColorTargetState {
-                        format: CoverageTarget::FORMAT,
-                        blend: None,
-                        write_mask,
-                    })],
-                }),
-                multiview_mask: None,
-                cache: None,
-            })
+        // No blending: a sample is covered or not (see the shader).
+        let pipeline = |label, vertex_entry, buffers, topology, fragment_entry, write_mask| {
+            PipelineBuilder::new(label, &pipeline_layout, &shader)
+                .entry_points(vertex_entry, fragment_entry)
+                .vertex_buffers(buffers)
+                .topology(topology)
+                .samples(samples)
+                .color(ColorOut::Replace(write_mask))
+                .build(device)
         };
         use wgpu::{ColorWrites, PrimitiveTopology};
         Pipelines {
@@ -565,7 +533,7 @@ impl Method for Tessellation {
             Attachments::fit(self.attachments.take(), gpu, target, self.samples, false);
         let attachments = self.attachments.insert(attachments);
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("tessellation"),
+            label: Some(NAME),
             color_attachments: &[Some(
                 attachments.color(target, wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT)),
             )],
@@ -578,7 +546,8 @@ impl Method for Tessellation {
             return Ok(());
         }
         let packed = scene.meshes.packed().expect("packed above");
-        pass.set_bind_group(0, scene.bind_group.as_ref(), &[]);
+        pass.set_bind_group(0, scene.instances.bind_group(), &[]);
+        pass.set_bind_group(1, scene.bind_group.as_ref(), &[]);
         pass.set_vertex_buffer(0, packed.vertices.slice(..));
         pass.set_pipeline(&pipelines.fill);
         pass.set_index_buffer(packed.triangles.slice(..), wgpu::IndexFormat::Uint32);

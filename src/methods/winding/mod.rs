@@ -19,13 +19,53 @@ mod bands;
 pub use bands::{BandCount, GlyphData, MAX_BANDS};
 
 use super::instances::Instances;
+use super::registry::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at};
 use super::{
     CurveCost, Method, Overlay, ParamSpec, Params, param, parse_overlay, reject_unknown_params,
 };
 use crate::Error;
 use crate::camera::Camera;
-use crate::gpu::{self, CoverageTarget, GpuContext};
+use crate::gpu::kit::{self, PipelineBuilder, Slot};
+use crate::gpu::shaders::Shader;
+use crate::gpu::{CoverageTarget, GpuContext};
 use crate::scene::Scene;
+
+/// `winding`'s row in the registry.
+pub const INFO: MethodInfo = MethodInfo {
+    name: NAME,
+    summary: "winding number from the roots of quadratic curves along x and y rays, \
+              anti-aliased per crossing (Slug's family)",
+    role: Role::Method,
+    shader: Some(SHADER),
+    params: PARAMS,
+    colour: [31, 119, 180],
+    // Samples and rays are the trade; bands change only the time (the same image),
+    // shown on the cheapest setting (without bands a page costs ~10× as much).
+    bench: &[
+        bench_at(&[], true),
+        bench_at(&[("samples", "1")], true),
+        bench_at(&[("samples", "4")], false),
+        bench_at(&[("rays", "1")], false),
+        bench_at(&[("rays", "1"), ("samples", "1")], true),
+        bench_at(&[("rays", "1"), ("samples", "1"), ("bands", "off")], false),
+    ],
+    claims: &[ClaimedSetting {
+        label: NAME,
+        params: &[],
+        claim: Claim {
+            max_error: Some(0.5),
+            except: &[Trait::DenseOverlaps],
+            // Measured 0.717 on 256 stacked contours.
+            limitation_max: Some(0.8),
+            statement: "no pixel off by more than 0.5 anywhere; a window crossed by more \
+                        than 8 edges falls back to its averaged winding",
+        },
+    }],
+    create: Some(|params| Ok(Box::new(Winding::new(params)?))),
+};
+
+pub const NAME: &str = "winding";
+const SHADER: Shader = crate::method_shader!("winding.wgsl");
 
 /// The overlays `winding` draws.
 pub const OVERLAYS: &[Overlay] = &[Overlay::CurveClasses, Overlay::CostHeatMap];
@@ -110,7 +150,7 @@ impl Default for Settings {
 impl Settings {
     pub fn from_params(params: &Params) -> Result<Settings, Error> {
         let keys: Vec<&str> = PARAMS.iter().map(|p| p.key).collect();
-        reject_unknown_params("winding", params, &keys)?;
+        reject_unknown_params(NAME, params, &keys)?;
         let bad = |key: &str, value: &str, allowed: &str| {
             Error::Input(format!("winding: {key}={value} is not one of {allowed}"))
         };
@@ -147,7 +187,7 @@ impl Settings {
                 },
             };
         }
-        s.overlay = parse_overlay("winding", param(params, "overlay"), OVERLAYS)?;
+        s.overlay = parse_overlay(NAME, param(params, "overlay"), OVERLAYS)?;
         Ok(s)
     }
 }
@@ -203,29 +243,9 @@ impl Winding {
 
     fn layout(&mut self, gpu: &GpuContext) -> &(wgpu::BindGroupLayout, wgpu::PipelineLayout) {
         self.layout.get_or_insert_with(|| {
-            let entry = gpu::buffer_entry;
-            let storage = wgpu::BufferBindingType::Storage { read_only: true };
-            let (vertex, fragment) = (wgpu::ShaderStages::VERTEX, wgpu::ShaderStages::FRAGMENT);
-            let group = gpu
-                .device
-                .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-                    label: Some("winding"),
-                    entries: &[
-                        entry(0, vertex, wgpu::BufferBindingType::Uniform),
-                        entry(1, vertex, storage),
-                        entry(2, vertex | fragment, storage),
-                        entry(3, fragment, storage),
-                        entry(4, fragment, storage),
-                        entry(5, fragment, storage),
-                    ],
-                });
-            let layout = gpu
-                .device
-                .create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-                    label: Some("winding"),
-                    bind_group_layouts: &[Some(&group)],
-                    immediate_size: 0,
-                });
+            // glyphs, bands, band curves, curves (`@group(1)` of winding.wgsl).
+            let group = kit::layout(gpu, NAME, &[Slot::Storage; 4]);
+            let layout = kit::pipeline_layout(gpu, NAME, Some(&group));
             (group, layout)
         })
     }
@@ -242,10 +262,11 @@ impl Winding {
             ("USE_BANDS", f64::from(u8::from(s.bands.is_some()))),
             ("OVERLAY", output.constant()),
         ];
-        let module = gpu::shaders::create_module(&gpu.device, "winding.wgsl");
+        let module = SHADER.module(&gpu.device);
         let layout = &self.layout(gpu).1;
-        let pipeline =
-            CoverageTarget::quad_pipeline(&gpu.device, "winding", layout, &module, &constants, &[]);
+        let pipeline = PipelineBuilder::new(NAME, layout, &module)
+            .constants(&constants)
+            .build(&gpu.device);
         self.pipelines.push((output, pipeline));
         &self.pipelines.last().expect("just pushed").1
     }
@@ -262,14 +283,15 @@ impl Winding {
         let prepared = self
             .prepared
             .as_mut()
-            .ok_or_else(|| super::not_prepared("winding"))?;
+            .ok_or_else(|| super::not_prepared(NAME))?;
         let visible = prepared.instances.update(gpu, camera, 0.0)?;
         let pipeline = self.pipeline(gpu, output).clone();
         let prepared = self.prepared.as_ref().expect("checked above");
-        let mut pass = target.clearing_pass(encoder, "winding");
+        let mut pass = target.clearing_pass(encoder, NAME);
         if visible > 0 {
             pass.set_pipeline(&pipeline);
-            pass.set_bind_group(0, &prepared.bind_group, &[]);
+            pass.set_bind_group(0, prepared.instances.bind_group(), &[]);
+            pass.set_bind_group(1, &prepared.bind_group, &[]);
             pass.draw(0..4, 0..visible);
         }
         Ok(())
@@ -278,7 +300,7 @@ impl Winding {
 
 impl Method for Winding {
     fn name(&self) -> &'static str {
-        "winding"
+        NAME
     }
 
     fn prepare(&mut self, gpu: &GpuContext, scene: &Scene) -> Result<(), Error> {
@@ -293,28 +315,13 @@ impl Method for Winding {
                 gpu.buffer_of("winding band curves", &data.band_curves, storage),
                 gpu.buffer_of("winding curves", &data.curves, storage),
             ];
-            // In the order of the bindings in winding.wgsl.
-            let bound = [
-                instances.frame(),
-                instances.buffer(),
-                &buffers[0],
-                &buffers[1],
-                &buffers[2],
-                &buffers[3],
-            ];
             let group = &self.layout(gpu).0;
-            let bind_group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some("winding"),
-                layout: group,
-                entries: &bound
-                    .iter()
-                    .enumerate()
-                    .map(|(binding, buffer)| wgpu::BindGroupEntry {
-                        binding: binding as u32,
-                        resource: buffer.as_entire_binding(),
-                    })
-                    .collect::<Vec<_>>(),
-            });
+            let bind_group = kit::bind_group(
+                gpu,
+                NAME,
+                group,
+                &buffers.each_ref().map(wgpu::Buffer::as_entire_binding),
+            );
             let bytes = instances.bytes() + buffers.iter().map(wgpu::Buffer::size).sum::<u64>();
             self.prepared = Some(Prepared {
                 instances,
@@ -352,28 +359,9 @@ impl Method for Winding {
         gpu: &GpuContext,
         camera: &Camera,
     ) -> Result<Option<CurveCost>, Error> {
-        let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
-        gpu.catching_errors("counting curves per pixel", || {
-            let mut encoder = gpu.device.create_command_encoder(&Default::default());
-            self.draw(gpu, &mut encoder, &target, camera, Output::CurveCount)?;
-            gpu.queue.submit([encoder.finish()]);
-            gpu.wait_idle()
-        })?;
-        let (mut sum, mut covered, mut max) = (0.0, 0u64, 0u32);
-        for texel in target.read_texels(gpu)? {
-            if texel[3] > 0.0 {
-                sum += f64::from(texel[0]);
-                covered += 1;
-                max = max.max(texel[0].round() as u32);
-            }
-        }
-        Ok(Some(CurveCost {
-            mean: if covered > 0 {
-                sum / covered as f64
-            } else {
-                0.0
-            },
-            max,
-        }))
+        kit::count_curves(gpu, (camera.width, camera.height), |encoder, target| {
+            self.draw(gpu, encoder, target, camera, Output::CurveCount)
+        })
+        .map(Some)
     }
 }

@@ -1,0 +1,280 @@
+//! The few builders every method's GPU setup is made of: bind group layouts and bind
+//! groups numbered by position, the fixed `@group(0)` every method shares (the
+//! `Frame` uniform and the `GlyphInstance` array of `common.wgsl`), one render pipeline
+//! builder, and the curves-per-pixel tally.
+
+use super::{CoverageTarget, GpuContext, msaa::STENCIL_FORMAT};
+use crate::Error;
+
+/// A binding of a layout built by [`layout`], at its position in the list.
+#[derive(Clone, Copy, Debug)]
+pub enum Slot {
+    Uniform,
+    /// A uniform bound with a dynamic offset (one slice of a larger buffer per draw).
+    DynamicUniform,
+    /// A read-only storage buffer.
+    Storage,
+    /// A filterable float 2D texture.
+    Texture,
+    /// A filtering sampler.
+    Sampler,
+}
+
+impl Slot {
+    fn binding_type(self) -> wgpu::BindingType {
+        let buffer = |ty, has_dynamic_offset| wgpu::BindingType::Buffer {
+            ty,
+            has_dynamic_offset,
+            min_binding_size: None,
+        };
+        match self {
+            Slot::Uniform => buffer(wgpu::BufferBindingType::Uniform, false),
+            Slot::DynamicUniform => buffer(wgpu::BufferBindingType::Uniform, true),
+            Slot::Storage => buffer(wgpu::BufferBindingType::Storage { read_only: true }, false),
+            Slot::Texture => wgpu::BindingType::Texture {
+                sample_type: wgpu::TextureSampleType::Float { filterable: true },
+                view_dimension: wgpu::TextureViewDimension::D2,
+                multisampled: false,
+            },
+            Slot::Sampler => wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+        }
+    }
+}
+
+/// A bind group layout whose binding `i` is `slots[i]`, seen by both stages.
+pub fn layout(gpu: &GpuContext, label: &str, slots: &[Slot]) -> wgpu::BindGroupLayout {
+    let entries: Vec<_> = (0u32..)
+        .zip(slots)
+        .map(|(binding, slot)| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+            ty: slot.binding_type(),
+            count: None,
+        })
+        .collect();
+    gpu.device
+        .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some(label),
+            entries: &entries,
+        })
+}
+
+/// A bind group whose binding `i` is `resources[i]`.
+pub fn bind_group(
+    gpu: &GpuContext,
+    label: &str,
+    layout: &wgpu::BindGroupLayout,
+    resources: &[wgpu::BindingResource],
+) -> wgpu::BindGroup {
+    let entries: Vec<_> = (0u32..)
+        .zip(resources)
+        .map(|(binding, resource)| wgpu::BindGroupEntry {
+            binding,
+            resource: resource.clone(),
+        })
+        .collect();
+    gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some(label),
+        layout,
+        entries: &entries,
+    })
+}
+
+/// The layout of `@group(0)` in every method shader: binding 0 the `Frame` uniform,
+/// binding 1 the `GlyphInstance` array.
+pub fn frame_layout(gpu: &GpuContext) -> wgpu::BindGroupLayout {
+    layout(gpu, "frame and instances", &[Slot::Uniform, Slot::Storage])
+}
+
+/// A pipeline layout of `@group(0)` = [`frame_layout`] and the method's own `@group(1)`
+/// (if it binds anything more).
+pub fn pipeline_layout(
+    gpu: &GpuContext,
+    label: &str,
+    own: Option<&wgpu::BindGroupLayout>,
+) -> wgpu::PipelineLayout {
+    let frame = frame_layout(gpu);
+    gpu.device
+        .create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some(label),
+            bind_group_layouts: &[Some(&frame), own],
+            immediate_size: 0,
+        })
+}
+
+/// What a pipeline does to the target's colour.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ColorOut {
+    /// Adds to rgba: where quads overlap, disjoint glyphs sum to their union's coverage.
+    Add,
+    /// Writes the channels of the mask, replacing what was there.
+    Replace(wgpu::ColorWrites),
+}
+
+/// One render pipeline drawing into a coverage target (or its multisampled twin). By
+/// default: `vs_main` and `fs_main`, a triangle strip (one quad per instance), one
+/// sample, no stencil, colour added.
+pub struct PipelineBuilder<'a> {
+    label: &'a str,
+    layout: &'a wgpu::PipelineLayout,
+    module: &'a wgpu::ShaderModule,
+    entry_points: (&'a str, &'a str),
+    constants: &'a [(&'a str, f64)],
+    buffers: &'a [Option<wgpu::VertexBufferLayout<'a>>],
+    topology: wgpu::PrimitiveTopology,
+    samples: u32,
+    stencil: Option<wgpu::StencilState>,
+    color: ColorOut,
+}
+
+impl<'a> PipelineBuilder<'a> {
+    pub fn new(
+        label: &'a str,
+        layout: &'a wgpu::PipelineLayout,
+        module: &'a wgpu::ShaderModule,
+    ) -> Self {
+        PipelineBuilder {
+            label,
+            layout,
+            module,
+            entry_points: ("vs_main", "fs_main"),
+            constants: &[],
+            buffers: &[],
+            topology: wgpu::PrimitiveTopology::TriangleStrip,
+            samples: 1,
+            stencil: None,
+            color: ColorOut::Add,
+        }
+    }
+
+    pub fn label(mut self, label: &'a str) -> Self {
+        self.label = label;
+        self
+    }
+
+    pub fn entry_points(mut self, vertex: &'a str, fragment: &'a str) -> Self {
+        self.entry_points = (vertex, fragment);
+        self
+    }
+
+    /// Values of the shader's `override` constants.
+    pub fn constants(mut self, constants: &'a [(&'a str, f64)]) -> Self {
+        self.constants = constants;
+        self
+    }
+
+    pub fn vertex_buffers(mut self, buffers: &'a [Option<wgpu::VertexBufferLayout<'a>>]) -> Self {
+        self.buffers = buffers;
+        self
+    }
+
+    pub fn topology(mut self, topology: wgpu::PrimitiveTopology) -> Self {
+        self.topology = topology;
+        self
+    }
+
+    pub fn samples(mut self, samples: u32) -> Self {
+        self.samples = samples;
+        self
+    }
+
+    /// Tests and writes a [`STENCIL_FORMAT`] attachment.
+    pub fn stencil(mut self, stencil: wgpu::StencilState) -> Self {
+        self.stencil = Some(stencil);
+        self
+    }
+
+    pub fn color(mut self, color: ColorOut) -> Self {
+        self.color = color;
+        self
+    }
+
+    pub fn build(&self, device: &wgpu::Device) -> wgpu::RenderPipeline {
+        let options = wgpu::PipelineCompilationOptions {
+            constants: self.constants,
+            ..Default::default()
+        };
+        let target = match self.color {
+            ColorOut::Add => CoverageTarget::ADDITIVE,
+            ColorOut::Replace(write_mask) => wgpu::ColorTargetState {
+                format: CoverageTarget::FORMAT,
+                blend: None,
+                write_mask,
+            },
+        };
+        device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some(self.label),
+            layout: Some(self.layout),
+            vertex: wgpu::VertexState {
+                module: self.module,
+                entry_point: Some(self.entry_points.0),
+                compilation_options: options.clone(),
+                buffers: self.buffers,
+            },
+            // No culling: meshes whose faces count with opposite signs need both.
+            primitive: wgpu::PrimitiveState {
+                topology: self.topology,
+                ..Default::default()
+            },
+            depth_stencil: self.stencil.clone().map(|stencil| wgpu::DepthStencilState {
+                format: STENCIL_FORMAT,
+                depth_write_enabled: None,
+                depth_compare: None,
+                stencil,
+                bias: Default::default(),
+            }),
+            multisample: wgpu::MultisampleState {
+                count: self.samples,
+                ..Default::default()
+            },
+            fragment: Some(wgpu::FragmentState {
+                module: self.module,
+                entry_point: Some(self.entry_points.1),
+                compilation_options: options,
+                targets: &[Some(target)],
+            }),
+            multiview_mask: None,
+            cache: None,
+        })
+    }
+}
+
+/// Curves evaluated per pixel with nonzero coverage, for methods that count them: `draw`
+/// records a frame into a fresh target the camera's size that writes each pixel's count
+/// to red and its coverage to alpha (the method's counting output).
+pub fn count_curves(
+    gpu: &GpuContext,
+    (width, height): (u32, u32),
+    draw: impl FnOnce(&mut wgpu::CommandEncoder, &CoverageTarget) -> Result<(), Error>,
+) -> Result<CurveCost, Error> {
+    let target = CoverageTarget::new(gpu, width, height)?;
+    gpu.catching_errors("counting curves per pixel", || {
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        draw(&mut encoder, &target)?;
+        gpu.queue.submit([encoder.finish()]);
+        gpu.wait_idle()
+    })?;
+    let (mut sum, mut covered, mut max) = (0.0, 0u64, 0u32);
+    for texel in target.read_texels(gpu)? {
+        if texel[3] > 0.0 {
+            sum += f64::from(texel[0]);
+            covered += 1;
+            max = max.max(texel[0].round() as u32);
+        }
+    }
+    Ok(CurveCost {
+        mean: if covered > 0 {
+            sum / covered as f64
+        } else {
+            0.0
+        },
+        max,
+    })
+}
+
+/// What [`count_curves`] tallied: mean and most curves per covered pixel.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct CurveCost {
+    pub mean: f64,
+    pub max: u32,
+}

@@ -1,0 +1,196 @@
+//! One measured frame: a method's image of a scene and what drawing it cost — the one
+//! measurement `render --stats`, the bench, the app's sweep and the tests share, so
+//! their figures agree.
+
+use std::time::Instant;
+
+use serde::Serialize;
+
+use crate::Error;
+use crate::camera::Camera;
+use crate::coverage::CoverageImage;
+use crate::gpu::{CoverageTarget, GpuContext};
+use crate::methods::registry::MethodInfo;
+use crate::methods::{self, frame};
+use crate::metrics::{self, ErrorStats};
+use crate::reference;
+use crate::scene::Scene;
+
+/// What `render --stats` writes.
+#[derive(Clone, Debug, Serialize)]
+pub struct RenderStats {
+    pub method: String,
+    pub params: Vec<(String, String)>,
+    pub adapter: String,
+    /// Median GPU time of one frame after a warm-up; None for CPU methods.
+    pub gpu_ms: Option<f64>,
+    /// (min, max) of the timed frames.
+    pub gpu_ms_range: Option<(f64, f64)>,
+    /// How the frames were timed: timestamp queries, or the CPU's clock where the
+    /// device has none.
+    pub gpu_clock: Option<String>,
+    /// Font outlines and scene for the reference; plus the method's GPU data for GPU
+    /// methods.
+    pub cpu_prepare_ms: f64,
+    /// The reference's rasterization time; None for GPU methods.
+    pub cpu_render_ms: Option<f64>,
+    /// GPU memory the method holds once it has drawn: its scene data and intermediate
+    /// attachments (the coverage target not counted).
+    pub gpu_bytes: u64,
+    pub width: u32,
+    pub height: u32,
+    pub size_px_per_em: f64,
+    pub instances: usize,
+    pub distinct_glyphs: usize,
+    /// Sum of coverage over the image, pixels.
+    pub covered_area_px: f64,
+    /// Error against the reference, when `--error-image` asked for it.
+    pub error: Option<ErrorStats>,
+    /// Curves evaluated per covered pixel, for methods with that notion.
+    pub curves_per_pixel: Option<methods::CurveCost>,
+    /// The meshes built, for methods that draw meshes.
+    pub mesh: Option<methods::MeshStats>,
+}
+
+/// How many frames are timed, after how many untimed warm-up frames (shaders compile
+/// lazily on the first frames).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct FrameTiming {
+    pub warmup: usize,
+    pub frames: usize,
+}
+
+/// `render --stats` times 21 frames after 5 warm-up frames.
+pub const RENDER_TIMING: FrameTiming = FrameTiming {
+    warmup: 5,
+    frames: 21,
+};
+
+/// How `gpu_ms` was measured.
+pub const CLOCK_TIMESTAMPS: &str = "timestamp queries";
+pub const CLOCK_WALL: &str = "wall clock of submit and wait (no timestamp queries)";
+
+/// A method's image of a scene and what was measured drawing it.
+pub struct Measured {
+    pub image: CoverageImage,
+    /// The overlay picture, when the `overlay` parameter asked for one.
+    pub overlay: Option<image::RgbImage>,
+    /// Everything but `error`; `cpu_prepare_ms` is the method's own preparation.
+    pub stats: RenderStats,
+}
+
+/// Draws `scene` through `camera` with method `method` and measures it: the one
+/// measurement `render --stats` and the bench share, so their figures agree. `gpu` is
+/// needed for every method but the reference.
+pub fn measure(
+    gpu: Option<&GpuContext>,
+    scene: &Scene,
+    camera: &Camera,
+    info: &MethodInfo,
+    params: &[(String, String)],
+    timing: FrameTiming,
+) -> Result<Measured, Error> {
+    let mut stats = RenderStats {
+        method: info.name.to_owned(),
+        params: params.to_vec(),
+        adapter: String::new(),
+        gpu_ms: None,
+        gpu_ms_range: None,
+        gpu_clock: None,
+        cpu_prepare_ms: 0.0,
+        cpu_render_ms: None,
+        gpu_bytes: 0,
+        width: camera.width,
+        height: camera.height,
+        size_px_per_em: camera.size_px_per_em,
+        instances: scene.instances.len(),
+        distinct_glyphs: scene.glyphs.len(),
+        covered_area_px: 0.0,
+        error: None,
+        curves_per_pixel: None,
+        mesh: None,
+    };
+    let mut overlay = None;
+    let image = if info.is_reference() {
+        methods::reject_unknown_params(info.name, params, &[])?;
+        stats.adapter = "cpu (exact reference rasterizer)".into();
+        let start = Instant::now();
+        let image = reference::rasterize(scene, camera)?;
+        stats.cpu_render_ms = Some(ms_since(start));
+        image
+    } else {
+        let create = info
+            .create
+            .ok_or_else(|| Error::Input(format!("'{}' has no GPU method", info.name)))?;
+        let mut method = create(params)?;
+        let gpu = gpu.ok_or_else(|| Error::Gpu("a GPU method needs a GPU context".into()))?;
+        stats.adapter = gpu.adapter_name();
+        let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
+        let start = Instant::now();
+        method.prepare(gpu, scene)?;
+        stats.cpu_prepare_ms = ms_since(start);
+        frame::render_frame(gpu, method.as_mut(), &target, camera)?;
+        let image = target.readback(gpu)?;
+        if methods::param(params, "overlay").is_some_and(|v| v != "none") {
+            overlay = Some(target.readback_color(gpu)?);
+        }
+        stats.curves_per_pixel = method.curves_per_pixel(gpu, camera)?;
+        let (mut times, clock) = match frame::time_frames(
+            gpu,
+            method.as_mut(),
+            &target,
+            camera,
+            timing.warmup,
+            timing.frames,
+        )? {
+            Some(times) => (times, CLOCK_TIMESTAMPS),
+            None => (
+                wall_clock_frames(gpu, method.as_mut(), &target, camera, timing)?,
+                CLOCK_WALL,
+            ),
+        };
+        times.sort_by(f64::total_cmp);
+        if let (Some(first), Some(last)) = (times.first(), times.last()) {
+            stats.gpu_ms = metrics::median(times.iter().copied());
+            stats.gpu_ms_range = Some((*first, *last));
+            stats.gpu_clock = Some(clock.to_owned());
+        }
+        // After the frames: what a method allocates on its first frame (intermediate
+        // attachments, meshes that depend on the camera) counts too.
+        stats.gpu_bytes = method.gpu_bytes();
+        stats.mesh = method.mesh_stats();
+        image
+    };
+    stats.covered_area_px = image.sum();
+    Ok(Measured {
+        image,
+        overlay,
+        stats,
+    })
+}
+
+/// Frame times from the CPU's clock, for devices without timestamp queries: each frame
+/// from encoding to the GPU going idle, so it includes the submission's overhead.
+fn wall_clock_frames(
+    gpu: &GpuContext,
+    method: &mut dyn methods::Method,
+    target: &CoverageTarget,
+    camera: &Camera,
+    timing: FrameTiming,
+) -> Result<Vec<f64>, Error> {
+    for _ in 0..timing.warmup {
+        frame::render_frame(gpu, method, target, camera)?;
+    }
+    (0..timing.frames)
+        .map(|_| {
+            let start = Instant::now();
+            frame::render_frame(gpu, method, target, camera)?;
+            Ok(ms_since(start))
+        })
+        .collect()
+}
+
+/// Milliseconds since `start`.
+pub fn ms_since(start: Instant) -> f64 {
+    start.elapsed().as_secs_f64() * 1e3
+}

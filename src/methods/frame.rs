@@ -1,0 +1,116 @@
+//! The frame loop every caller shares: a prepared [`Method`] drawn once
+//! ([`render_frame`], [`render_image`]) or many times under timestamp queries
+//! ([`time_frames`]). The CLI, the bench, the app and the tests all draw through these,
+//! so a method is measured exactly as it is checked.
+
+use super::Method;
+use crate::Error;
+use crate::camera::Camera;
+use crate::coverage::CoverageImage;
+use crate::gpu::timing::Timestamps;
+use crate::gpu::{CoverageTarget, GpuContext};
+
+/// Encodes one frame of `method` into `target`, submits it and waits for the GPU.
+pub fn render_frame(
+    gpu: &GpuContext,
+    method: &mut dyn Method,
+    target: &CoverageTarget,
+    camera: &Camera,
+) -> Result<(), Error> {
+    check_frame(target, camera)?;
+    gpu.catching_errors(&format!("rendering with '{}'", method.name()), || {
+        let mut encoder = gpu
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("frame"),
+            });
+        method.encode(gpu, &mut encoder, target, camera)?;
+        gpu.queue.submit([encoder.finish()]);
+        gpu.wait_idle()
+    })
+}
+
+/// Renders one frame of a prepared `method` into a new target the camera's size and
+/// reads its coverage back.
+pub fn render_image(
+    gpu: &GpuContext,
+    method: &mut dyn Method,
+    camera: &Camera,
+) -> Result<CoverageImage, Error> {
+    let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
+    render_frame(gpu, method, &target, camera)?;
+    target.readback(gpu)
+}
+
+/// A frame needs a camera that can be drawn with, looking at exactly the target: the
+/// camera's image size fixes the projection (the tilt turns about the image centre).
+fn check_frame(target: &CoverageTarget, camera: &Camera) -> Result<(), Error> {
+    camera.validate()?;
+    if (camera.width, camera.height) != (target.width, target.height) {
+        return Err(Error::Input(format!(
+            "the camera sees {}x{} pixels but the target is {}x{}",
+            camera.width, camera.height, target.width, target.height
+        )));
+    }
+    Ok(())
+}
+
+/// GPU time of `frames` frames, in milliseconds each, after `warmup` untimed frames.
+/// `Ok(None)` when the device has no timestamp queries.
+///
+/// Only the GPU work the method records on the encoder is timed: data it uploads with
+/// `Queue::write_buffer` is copied before the encoder runs, and CPU time is not counted.
+pub fn time_frames(
+    gpu: &GpuContext,
+    method: &mut dyn Method,
+    target: &CoverageTarget,
+    camera: &Camera,
+    warmup: usize,
+    frames: usize,
+) -> Result<Option<Vec<f64>>, Error> {
+    if !gpu.has_timestamps() {
+        return Ok(None);
+    }
+    check_frame(target, camera)?;
+    // First frames pay for lazy shader compilation and first-use allocations.
+    for _ in 0..warmup {
+        render_frame(gpu, method, target, camera)?;
+    }
+    // A query set holds at most QUERY_SET_MAX_QUERIES timestamps: two a frame.
+    let batch_limit = wgpu::QUERY_SET_MAX_QUERIES / 2;
+    let mut times = Vec::with_capacity(frames);
+    while times.len() < frames {
+        let batch = u32::try_from(frames - times.len())
+            .unwrap_or(u32::MAX)
+            .min(batch_limit);
+        times.extend(time_batch(gpu, method, target, camera, batch)?);
+    }
+    Ok(Some(times))
+}
+
+fn time_batch(
+    gpu: &GpuContext,
+    method: &mut dyn Method,
+    target: &CoverageTarget,
+    camera: &Camera,
+    frames: u32,
+) -> Result<Vec<f64>, Error> {
+    gpu.catching_errors(&format!("timing '{}'", method.name()), || {
+        let timestamps = Timestamps::new(gpu, "frame timestamps", 2 * frames);
+        for frame in 0..frames {
+            let mut encoder = gpu
+                .device
+                .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                    label: Some("timed frame"),
+                });
+            timestamps.write(&mut encoder, 2 * frame);
+            method.encode(gpu, &mut encoder, target, camera)?;
+            timestamps.write(&mut encoder, 2 * frame + 1);
+            gpu.queue.submit([encoder.finish()]);
+            // One frame at a time, as `render_frame` draws them: no frame's work overlaps
+            // the next one's timestamps.
+            gpu.wait_idle()?;
+        }
+        timestamps.read_intervals(gpu)
+    })
+}

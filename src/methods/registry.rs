@@ -1,0 +1,193 @@
+//! The registry: one row per method, and every list of methods derived from it — the
+//! CLI's `--method` values and help, the app's menus, the bench's sweep and plot
+//! colours, the stability sweep's variants and claims, shader validation. A method is
+//! added by writing its module (with its [`MethodInfo`] row) and one line in
+//! [`METHODS`]; nothing else names it.
+
+use super::{Method, ParamSpec, Params};
+use crate::Error;
+use crate::gpu::shaders::Shader;
+
+/// What a method is for, which decides where it appears.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Role {
+    /// The exact CPU rasterizer every method is measured against.
+    Reference,
+    /// A way to draw text from outlines on the GPU: benched, swept, claimed.
+    Method,
+    /// What the methods are compared with (the atlas); the bench divides times by it.
+    Baseline,
+    /// A check of the GPU path, not a way to draw text (`bounds`): drawn and tested,
+    /// not benched.
+    Diagnostic,
+}
+
+/// One method, as everything that lists methods sees it.
+#[derive(Debug)]
+pub struct MethodInfo {
+    /// The name `--method` takes.
+    pub name: &'static str,
+    /// One line: how it draws. Shown in `--help` and the app's menus.
+    pub summary: &'static str,
+    pub role: Role,
+    /// Its WGSL (None for the CPU reference).
+    pub shader: Option<Shader>,
+    pub params: &'static [ParamSpec],
+    /// Its colour in plots, (r, g, b).
+    pub colour: [u8; 3],
+    /// The settings the bench measures it at, its default first (empty: not benched).
+    pub bench: &'static [BenchSetting],
+    /// What the stability sweep checks of it: each setting with its claim.
+    pub claims: &'static [ClaimedSetting],
+    /// Builds it from `--param`s (None for the reference, which is not a GPU method).
+    pub create: Option<fn(&Params) -> Result<Box<dyn Method>, Error>>,
+}
+
+impl MethodInfo {
+    pub fn is_reference(&self) -> bool {
+        self.role == Role::Reference
+    }
+
+    /// Whether the bench measures it (a drawing method or the baseline).
+    pub fn is_benched(&self) -> bool {
+        matches!(self.role, Role::Method | Role::Baseline)
+    }
+}
+
+/// One setting the bench measures a method at.
+#[derive(Clone, Copy, Debug)]
+pub struct BenchSetting {
+    pub params: &'static [(&'static str, &'static str)],
+    /// Measured by `--quick` too.
+    pub quick: bool,
+}
+
+/// A bench setting: `params`, measured by `--quick` when `quick`.
+pub const fn bench_at(
+    params: &'static [(&'static str, &'static str)],
+    quick: bool,
+) -> BenchSetting {
+    BenchSetting { params, quick }
+}
+
+/// One setting of a method the stability sweep runs, with what it claims there.
+#[derive(Clone, Copy, Debug)]
+pub struct ClaimedSetting {
+    /// Its column in the stability table.
+    pub label: &'static str,
+    pub params: &'static [(&'static str, &'static str)],
+    pub claim: Claim,
+}
+
+/// A method's claim: no pixel off by more than `max_error` on every case but those
+/// with one of the `except` traits (its documented limitations), or on none; on its
+/// limitations, no pixel off by more than `limitation_max` where that is given, so a
+/// regression inside a limitation still breaks the claim.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Claim {
+    /// None: the method claims no bound; its errors are documented limitations.
+    pub max_error: Option<f64>,
+    pub except: &'static [Trait],
+    /// The looser bound that still holds on the limitations (None: none does).
+    pub limitation_max: Option<f64>,
+    /// The claim, and its limitations, in the README's words.
+    pub statement: &'static str,
+}
+
+impl Claim {
+    /// Whether an outline with `traits` is one of this claim's documented limitations.
+    pub fn is_limitation(&self, traits: &[Trait]) -> bool {
+        self.max_error.is_none() || traits.iter().any(|t| self.except.contains(t))
+    }
+
+    /// The bound this claim sets on an outline with `traits`, if any.
+    pub fn bound(&self, traits: &[Trait]) -> Option<f64> {
+        if self.is_limitation(traits) {
+            self.limitation_max
+        } else {
+            self.max_error
+        }
+    }
+}
+
+/// A property of an outline that a method's claim may leave out of its scope.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+pub enum Trait {
+    /// Contours overlap or cross themselves: a distance to the outline is not a
+    /// distance to the filled area's boundary.
+    Overlapping,
+    /// Several edges, or a whole contour, inside one pixel: one distance per pixel (or
+    /// four point samples) cannot resolve them.
+    SubpixelDetail,
+    /// Contours stacked hundreds deep, their edges closer than a pixel: winding numbers
+    /// of 256 wrap an 8-bit stencil counter to 0, and more edges cross one pixel's
+    /// window than a ray keeps sorted there (8).
+    DenseOverlaps,
+}
+
+/// The exact CPU rasterizer: not a GPU method, so it has no constructor; callers ask
+/// [`MethodInfo::is_reference`] and rasterize with [`crate::reference`].
+pub const REFERENCE: MethodInfo = MethodInfo {
+    name: "reference",
+    summary: "exact area coverage on the CPU, in f64: what every method is measured against",
+    role: Role::Reference,
+    shader: None,
+    params: &[],
+    colour: [0, 0, 0],
+    bench: &[],
+    claims: &[],
+    create: None,
+};
+
+/// Every method, in the order menus, tables and plots list them.
+pub const METHODS: &[&MethodInfo] = &[
+    &REFERENCE,
+    &super::bounds::INFO,
+    &super::winding::INFO,
+    &super::sdf_cells::INFO,
+    &super::xor_stencil::INFO,
+    &super::tessellation::INFO,
+    &super::atlas::INFO,
+];
+
+/// The method called `name`, or an error listing the names there are.
+pub fn find(name: &str) -> Result<&'static MethodInfo, Error> {
+    METHODS
+        .iter()
+        .copied()
+        .find(|m| m.name == name)
+        .ok_or_else(|| {
+            Error::Input(format!(
+                "unknown method '{name}'; choose one of: {}",
+                names().collect::<Vec<_>>().join(", ")
+            ))
+        })
+}
+
+/// Every method's name, the reference included.
+pub fn names() -> impl Iterator<Item = &'static str> {
+    METHODS.iter().map(|m| m.name)
+}
+
+/// The methods the bench measures, the baseline among them.
+pub fn benched() -> impl Iterator<Item = &'static MethodInfo> {
+    METHODS.iter().copied().filter(|m| m.is_benched())
+}
+
+/// The method every bench time is divided by.
+pub fn baseline() -> &'static MethodInfo {
+    METHODS
+        .iter()
+        .copied()
+        .find(|m| m.role == Role::Baseline)
+        .expect("the registry has a baseline")
+}
+
+/// `--method`'s help: each name with its summary.
+pub fn help() -> String {
+    METHODS
+        .iter()
+        .map(|m| format!("{}: {}", m.name, m.summary))
+        .collect::<Vec<_>>()
+        .join("; ")
+}

@@ -1,0 +1,254 @@
+//! One conformance test over the registry: every method it lists is drawn, checked and
+//! measured everywhere a method belongs, so a method added to the registry is tested
+//! everywhere and a row left incomplete fails here rather than going missing quietly
+//! (from the bench, the plot's legend, the stability sweep or the app's menus).
+
+mod common;
+
+use std::collections::HashSet;
+
+use glyphscope::measure::{self, FrameTiming};
+use glyphscope::methods::registry::{self, MethodInfo, Role, Trait};
+use glyphscope::methods::{Overlay, param_specs};
+use glyphscope::metrics;
+use glyphscope::stability::claims;
+use glyphscope::view::ViewArgs;
+
+/// A few ordinary scenes, as `render` draws them, with what makes them hard.
+fn scenes() -> Vec<(&'static str, ViewArgs, &'static [Trait])> {
+    let text = ViewArgs::text;
+    vec![
+        ("text at 16 px/em", text("Hamburgefonstiv", 16.0), &[]),
+        (
+            "turned 30° and tilted",
+            ViewArgs {
+                matrix: Some([0.866_025_4, -0.5, 0.5, 0.866_025_4]),
+                tilt: 25.0,
+                ..text("Rotated", 28.0)
+            },
+            &[],
+        ),
+        (
+            "Latin Modern cubics",
+            ViewArgs {
+                font: Some("fonts/lmroman10-regular.otf".into()),
+                ..text("Quixotic", 24.0)
+            },
+            &[],
+        ),
+        (
+            "Inter at wght 900, contours overlapping",
+            ViewArgs {
+                font: Some("fonts/Inter-roman.var.ttf".into()),
+                variation: vec![("wght".into(), 900.0)],
+                ..text("Ökonomie", 32.0)
+            },
+            &[Trait::Overlapping],
+        ),
+    ]
+}
+
+/// One frame is enough here: the figures checked are the image's, not its time.
+const ONE_FRAME: FrameTiming = FrameTiming {
+    warmup: 0,
+    frames: 1,
+};
+
+/// Every method's row is complete for its role, and no two share a name or a colour.
+#[test]
+fn every_row_is_complete_for_its_role() {
+    let mut names = HashSet::new();
+    let mut colours = HashSet::new();
+    for m in registry::METHODS {
+        assert!(names.insert(m.name), "{}: named twice", m.name);
+        assert!(
+            colours.insert(m.colour),
+            "{}: a colour taken already",
+            m.name
+        );
+        assert!(m.summary.len() > 20, "{}: say how it draws", m.name);
+        assert_eq!(
+            m.create.is_some(),
+            m.role != Role::Reference,
+            "{}: every GPU method can be made; the reference is not one",
+            m.name
+        );
+        assert_eq!(
+            m.shader.is_some(),
+            m.create.is_some(),
+            "{}: a shader",
+            m.name
+        );
+        if m.is_benched() {
+            assert!(
+                m.bench
+                    .first()
+                    .is_some_and(|s| s.params.is_empty() && s.quick),
+                "{}: the bench measures its default first, in --quick too",
+                m.name
+            );
+            assert!(
+                m.bench.iter().filter(|s| s.quick).count() >= 2,
+                "{}: --quick shows a trade",
+                m.name
+            );
+        } else {
+            assert!(
+                m.bench.is_empty(),
+                "{}: benched, but not in its role",
+                m.name
+            );
+        }
+        if m.role == Role::Method {
+            assert!(
+                m.claims.iter().any(|c| c.params.is_empty()),
+                "{}: a drawing method states a claim at its defaults",
+                m.name
+            );
+        }
+        assert_eq!(param_specs(m.name).len(), m.params.len(), "{}", m.name);
+    }
+    assert_eq!(
+        registry::METHODS
+            .iter()
+            .filter(|m| m.role == Role::Baseline)
+            .count(),
+        1,
+        "one baseline divides every bench time"
+    );
+}
+
+/// What the bench and stability run is exactly what the registry lists.
+#[test]
+fn the_bench_and_stability_run_every_method_of_their_roles() {
+    let benched: Vec<&str> = registry::benched().map(|m| m.name).collect();
+    let expected: Vec<&str> = registry::METHODS
+        .iter()
+        .filter(|m| matches!(m.role, Role::Method | Role::Baseline))
+        .map(|m| m.name)
+        .collect();
+    assert_eq!(benched, expected);
+    let swept: HashSet<&str> = claims::variants().iter().map(|v| v.method).collect();
+    for m in registry::METHODS.iter().filter(|m| m.role == Role::Method) {
+        assert!(
+            swept.contains(m.name),
+            "{}: not in the stability sweep",
+            m.name
+        );
+    }
+    for v in claims::variants() {
+        let m = registry::find(v.method).unwrap();
+        (m.create.unwrap())(&v.params()).unwrap_or_else(|e| panic!("{}: {e}", v.label));
+    }
+}
+
+/// Every GPU method draws every scene as `render` does: finite coverage, ink where the
+/// reference has ink, and — for each setting it claims a bound at — no pixel off by
+/// more than the bound where the scene is inside the claim's scope.
+#[test]
+fn every_method_draws_every_scene_within_its_claims() {
+    let gpu = common::gpu();
+    for (what, view, traits) in scenes() {
+        let (scene, camera) = view.build().unwrap();
+        let reference =
+            measure::measure(None, &scene, &camera, &registry::REFERENCE, &[], ONE_FRAME)
+                .unwrap()
+                .image;
+        for m in registry::METHODS.iter().filter(|m| !m.is_reference()) {
+            let mut settings: Vec<(Vec<(String, String)>, Option<f64>, &str)> = m
+                .claims
+                .iter()
+                .map(|c| {
+                    let params = c
+                        .params
+                        .iter()
+                        .map(|&(k, v)| (k.into(), v.into()))
+                        .collect();
+                    (params, c.claim.bound(traits), c.label)
+                })
+                .collect();
+            if !m.claims.iter().any(|c| c.params.is_empty()) {
+                settings.push((Vec::new(), None, m.name));
+            }
+            for (params, bound, label) in settings {
+                let drawn = measure::measure(Some(gpu), &scene, &camera, m, &params, ONE_FRAME)
+                    .unwrap_or_else(|e| panic!("{label} on {what}: {e}"));
+                let image = &drawn.image;
+                assert!(
+                    image.data.iter().all(|v| v.is_finite()),
+                    "{label} on {what}: non-finite coverage"
+                );
+                assert!(
+                    image.sum() > 0.25 * reference.sum(),
+                    "{label} on {what}: {} px of ink where the reference has {}",
+                    image.sum(),
+                    reference.sum()
+                );
+                let error = metrics::compare(image, &reference).unwrap();
+                if let Some(bound) = bound {
+                    assert!(
+                        error.max <= bound,
+                        "{label} on {what}: off by {} at {:?}, over its claim of {bound}",
+                        error.max,
+                        error.worst_pixel
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Every overlay a method offers draws a picture, and every value its parameters offer
+/// (the app builds its controls from them) is accepted.
+#[test]
+fn every_overlay_and_parameter_of_every_method_works() {
+    let gpu = common::gpu();
+    let (scene, camera) = ViewArgs::text("go", 48.0).build().unwrap();
+    for m in registry::METHODS.iter().filter(|m| !m.is_reference()) {
+        let create = m.create.unwrap();
+        let offered = create(&[]).unwrap().overlays();
+        for overlay in Overlay::ALL {
+            let params = vec![("overlay".to_string(), overlay.name().to_string())];
+            if !offered.contains(&overlay) {
+                assert!(
+                    create(&params).is_err(),
+                    "{}: {} not offered",
+                    m.name,
+                    overlay.name()
+                );
+                continue;
+            }
+            let drawn = measure::measure(Some(gpu), &scene, &camera, m, &params, ONE_FRAME)
+                .unwrap_or_else(|e| panic!("{} {}: {e}", m.name, overlay.name()));
+            let picture = drawn.overlay.expect("an overlay is a picture");
+            let lit = picture.pixels().filter(|p| p.0 != [0, 0, 0]).count();
+            assert!(
+                lit > 50,
+                "{} {}: {lit} pixels drawn",
+                m.name,
+                overlay.name()
+            );
+        }
+        for spec in m.params {
+            let mut values: Vec<String> = spec.choices.iter().map(|v| v.to_string()).collect();
+            if let Some((lo, hi)) = spec.range {
+                values.extend([lo.to_string(), hi.to_string()]);
+            }
+            for value in values {
+                create(&[(spec.key.to_string(), value.clone())])
+                    .unwrap_or_else(|e| panic!("{} {}={value}: {e}", m.name, spec.key));
+            }
+        }
+    }
+}
+
+/// A name the registry does not hold is refused with the names it does, in one line.
+#[test]
+fn an_unknown_method_names_the_known_ones() {
+    let error = registry::find("solid-box").unwrap_err().to_string();
+    assert!(!error.contains('\n'));
+    for m in registry::METHODS {
+        assert!(error.contains(m.name), "{error}");
+    }
+    let _: &MethodInfo = registry::find(registry::REFERENCE.name).unwrap();
+}

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Renders every method of a glyphscope binary on a set of small shipped scenes, each
+# overlay included, into a folder: PNGs, error images and statistics without timings.
+# Two builds' folders compared with `diff -r` show whether a change moved any pixel or
+# figure (the check behind "behaviour unchanged" refactors).
+#   tools/render_snapshot.sh target/release/glyphscope /tmp/after
+set -euo pipefail
+bin=$1
+out=$2
+mkdir -p "$out"
+methods=$("$bin" render --help | sed -n 's/.*The method that draws it: //p' | tr ';' '\n' \
+    | sed -n 's/^ *\([a-z-]*\):.*/\1/p' || true)
+[ -n "$methods" ] || methods="reference bounds winding sdf-cells xor-stencil tessellation atlas"
+scenes=(
+    "hamburg|--text Hamburgefonstiv --size 16"
+    "small|--text Hamburgefonstiv --size 7"
+    "rotated|--text Rotated --size 40 --matrix 0.866,-0.5,0.5,0.866 --tilt 30"
+    "latin|--font fonts/lmroman10-regular.otf --text Quixotic --size 24"
+    "inter|--font fonts/Inter-roman.var.ttf --variation wght=900 --text Overlap --size 32"
+    "bengali|--font fonts/Lohit-Bengali.ttf --text ক্ষ্ম --size 40"
+    "edge|--text O --size 20000 --width 128 --height 128 --origin=-1500,9000"
+)
+for method in $methods; do
+    overlays=$("$bin" render --text x --size 8 --method "$method" --param overlay=zz \
+        --out /dev/null 2>&1 | sed -n 's/.*it has: none, //p' | tr -d ',' || true)
+    for scene in "${scenes[@]}"; do
+        name=${scene%%|*}
+        read -r -a args <<<"${scene#*|}"
+        base="$out/$method-$name"
+        "$bin" render "${args[@]}" --method "$method" --out "$base.png" \
+            --stats "$base.json" --error-image "$base-error.png"
+        # Timings and the adapter vary from run to run; everything else must not.
+        grep -v '_ms\|"adapter"\|gpu_clock\|^ *[0-9.e-]*,\?$\|gpu_ms_range' "$base.json" >"$base.stats"
+        rm "$base.json"
+        for overlay in $overlays; do
+            "$bin" render "${args[@]}" --method "$method" --param "overlay=$overlay" \
+                --out "$base-$overlay.png"
+        done
+    done
+done
