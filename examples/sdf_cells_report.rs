@@ -13,7 +13,7 @@ use glyphscope::camera::Camera;
 use glyphscope::font::{Font, GlyphId, SHIPPED_FONTS};
 use glyphscope::geometry::DEFAULT_QUAD_TOLERANCE_EM;
 use glyphscope::gpu::{CoverageTarget, GpuContext};
-use glyphscope::methods::frame::{render_frame, time_frames};
+use glyphscope::methods::frame::{FrameTime, render_frame, time_frames};
 use glyphscope::methods::{self, Method};
 
 /// Owned `--param` pairs.
@@ -221,16 +221,17 @@ fn page_report(gpu: &GpuContext) {
     // Interleaved rounds, so that load from elsewhere falls on every mode alike; each
     // round's median per mode, and each round's ratio to the estimate.
     let median = |t: Vec<f64>| metrics::median(t).expect("frames were timed");
+    let gpu_ms = |t: Vec<FrameTime>| t.iter().map(|t| t.gpu_ms).collect::<Vec<_>>();
     let rounds: Vec<Vec<f64>> = (0..9)
         .map(|_| {
             methods
                 .iter_mut()
                 .map(|(_, method)| {
-                    median(
+                    median(gpu_ms(
                         time_frames(gpu, method.as_mut(), &target, &camera, 1, 7)
                             .unwrap()
                             .unwrap(),
-                    )
+                    ))
                 })
                 .collect()
         })

@@ -101,7 +101,7 @@ fn main() {
             )
             .unwrap()
             .expect("timestamps");
-            run.times.extend(frames);
+            run.times.extend(frames.iter().map(|t| t.gpu_ms));
         }
     }
 

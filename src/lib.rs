@@ -35,4 +35,8 @@ pub enum Error {
     /// A result that cannot be written.
     #[error("{0}")]
     Output(String),
+    /// A result the code cannot vouch for (a value no correct computation gives):
+    /// reported, never hidden by a clamp and never a panic.
+    #[error("{0}")]
+    Internal(String),
 }

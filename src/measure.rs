@@ -8,10 +8,11 @@ use serde::Serialize;
 
 use crate::Error;
 use crate::camera::Camera;
-use crate::coverage::CoverageImage;
+use crate::coverage::{CoverageImage, ValueRange};
 use crate::gpu::{CoverageTarget, GpuContext};
+use crate::methods;
+use crate::methods::frame::{self, FrameTime, ms_since};
 use crate::methods::registry::MethodInfo;
-use crate::methods::{self, frame};
 use crate::metrics::{self, ErrorStats};
 use crate::reference;
 use crate::scene::Scene;
@@ -29,6 +30,13 @@ pub struct RenderStats {
     /// How the frames were timed: timestamp queries, or the CPU's clock where the
     /// device has none.
     pub gpu_clock: Option<String>,
+    /// Median CPU time of recording one frame (the method's `encode`: culling, sorting,
+    /// mesh building, instance writes), in the same frames; None for CPU methods.
+    pub cpu_frame_ms: Option<f64>,
+    /// What one frame costs in all: `gpu_ms` + `cpu_frame_ms` (the CPU records the
+    /// next frame while the GPU draws this one only where work is pipelined; the
+    /// bench ranks by this sum so per-frame CPU work is never left out).
+    pub frame_ms: Option<f64>,
     /// Font outlines and scene for the reference; plus the method's GPU data for GPU
     /// methods.
     pub cpu_prepare_ms: f64,
@@ -44,6 +52,10 @@ pub struct RenderStats {
     pub distinct_glyphs: usize,
     /// Sum of coverage over the image, pixels.
     pub covered_area_px: f64,
+    /// The coverage values as the method wrote them, before overlapping instances'
+    /// sums above 1 are taken down to their union: a value below 0, or not finite, is
+    /// an artifact (see [`crate::metrics::ErrorStats`]).
+    pub coverage_range: Option<ValueRange>,
     /// Error against the reference, when `--error-image` asked for it.
     pub error: Option<ErrorStats>,
     /// Curves evaluated per covered pixel, for methods with that notion.
@@ -97,6 +109,8 @@ pub fn measure(
         gpu_ms: None,
         gpu_ms_range: None,
         gpu_clock: None,
+        cpu_frame_ms: None,
+        frame_ms: None,
         cpu_prepare_ms: 0.0,
         cpu_render_ms: None,
         gpu_bytes: 0,
@@ -106,6 +120,7 @@ pub fn measure(
         instances: scene.instances.len(),
         distinct_glyphs: scene.glyphs.len(),
         covered_area_px: 0.0,
+        coverage_range: None,
         error: None,
         curves_per_pixel: None,
         mesh: None,
@@ -130,12 +145,14 @@ pub fn measure(
         method.prepare(gpu, scene)?;
         stats.cpu_prepare_ms = ms_since(start);
         frame::render_frame(gpu, method.as_mut(), &target, camera)?;
-        let image = target.readback(gpu)?;
+        let raw = target.readback(gpu)?;
+        stats.coverage_range = Some(raw.range());
+        let image = raw.clamp_to_union();
         if methods::param(params, "overlay").is_some_and(|v| v != "none") {
             overlay = Some(target.readback_color(gpu)?);
         }
         stats.curves_per_pixel = method.curves_per_pixel(gpu, camera)?;
-        let (mut times, clock) = match frame::time_frames(
+        let (times, clock) = match frame::time_frames(
             gpu,
             method.as_mut(),
             &target,
@@ -149,11 +166,17 @@ pub fn measure(
                 CLOCK_WALL,
             ),
         };
-        times.sort_by(f64::total_cmp);
-        if let (Some(first), Some(last)) = (times.first(), times.last()) {
-            stats.gpu_ms = metrics::median(times.iter().copied());
-            stats.gpu_ms_range = Some((*first, *last));
+        let gpu_ms = || times.iter().map(|t| t.gpu_ms);
+        if let Some(median) = metrics::median(gpu_ms()) {
+            let range = gpu_ms().fold((f64::INFINITY, 0.0f64), |(lo, hi), t| {
+                (lo.min(t), hi.max(t))
+            });
+            let cpu_ms = metrics::median(times.iter().map(|t| t.cpu_ms));
+            stats.gpu_ms = Some(median);
+            stats.gpu_ms_range = Some(range);
             stats.gpu_clock = Some(clock.to_owned());
+            stats.cpu_frame_ms = cpu_ms;
+            stats.frame_ms = metrics::median(times.iter().map(|t| t.gpu_ms + t.cpu_ms));
         }
         // After the frames: what a method allocates on its first frame (intermediate
         // attachments, meshes that depend on the camera) counts too.
@@ -161,6 +184,9 @@ pub fn measure(
         stats.mesh = method.mesh_stats();
         image
     };
+    if stats.coverage_range.is_none() {
+        stats.coverage_range = Some(image.range());
+    }
     stats.covered_area_px = image.sum();
     Ok(Measured {
         image,
@@ -170,27 +196,30 @@ pub fn measure(
 }
 
 /// Frame times from the CPU's clock, for devices without timestamp queries: each frame
-/// from encoding to the GPU going idle, so it includes the submission's overhead.
+/// from encoding to the GPU going idle, so its "GPU" time includes the submission's
+/// overhead and the recording; the recording alone is its CPU time.
 fn wall_clock_frames(
     gpu: &GpuContext,
     method: &mut dyn methods::Method,
     target: &CoverageTarget,
     camera: &Camera,
     timing: FrameTiming,
-) -> Result<Vec<f64>, Error> {
+) -> Result<Vec<FrameTime>, Error> {
     for _ in 0..timing.warmup {
         frame::render_frame(gpu, method, target, camera)?;
     }
     (0..timing.frames)
         .map(|_| {
             let start = Instant::now();
-            frame::render_frame(gpu, method, target, camera)?;
-            Ok(ms_since(start))
+            let mut encoder = gpu.device.create_command_encoder(&Default::default());
+            method.encode(gpu, &mut encoder, target, camera)?;
+            let cpu_ms = ms_since(start);
+            gpu.queue.submit([encoder.finish()]);
+            gpu.wait_idle()?;
+            Ok(FrameTime {
+                gpu_ms: ms_since(start) - cpu_ms,
+                cpu_ms,
+            })
         })
         .collect()
-}
-
-/// Milliseconds since `start`.
-pub fn ms_since(start: Instant) -> f64 {
-    start.elapsed().as_secs_f64() * 1e3
 }

@@ -6,6 +6,12 @@ use serde::Serialize;
 use crate::Error;
 use crate::coverage::CoverageImage;
 
+/// Error figures over a whole frame, and over its edge pixels alone.
+///
+/// A pixel whose value is not finite or lies outside [0, 1] (in the image or the
+/// reference) is invalid: it counts as an error of 1 in the means and the percentile,
+/// as an infinite error in `max` (so it breaks every bound), and among the pixels over
+/// 0.25 and 0.5. Nothing is clamped before it is checked.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct ErrorStats {
     /// Mean absolute error, in 1/255.
@@ -22,6 +28,28 @@ pub struct ErrorStats {
     pub pixels_over_025: usize,
     pub pixels_over_05: usize,
     pub pixels: usize,
+    /// Pixels whose value is not finite or outside [0, 1].
+    pub invalid_pixels: usize,
+    /// The same figures over the edge pixels only: where the reference or the image is
+    /// strictly between 0 and 1, or where they differ. A frame is mostly blank and
+    /// exact; averaged over it, rare full-pixel artifacts vanish, over the edges not.
+    pub edge: EdgeError,
+}
+
+/// Error over the edge pixels of a frame (see [`ErrorStats::edge`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct EdgeError {
+    pub pixels: usize,
+    /// Mean absolute error over the edge pixels, in 1/255.
+    pub mae_255: f64,
+    pub max: f64,
+    pub pixels_over_025: usize,
+    pub pixels_over_05: usize,
+}
+
+/// Whether `v` is a coverage value at all.
+fn is_valid(v: f32) -> bool {
+    (0.0..=1.0).contains(&v)
 }
 
 /// Compares `image` with `reference` pixel by pixel.
@@ -36,29 +64,46 @@ pub fn compare(image: &CoverageImage, reference: &CoverageImage) -> Result<Error
         pixels: image.data.len(),
         ..Default::default()
     };
-    let (mut sum, mut sum_sq) = (0.0, 0.0);
+    let (mut sum, mut sum_sq, mut edge_sum) = (0.0, 0.0, 0.0);
     let mut errors = Vec::with_capacity(image.data.len());
     for (i, (&a, &b)) in image.data.iter().zip(&reference.data).enumerate() {
-        let e = (f64::from(a) - f64::from(b)).abs();
+        let valid = is_valid(a) && is_valid(b);
+        // An invalid value is as far off as coverage can be in the means, and beyond
+        // any bound in the maximum.
+        let (e, worst) = if valid {
+            let e = (f64::from(a) - f64::from(b)).abs();
+            (e, e)
+        } else {
+            stats.invalid_pixels += 1;
+            (1.0, f64::INFINITY)
+        };
         errors.push(e);
         sum += e;
         sum_sq += e * e;
-        stats.pixels_over_025 += usize::from(e > 0.25);
-        stats.pixels_over_05 += usize::from(e > 0.5);
-        // NaN compares false and would hide; count it as the worst possible error.
-        let e = if e.is_nan() { f64::INFINITY } else { e };
-        if e > stats.max {
-            stats.max = e;
+        stats.pixels_over_025 += usize::from(worst > 0.25);
+        stats.pixels_over_05 += usize::from(worst > 0.5);
+        if worst > stats.max {
+            stats.max = worst;
             stats.worst_pixel = (
                 (i % image.width as usize) as u32,
                 (i / image.width as usize) as u32,
             );
+        }
+        let partial = |v: f32| v > 0.0 && v < 1.0;
+        if !valid || partial(a) || partial(b) || a != b {
+            let edge = &mut stats.edge;
+            edge.pixels += 1;
+            edge_sum += e;
+            edge.max = edge.max.max(worst);
+            edge.pixels_over_025 += usize::from(worst > 0.25);
+            edge.pixels_over_05 += usize::from(worst > 0.5);
         }
     }
     let n = stats.pixels.max(1) as f64;
     stats.mae_255 = sum / n * 255.0;
     stats.rmse_255 = (sum_sq / n).sqrt() * 255.0;
     stats.p99_255 = percentile(&mut errors, 0.99) * 255.0;
+    stats.edge.mae_255 = edge_sum / stats.edge.pixels.max(1) as f64 * 255.0;
     Ok(stats)
 }
 
@@ -168,6 +213,49 @@ mod tests {
         let s = compare(&img(&[0.0, f32::NAN]), &img(&[0.0, 0.0])).unwrap();
         assert!(s.max.is_infinite());
         assert_eq!(s.worst_pixel, (1, 0));
+        // Hand-worked: one pixel of two off by 1 (the most coverage can be off).
+        assert!((s.mae_255 - 127.5).abs() < 1e-9, "{}", s.mae_255);
+        assert_eq!((s.pixels_over_025, s.pixels_over_05), (1, 1));
+        assert_eq!(
+            (s.invalid_pixels, s.edge.pixels, s.edge.pixels_over_05),
+            (1, 1, 1)
+        );
+    }
+
+    /// Values outside [0, 1] are no coverage at all: artifacts, even where they land
+    /// close to the reference (1.2 against 1.0 is off by 0.2 but still impossible).
+    #[test]
+    fn out_of_range_values_are_artifacts() {
+        let s = compare(
+            &img(&[1.2, -0.1, f32::INFINITY, 0.5]),
+            &img(&[1.0, 0.0, 1.0, 0.5]),
+        )
+        .unwrap();
+        assert_eq!(s.invalid_pixels, 3);
+        assert_eq!(s.pixels_over_05, 3);
+        assert!(s.max.is_infinite());
+        // The reference is checked the same way.
+        let s = compare(&img(&[0.5]), &img(&[f32::NAN])).unwrap();
+        assert_eq!((s.invalid_pixels, s.pixels_over_05), (1, 1));
+    }
+
+    /// The edge figures look only at partial or differing pixels: one full-pixel
+    /// artifact among 98 blank and one exact edge pixel is 1/100 of the frame's mean
+    /// but half of the edges' (hand-worked: errors 1 and 0 over 2 edge pixels).
+    #[test]
+    fn edge_error_is_taken_over_partial_or_differing_pixels() {
+        let mut image = vec![0.0f32; 100];
+        let mut reference = vec![0.0f32; 100];
+        image[0] = 1.0; // an artifact: the reference has nothing here
+        image[1] = 0.5;
+        reference[1] = 0.5; // an edge pixel drawn exactly
+        image[2] = 1.0;
+        reference[2] = 1.0; // an interior pixel: not an edge
+        let s = compare(&img(&image), &img(&reference)).unwrap();
+        assert!((s.mae_255 - 255.0 / 100.0).abs() < 1e-9);
+        assert_eq!(s.edge.pixels, 2);
+        assert!((s.edge.mae_255 - 255.0 / 2.0).abs() < 1e-9);
+        assert_eq!((s.edge.max, s.edge.pixels_over_05), (1.0, 1));
     }
 
     #[test]

@@ -76,10 +76,26 @@ pub fn rasterize_with_tolerance(
             sweep(&mut edges, &bounds, &mut image, &mut rows);
         }
     }
-    for v in &mut image.data {
+    check_coverage(&mut image)?;
+    Ok(image)
+}
+
+/// How far f64 rounding of the strip areas may carry a pixel's coverage past 0 or 1.
+const ROUNDING: f32 = 1e-6;
+
+/// Snaps rounding past 0 and 1 back, and refuses anything further off: a value no
+/// exact area can take is a bug to report, not to clamp away.
+fn check_coverage(image: &mut CoverageImage) -> Result<(), Error> {
+    for (i, v) in image.data.iter_mut().enumerate() {
+        if !(-ROUNDING..=1.0 + ROUNDING).contains(v) {
+            let (x, y) = (i % image.width as usize, i / image.width as usize);
+            return Err(Error::Internal(format!(
+                "the reference computed coverage {v} at pixel ({x}, {y}), outside [0, 1]"
+            )));
+        }
         *v = v.clamp(0.0, 1.0);
     }
-    Ok(image)
+    Ok(())
 }
 
 struct Placed {

@@ -169,3 +169,19 @@ fn bad_parameters_are_rejected() {
         assert!(err.to_string().contains(expect), "{err}");
     }
 }
+
+/// A cache that cannot fit one texture is refused from the glyphs' sizes, before any of
+/// them is rasterized: 40 distinct glyphs at 4096 px/em in 4 × 4 phases would need
+/// 640 bitmaps of about 4000² texels (about 10 GB of rasterizing) before the old check
+/// ran. Hand-worked: one 'M' at 4096 px/em alone is ~3500 × 3000 texels, 16 phases of it
+/// ~170 M texels, past a 16384² texture (268 M) already with two glyphs' worth.
+#[test]
+fn a_cache_too_large_for_one_texture_is_refused_before_rasterizing() {
+    let font = Font::default_font();
+    let scene = Scene::from_text(&font, "ABCDEFGHIJKLMNOPQRSTabcdefghijklmnopqrst").unwrap();
+    let mut atlas = Atlas::new(&params(&[("cache_px_per_em", "4096")])).unwrap();
+    // A cache size given is built by `prepare`.
+    let err = atlas.prepare(gpu(), &scene).unwrap_err();
+    assert!(matches!(err, glyphscope::Error::Input(_)), "{err}");
+    assert!(err.to_string().contains("do not fit"), "{err}");
+}

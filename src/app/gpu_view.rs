@@ -16,6 +16,7 @@ use crate::coverage::CoverageImage;
 use crate::gpu::timing::{Timestamps, intervals_ms};
 use crate::gpu::{CoverageTarget, GpuContext};
 use crate::methods::Method;
+use crate::methods::frame::ms_since;
 
 /// How a pane turns its texture(s) into pixels (`mode` in `composite.wgsl`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -225,7 +226,9 @@ impl PaneSurface {
         }
         let target = self.target.as_ref().expect("made above");
         let slot = self.timer.begin(gpu, encoder);
+        let start = std::time::Instant::now();
         let result = method.encode(gpu, encoder, target, camera);
+        self.timer.record_cpu(ms_since(start));
         if let Some(slot) = slot {
             self.timer.end(encoder, slot);
         }
@@ -383,6 +386,8 @@ impl egui_wgpu::CallbackTrait for PanePaint {
 pub struct FrameTimer {
     slots: Vec<TimerSlot>,
     recent: VecDeque<f64>,
+    /// The CPU's time recording each of the recent frames (the method's `encode`).
+    recent_cpu: VecDeque<f64>,
 }
 
 /// Frames the rolling median is taken over.
@@ -473,8 +478,21 @@ impl FrameTimer {
         crate::metrics::median(self.recent.iter().copied()).map(|m| (m, self.recent.len()))
     }
 
+    fn record_cpu(&mut self, ms: f64) {
+        if self.recent_cpu.len() == TIMED_WINDOW {
+            self.recent_cpu.pop_front();
+        }
+        self.recent_cpu.push_back(ms);
+    }
+
+    /// Median CPU time of recording the recent frames.
+    pub fn median_cpu_ms(&self) -> Option<f64> {
+        crate::metrics::median(self.recent_cpu.iter().copied())
+    }
+
     pub fn clear(&mut self) {
         self.recent.clear();
+        self.recent_cpu.clear();
     }
 }
 

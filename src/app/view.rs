@@ -332,12 +332,17 @@ impl Explorer {
             return lines;
         }
         let surface = lock(&pane.surface);
-        let time = match surface.timer.median_ms() {
+        let gpu_time = match surface.timer.median_ms() {
             Some((ms, n)) => format!("GPU {ms:.3} ms (median of {n})"),
             None if self.gpu.as_ref().is_some_and(|(g, _)| !g.has_timestamps()) => {
                 "GPU time: no timestamp queries".into()
             }
             None => "GPU time: …".into(),
+        };
+        // The CPU's share of every frame: the method's culling, meshing and uploads.
+        let time = match surface.timer.median_cpu_ms() {
+            Some(ms) => format!("{gpu_time} + CPU {ms:.3} ms/frame"),
+            None => gpu_time,
         };
         drop(surface);
         lines.push(format!(
@@ -347,8 +352,8 @@ impl Explorer {
         ));
         match self.pane_error(index) {
             Some(e) => lines.push(format!(
-                "MAE {:.3}/255 · max {:.3} · >0.5: {} px",
-                e.mae_255, e.max, e.pixels_over_05
+                "MAE {:.3}/255 (edges {:.2}) · max {:.3} · >0.5: {} px",
+                e.mae_255, e.edge.mae_255, e.max, e.pixels_over_05
             )),
             None => lines.push("error vs reference: …".into()),
         }

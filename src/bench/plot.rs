@@ -65,12 +65,12 @@ fn draw_legend<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
         .map_err(plot_error)
 }
 
-/// (GPU ms, MAE) of a case, if it was timed on the GPU.
+/// (GPU + CPU ms per frame, MAE) of a case, if it was timed on the GPU.
 fn time_and_error(case: &Case) -> Option<(f64, f64)> {
     if case.is_reference() {
         return None;
     }
-    Some((case.gpu_ms?, case.error.mae_255.max(MAE_FLOOR)))
+    Some((case.frame_ms?, case.error.mae_255.max(MAE_FLOOR)))
 }
 
 /// Range of `values` widened by a margin on a log scale.
@@ -124,7 +124,7 @@ pub fn time_against_error(result: &BenchResult, path: &Path) -> Result<(), Error
             .map_err(plot_error)?;
         draw_axes(
             &mut chart,
-            &format!("GPU ms per frame ({})", result.adapter),
+            &format!("GPU + CPU ms per frame ({})", result.adapter),
         )?;
         for method in registry::benched().map(|m| m.name) {
             let points: Vec<(f64, f64)> = cases

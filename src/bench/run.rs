@@ -99,6 +99,11 @@ pub struct Case {
     pub gpu_ms_range: Option<(f64, f64)>,
     /// How the frames were timed (None for the reference).
     pub gpu_clock: Option<String>,
+    /// The CPU's work of recording each frame (culling, meshing, instance writes), ms.
+    pub cpu_frame_ms: Option<f64>,
+    /// What one frame costs in all, GPU + CPU per frame (the reference: its
+    /// rasterization), ms: what cases are ranked and divided by.
+    pub frame_ms: Option<f64>,
     /// The method's `prepare`, ms (the reference: 0).
     pub cpu_prepare_ms: f64,
     /// The reference's rasterization, ms.
@@ -175,6 +180,8 @@ impl ViewUnderTest<'_> {
             gpu_ms: stats.gpu_ms.or(stats.cpu_render_ms),
             gpu_ms_range: stats.gpu_ms_range,
             gpu_clock: stats.gpu_clock,
+            cpu_frame_ms: stats.cpu_frame_ms,
+            frame_ms: stats.frame_ms.or(stats.cpu_render_ms),
             cpu_prepare_ms: stats.cpu_prepare_ms,
             cpu_render_ms: stats.cpu_render_ms,
             mesh_build_ms: stats.mesh.as_ref().map(|m| m.cpu_build_ms),
@@ -410,12 +417,16 @@ fn combine_rounds(rounds: Vec<Vec<Case>>) -> Vec<Case> {
                 .chain(rest.iter().map(|r| &r[i]))
                 .collect();
             let gpu_ms = metrics::median(all.iter().filter_map(|c| c.gpu_ms));
+            let cpu_frame_ms = metrics::median(all.iter().filter_map(|c| c.cpu_frame_ms));
+            let frame_ms = metrics::median(all.iter().filter_map(|c| c.frame_ms));
             let cpu_prepare_ms =
                 metrics::median(all.iter().map(|c| c.cpu_prepare_ms)).unwrap_or(0.0);
             let ranges = all.iter().filter_map(|c| c.gpu_ms_range);
             let gpu_ms_range = ranges.reduce(|a, b| (a.0.min(b.0), a.1.max(b.1)));
             Case {
                 gpu_ms,
+                cpu_frame_ms,
+                frame_ms,
                 gpu_ms_range,
                 cpu_prepare_ms,
                 ..case.clone()
@@ -437,6 +448,8 @@ mod tests {
             gpu_ms: Some(gpu_ms),
             gpu_ms_range: Some(range),
             gpu_clock: None,
+            cpu_frame_ms: Some(0.0),
+            frame_ms: Some(gpu_ms),
             cpu_prepare_ms,
             cpu_render_ms: None,
             mesh_build_ms: None,

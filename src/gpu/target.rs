@@ -98,14 +98,16 @@ impl CoverageTarget {
         })
     }
 
-    /// Copies the coverage (alpha) back as f32, clamped to [0, 1] like the reference:
-    /// methods that add coverage up may overshoot where instances overlap.
+    /// Copies the coverage (alpha) back as f32, exactly as the method wrote it: nothing
+    /// clamped, so that a value out of [0, 1] or not finite can be seen (see
+    /// [`CoverageImage::range`]) before [`CoverageImage::clamp_to_union`] unites
+    /// overlapping instances.
     pub fn readback(&self, gpu: &GpuContext) -> Result<CoverageImage, Error> {
         let texels = self.read_texels(gpu)?;
         Ok(CoverageImage {
             width: self.width,
             height: self.height,
-            data: texels.iter().map(|t| t[3].clamp(0.0, 1.0)).collect(),
+            data: texels.iter().map(|t| t[3]).collect(),
         })
     }
 

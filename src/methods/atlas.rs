@@ -25,7 +25,7 @@ use crate::gpu::kit::{self, PipelineBuilder, Slot};
 use crate::gpu::shaders::Shader;
 use crate::gpu::{CoverageTarget, GpuContext};
 use crate::reference;
-use crate::scene::{Instance, Scene};
+use crate::scene::{Glyph, Instance, Scene};
 
 /// `atlas`' row in the registry: the baseline every bench time is divided by.
 pub const INFO: MethodInfo = MethodInfo {
@@ -221,14 +221,22 @@ impl Atlas {
         let (Some(pipeline), Some(prepared)) = (&self.pipeline, &mut self.prepared) else {
             return Err(super::not_prepared(NAME));
         };
-        let bitmaps = rasterize_glyphs(&prepared.scene, px_per_em, phases)?;
-        let packed = pack(&bitmaps, gpu.max_texture_side()).ok_or_else(|| {
+        let scene = &prepared.scene;
+        let per_glyph = (phases.max(1) * phases.max(1)) as usize;
+        let mut sizes = Vec::with_capacity(scene.glyphs.len() * per_glyph);
+        for glyph in &scene.glyphs {
+            let frame = BitmapFrame::of(glyph, scene.units_per_em, px_per_em)?;
+            sizes.extend(std::iter::repeat_n((frame.width, frame.height), per_glyph));
+        }
+        let packed = shelves(&sizes, gpu.max_texture_side()).ok_or_else(|| {
             Error::Input(format!(
                 "atlas: the glyphs at {px_per_em} px/em with subpixel={phases} do not fit in \
                  one {0}×{0} texture; cache smaller (cache_px_per_em) or with fewer phases",
                 gpu.max_texture_side()
             ))
         })?;
+        let bitmaps = rasterize_glyphs(scene, px_per_em, phases)?;
+        let texels = fill(&packed, &bitmaps);
         let texels_per_unit = px_per_em / prepared.scene.units_per_em;
         let entries: Vec<GpuEntry> = bitmaps
             .iter()
@@ -256,7 +264,7 @@ impl Atlas {
             });
             gpu.queue.write_texture(
                 texture.as_image_copy(),
-                &packed.texels,
+                &texels,
                 wgpu::TexelCopyBufferLayout {
                     offset: 0,
                     bytes_per_row: Some(packed.width),
@@ -304,28 +312,13 @@ fn rasterize_glyphs(scene: &Scene, px_per_em: f64, phases: u32) -> Result<Vec<Bi
                 position: DVec2::ZERO,
             }],
         };
-        let s = px_per_em / scene.units_per_em;
-        let (left, right) = (glyph.bounds.min.x * s, glyph.bounds.max.x * s);
-        let (bottom, top) = (glyph.bounds.min.y * s, glyph.bounds.max.y * s);
-        // Whole pixels around the ink, the padding, and one more for the phase shift.
-        let width = right.ceil() - left.floor() + (2 * PAD_TEXELS + 1) as f64;
-        let height = top.ceil() - bottom.floor() + (2 * PAD_TEXELS + 1) as f64;
-        let side = f64::from(crate::camera::MAX_IMAGE_SIDE);
-        if width > side || height > side {
-            return Err(Error::Input(format!(
-                "atlas: glyph {} at {px_per_em} px/em needs a {width}×{height} bitmap, over \
-                 {side} a side; cache smaller (cache_px_per_em)",
-                glyph.id
-            )));
-        }
+        let frame = BitmapFrame::of(glyph, scene.units_per_em, px_per_em)?;
         for row in 0..steps {
             for column in 0..steps {
                 let phase = DVec2::new(f64::from(column), f64::from(row)) / f64::from(steps);
-                let origin = DVec2::new(
-                    PAD_TEXELS as f64 - left.floor(),
-                    PAD_TEXELS as f64 + top.ceil(),
-                ) + phase;
-                let camera = Camera::new(width as u32, height as u32, px_per_em, origin);
+                let origin = frame.origin + phase;
+                let (width, height) = (frame.width, frame.height);
+                let camera = Camera::new(width, height, px_per_em, origin);
                 let image = reference::rasterize(&alone, &camera)?;
                 bitmaps.push(Bitmap {
                     width: image.width,
@@ -337,6 +330,41 @@ fn rasterize_glyphs(scene: &Scene, px_per_em: f64, phases: u32) -> Result<Vec<Bi
         }
     }
     Ok(bitmaps)
+}
+
+/// Where a glyph's bitmaps sit: whole pixels around its ink at the cached size, the
+/// padding, and one more for the phase shift.
+struct BitmapFrame {
+    width: u32,
+    height: u32,
+    /// The glyph's origin in the bitmap at phase 0, pixels (y down).
+    origin: DVec2,
+}
+
+impl BitmapFrame {
+    fn of(glyph: &Glyph, units_per_em: f64, px_per_em: f64) -> Result<BitmapFrame, Error> {
+        let s = px_per_em / units_per_em;
+        let (left, right) = (glyph.bounds.min.x * s, glyph.bounds.max.x * s);
+        let (bottom, top) = (glyph.bounds.min.y * s, glyph.bounds.max.y * s);
+        let width = right.ceil() - left.floor() + (2 * PAD_TEXELS + 1) as f64;
+        let height = top.ceil() - bottom.floor() + (2 * PAD_TEXELS + 1) as f64;
+        let side = f64::from(crate::camera::MAX_IMAGE_SIDE);
+        if width > side || height > side {
+            return Err(Error::Input(format!(
+                "atlas: glyph {} at {px_per_em} px/em needs a {width}×{height} bitmap, over \
+                 {side} a side; cache smaller (cache_px_per_em)",
+                glyph.id
+            )));
+        }
+        Ok(BitmapFrame {
+            width: width as u32,
+            height: height as u32,
+            origin: DVec2::new(
+                PAD_TEXELS as f64 - left.floor(),
+                PAD_TEXELS as f64 + top.ceil(),
+            ),
+        })
+    }
 }
 
 /// A bitmap placed with its top-left texel at (x, y), as the shader reads it.
@@ -364,58 +392,61 @@ fn entry(b: &Bitmap, x: u32, y: u32, texels_per_unit: f64) -> GpuEntry {
     }
 }
 
-/// The atlas texture: every bitmap at its corner.
-struct Packed {
+/// Where each bitmap goes in the atlas texture.
+struct Shelves {
     width: u32,
     height: u32,
-    texels: Vec<u8>,
     /// Each bitmap's top-left texel, in the bitmaps' order.
     corners: Vec<(u32, u32)>,
 }
 
-/// Shelf packing, tallest bitmaps first, into a texture about as wide as it is tall;
-/// None if it would need a side over `max_side`. Each bitmap carries its own zero
-/// border, so they can touch.
-fn pack(bitmaps: &[Bitmap], max_side: u32) -> Option<Packed> {
-    let area: u64 = bitmaps
+/// Shelf packing of bitmaps of `sizes`, tallest first, into a texture about as wide as
+/// it is tall; None if it would need a side over `max_side`. Each bitmap carries its own
+/// zero border, so they can touch. Worked out from the sizes alone, before anything is
+/// rasterized: a cache that cannot fit is refused at once.
+fn shelves(sizes: &[(u32, u32)], max_side: u32) -> Option<Shelves> {
+    let area: u64 = sizes
         .iter()
-        .map(|b| u64::from(b.width) * u64::from(b.height))
+        .map(|&(w, h)| u64::from(w) * u64::from(h))
         .sum();
-    let widest = bitmaps.iter().map(|b| b.width).max().unwrap_or(1);
-    let width = ((area as f64).sqrt() * 1.1).ceil().max(f64::from(widest)) as u32;
-    if width > max_side {
+    let widest = sizes.iter().map(|s| s.0).max().unwrap_or(1);
+    let width = ((area as f64).sqrt() * 1.1).ceil().max(f64::from(widest));
+    if width > f64::from(max_side) {
         return None;
     }
-    let mut order: Vec<usize> = (0..bitmaps.len()).collect();
-    order.sort_by_key(|&i| std::cmp::Reverse(bitmaps[i].height));
-    let mut corners = vec![(0, 0); bitmaps.len()];
+    let width = width as u32;
+    let mut order: Vec<usize> = (0..sizes.len()).collect();
+    order.sort_by_key(|&i| std::cmp::Reverse(sizes[i].1));
+    let mut corners = vec![(0, 0); sizes.len()];
     let (mut x, mut y, mut shelf_height) = (0u32, 0u32, 0u32);
     for &i in &order {
-        let b = &bitmaps[i];
-        if x + b.width > width {
+        let (w, h) = sizes[i];
+        if x + w > width {
             (x, y, shelf_height) = (0, y + shelf_height, 0);
         }
         corners[i] = (x, y);
-        x += b.width;
-        shelf_height = shelf_height.max(b.height);
+        x += w;
+        shelf_height = shelf_height.max(h);
     }
     let height = (y + shelf_height).max(1);
-    if height > max_side {
-        return None;
-    }
-    let mut texels = vec![0u8; width as usize * height as usize];
-    for (b, &(x, y)) in bitmaps.iter().zip(&corners) {
+    (height <= max_side).then_some(Shelves {
+        width,
+        height,
+        corners,
+    })
+}
+
+/// The atlas texture: every bitmap at its corner.
+fn fill(shelves: &Shelves, bitmaps: &[Bitmap]) -> Vec<u8> {
+    let width = shelves.width as usize;
+    let mut texels = vec![0u8; width * shelves.height as usize];
+    for (b, &(x, y)) in bitmaps.iter().zip(&shelves.corners) {
         for (row, line) in b.coverage.chunks_exact(b.width as usize).enumerate() {
-            let start = (y as usize + row) * width as usize + x as usize;
+            let start = (y as usize + row) * width + x as usize;
             texels[start..start + line.len()].copy_from_slice(line);
         }
     }
-    Some(Packed {
-        width,
-        height,
-        texels,
-        corners,
-    })
+    texels
 }
 
 impl Method for Atlas {

@@ -3,6 +3,8 @@
 //! ([`time_frames`]). The CLI, the bench, the app and the tests all draw through these,
 //! so a method is measured exactly as it is checked.
 
+use std::time::Instant;
+
 use super::Method;
 use crate::Error;
 use crate::camera::Camera;
@@ -31,7 +33,7 @@ pub fn render_frame(
 }
 
 /// Renders one frame of a prepared `method` into a new target the camera's size and
-/// reads its coverage back.
+/// reads its coverage back as the method wrote it (nothing clamped).
 pub fn render_image(
     gpu: &GpuContext,
     method: &mut dyn Method,
@@ -55,11 +57,19 @@ fn check_frame(target: &CoverageTarget, camera: &Camera) -> Result<(), Error> {
     Ok(())
 }
 
-/// GPU time of `frames` frames, in milliseconds each, after `warmup` untimed frames.
-/// `Ok(None)` when the device has no timestamp queries.
-///
-/// Only the GPU work the method records on the encoder is timed: data it uploads with
-/// `Queue::write_buffer` is copied before the encoder runs, and CPU time is not counted.
+/// The time of one frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FrameTime {
+    /// The GPU work the method recorded, by timestamps (data it uploads with
+    /// `Queue::write_buffer` is copied before the encoder runs and is not in it).
+    pub gpu_ms: f64,
+    /// The CPU work of recording the frame: the method's `encode` — culling, sorting,
+    /// building meshes, writing instances — everything it does per frame.
+    pub cpu_ms: f64,
+}
+
+/// GPU and CPU time of `frames` frames after `warmup` untimed frames. `Ok(None)` when
+/// the device has no timestamp queries.
 pub fn time_frames(
     gpu: &GpuContext,
     method: &mut dyn Method,
@@ -67,7 +77,7 @@ pub fn time_frames(
     camera: &Camera,
     warmup: usize,
     frames: usize,
-) -> Result<Option<Vec<f64>>, Error> {
+) -> Result<Option<Vec<FrameTime>>, Error> {
     if !gpu.has_timestamps() {
         return Ok(None);
     }
@@ -94,9 +104,10 @@ fn time_batch(
     target: &CoverageTarget,
     camera: &Camera,
     frames: u32,
-) -> Result<Vec<f64>, Error> {
+) -> Result<Vec<FrameTime>, Error> {
     gpu.catching_errors(&format!("timing '{}'", method.name()), || {
         let timestamps = Timestamps::new(gpu, "frame timestamps", 2 * frames);
+        let mut cpu_ms = Vec::with_capacity(frames as usize);
         for frame in 0..frames {
             let mut encoder = gpu
                 .device
@@ -104,13 +115,25 @@ fn time_batch(
                     label: Some("timed frame"),
                 });
             timestamps.write(&mut encoder, 2 * frame);
+            let start = Instant::now();
             method.encode(gpu, &mut encoder, target, camera)?;
+            cpu_ms.push(ms_since(start));
             timestamps.write(&mut encoder, 2 * frame + 1);
             gpu.queue.submit([encoder.finish()]);
             // One frame at a time, as `render_frame` draws them: no frame's work overlaps
             // the next one's timestamps.
             gpu.wait_idle()?;
         }
-        timestamps.read_intervals(gpu)
+        let gpu_ms = timestamps.read_intervals(gpu)?;
+        Ok(gpu_ms
+            .into_iter()
+            .zip(cpu_ms)
+            .map(|(gpu_ms, cpu_ms)| FrameTime { gpu_ms, cpu_ms })
+            .collect())
     })
+}
+
+/// Milliseconds since `start`.
+pub fn ms_since(start: Instant) -> f64 {
+    start.elapsed().as_secs_f64() * 1e3
 }
