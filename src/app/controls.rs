@@ -5,9 +5,9 @@ use eframe::egui;
 use glam::DVec2;
 
 use super::camera_control::{MAX_SIZE_PX_PER_EM, MAX_TILT_DEG, MIN_SIZE_PX_PER_EM};
-use super::panes::pane_controls;
+use super::panes::{pane_controls, pane_letter};
 use super::settings::{FontChoice, Layout, PaneSource};
-use super::{Explorer, SHORTCUTS, pane_letter};
+use super::{Explorer, SHORTCUTS};
 use crate::font::SHIPPED_FONTS;
 
 impl Explorer {

@@ -425,10 +425,6 @@ fn sanitize(settings: &mut Settings) {
     c.tilt_deg = c.tilt_deg.clamp(-MAX_TILT_DEG, MAX_TILT_DEG);
 }
 
-fn pane_letter(index: usize) -> char {
-    (b'A' + index as u8) as char
-}
-
 fn color(rgb: [u8; 3]) -> egui::Color32 {
     egui::Color32::from_rgb(rgb[0], rgb[1], rgb[2])
 }

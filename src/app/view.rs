@@ -11,9 +11,9 @@ use glam::DVec2;
 use super::analysis::Request;
 use super::gpu_view::{CompositeMode, PanePaint, Source, lock};
 use super::outline;
-use super::panes::REFERENCE;
+use super::panes::{REFERENCE, pane_letter, subtrahend_label};
 use super::settings::{PaneOverlay, PaneSource};
-use super::{COST_SCALE_CURVES, Explorer, REST_SECONDS, ViewKey, color, pane_letter};
+use super::{COST_SCALE_CURVES, Explorer, REST_SECONDS, ViewKey, color};
 use crate::camera::Camera;
 use crate::methods::Overlay;
 
@@ -305,7 +305,7 @@ impl Explorer {
                 "{} difference {} − {}",
                 pane_letter(index),
                 pane_letter(*first),
-                second.map_or(REFERENCE.to_string(), |s| pane_letter(s).to_string())
+                subtrahend_label(*second)
             ),
         };
         match &settings.overlay {
