@@ -4,6 +4,7 @@
 //!
 //! - `settings`: what is remembered between runs.
 //! - `camera_control`: the shared camera and how input steers it.
+//! - `shortcuts`: the keyboard and mouse, one table for the keys, the help and the README.
 //! - `panes`: the method catalog, each pane's prepared method, the pane controls.
 //! - `gpu_view`: egui_wgpu paint callbacks drawing each pane's offscreen target.
 //! - `analysis`: the reference and the error figures, on a background thread.
@@ -20,6 +21,7 @@ mod outline;
 mod panes;
 pub mod screenshots;
 pub mod settings;
+mod shortcuts;
 mod sweep;
 mod view;
 
@@ -34,8 +36,8 @@ use self::analysis::Analysis;
 use self::camera_control::{MAX_SIZE_PX_PER_EM, MAX_TILT_DEG, MIN_SIZE_PX_PER_EM};
 use self::font_dialog::FontDialog;
 use self::gpu_view::{Compositor, lock};
-use self::panes::{Catalog, Pane, REFERENCE};
-use self::settings::{FontChoice, Layout, PANES, PaneOverlay, PaneSource, SceneSettings, Settings};
+use self::panes::{Catalog, Pane};
+use self::settings::{FontChoice, PANES, PaneSource, SceneSettings, Settings};
 use self::sweep::Sweep;
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
@@ -48,29 +50,6 @@ const REST_SECONDS: f64 = 0.25;
 /// Top of the cost heat map's scale, curves per pixel (`COST_SCALE` in the method
 /// shaders; a test keeps them equal).
 pub const COST_SCALE_CURVES: u32 = 16;
-/// Pixels an arrow key pans by.
-const ARROW_PAN_PX: f64 = 40.0;
-
-/// The keyboard and mouse, as the help window and the README list them.
-pub const SHORTCUTS: &[(&str, &str)] = &[
-    ("drag", "pan"),
-    ("wheel / pinch", "zoom about the cursor"),
-    ("arrows", "pan"),
-    ("+ / −", "zoom in / out ×2 about the centre"),
-    ("[ / ]", "rotate −15° / +15°"),
-    ("R", "reset the camera"),
-    ("F", "fit the text to the pane"),
-    ("1 / 2 / 4", "one pane / side by side / 2×2"),
-    ("G", "glyph mode on / off"),
-    ("O", "outline overlay on / off"),
-    ("E", "error overlay on / off"),
-    ("C", "draw continuously (live GPU time)"),
-    ("P", "speed-vs-error plot"),
-    ("Ctrl+O", "open a font file"),
-    ("S", "screenshot (PNG in the current folder)"),
-    ("H / F1", "this help"),
-];
-
 /// Opens the explorer window.
 pub fn run() -> Result<(), crate::Error> {
     let options = eframe::NativeOptions {
@@ -393,6 +372,13 @@ impl Explorer {
         }
     }
 
+    /// The centre of a pane, pixels (the origin before the view is laid out).
+    fn view_centre(&self) -> DVec2 {
+        self.view.camera.map_or(DVec2::ZERO, |c| {
+            DVec2::new(f64::from(c.width), f64::from(c.height)) / 2.0
+        })
+    }
+
     fn set_status(&self, message: String) {
         *self.status.lock().unwrap_or_else(|p| p.into_inner()) = message;
     }
@@ -536,117 +522,6 @@ impl Explorer {
                 self.set_status(format!("'{}' is not a .ttf/.otf font", path.display()));
             }
         }
-    }
-
-    fn shortcuts(&mut self, ctx: &egui::Context) {
-        if ctx.egui_wants_keyboard_input() {
-            return;
-        }
-        let centre = self.view.camera.map_or(DVec2::ZERO, |c| {
-            DVec2::new(f64::from(c.width), f64::from(c.height)) / 2.0
-        });
-        let upem = self.scene.units_per_em();
-        let pressed = |key| ctx.input_mut(|i| i.consume_key(egui::Modifiers::NONE, key));
-        if ctx.input_mut(|i| i.consume_key(egui::Modifiers::COMMAND, egui::Key::O)) {
-            self.font_dialog.open = true;
-        }
-        let camera = &mut self.settings.camera;
-        for (key, delta) in [
-            (egui::Key::ArrowLeft, DVec2::new(ARROW_PAN_PX, 0.0)),
-            (egui::Key::ArrowRight, DVec2::new(-ARROW_PAN_PX, 0.0)),
-            (egui::Key::ArrowUp, DVec2::new(0.0, ARROW_PAN_PX)),
-            (egui::Key::ArrowDown, DVec2::new(0.0, -ARROW_PAN_PX)),
-        ] {
-            if pressed(key) {
-                camera.pan(delta);
-            }
-        }
-        if pressed(egui::Key::Plus) || pressed(egui::Key::Equals) {
-            camera.zoom(2.0, centre, upem);
-        }
-        if pressed(egui::Key::Minus) {
-            camera.zoom(0.5, centre, upem);
-        }
-        if pressed(egui::Key::OpenBracket) {
-            camera.rotate(-15.0, centre, upem);
-        }
-        if pressed(egui::Key::CloseBracket) {
-            camera.rotate(15.0, centre, upem);
-        }
-        if let Some(scene) = self.scene.scene().cloned() {
-            if pressed(egui::Key::R) {
-                self.settings.camera.reset(&scene);
-            }
-            if pressed(egui::Key::F) {
-                self.settings.camera.fit(&scene, centre * 2.0);
-            }
-        }
-        for (key, layout) in [
-            (egui::Key::Num1, Layout::Single),
-            (egui::Key::Num2, Layout::SideBySide),
-            (egui::Key::Num4, Layout::Grid),
-        ] {
-            if pressed(key) {
-                self.settings.layout = layout;
-            }
-        }
-        if pressed(egui::Key::G) {
-            self.settings.scene.glyph_mode ^= true;
-        }
-        let visible = self.settings.layout.panes();
-        if pressed(egui::Key::O) {
-            let on = !self.settings.panes[..visible].iter().all(|p| p.outline);
-            for pane in &mut self.settings.panes[..visible] {
-                pane.outline = on;
-            }
-        }
-        if pressed(egui::Key::E) {
-            let on = !self.settings.panes[..visible]
-                .iter()
-                .any(|p| p.overlay == PaneOverlay::Error);
-            for pane in &mut self.settings.panes[..visible] {
-                let is_gpu_method =
-                    matches!(&pane.source, PaneSource::Method { name, .. } if name != REFERENCE);
-                if on && is_gpu_method {
-                    pane.overlay = PaneOverlay::Error;
-                } else if pane.overlay == PaneOverlay::Error {
-                    pane.overlay = PaneOverlay::None;
-                }
-            }
-        }
-        if pressed(egui::Key::C) {
-            self.settings.continuous ^= true;
-        }
-        if pressed(egui::Key::P) {
-            self.sweep.open ^= true;
-        }
-        if pressed(egui::Key::S) {
-            self.screenshot(ctx);
-        }
-        if pressed(egui::Key::H) || pressed(egui::Key::F1) {
-            self.help_open ^= true;
-        }
-    }
-
-    fn screenshot(&self, ctx: &egui::Context) {
-        let status = self.status.clone();
-        ctx.request_screenshot(move |image| {
-            let stamp = std::time::SystemTime::now()
-                .duration_since(std::time::UNIX_EPOCH)
-                .map_or(0, |d| d.as_secs());
-            let path = PathBuf::from(format!("glyphscope-{stamp}.png"));
-            let [w, h] = image.size;
-            let bytes: Vec<u8> = image.pixels.iter().flat_map(|p| p.to_array()).collect();
-            let message = match image::RgbaImage::from_raw(w as u32, h as u32, bytes)
-                .map(|img| img.save(&path))
-            {
-                Some(Ok(())) => format!("screenshot saved to {}", path.display()),
-                Some(Err(e)) => format!("cannot write {}: {e}", path.display()),
-                None => "the screenshot had no pixels".into(),
-            };
-            *status.lock().unwrap_or_else(|p| p.into_inner()) = message;
-        });
-        ctx.request_repaint();
     }
 }
 
