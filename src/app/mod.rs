@@ -3,6 +3,7 @@
 //! and it prepares data only when the scene or a method's parameters change.
 //!
 //! - `settings`: what is remembered between runs.
+//! - `scene_state`: the font and scene built from the settings.
 //! - `camera_control`: the shared camera and how input steers it.
 //! - `shortcuts`: the keyboard and mouse, one table for the keys, the help and the README.
 //! - `panes`: the method catalog, each pane's prepared method, the pane controls.
@@ -19,6 +20,7 @@ mod gpu_view;
 pub mod headless;
 mod outline;
 mod panes;
+mod scene_state;
 pub mod screenshots;
 pub mod settings;
 mod shortcuts;
@@ -37,11 +39,12 @@ use self::camera_control::{MAX_SIZE_PX_PER_EM, MAX_TILT_DEG, MIN_SIZE_PX_PER_EM}
 use self::font_dialog::FontDialog;
 use self::gpu_view::{Compositor, lock};
 use self::panes::{Catalog, Pane};
-use self::settings::{FontChoice, PANES, PaneSource, SceneSettings, Settings};
+use self::scene_state::SceneState;
+use self::settings::{FontChoice, PANES, PaneSource, Settings};
 use self::sweep::Sweep;
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
-use crate::font::{Font, SHIPPED_FONTS};
+use crate::font::SHIPPED_FONTS;
 use crate::gpu::GpuContext;
 use crate::scene::Scene;
 
@@ -78,88 +81,6 @@ pub fn wgpu_setup() -> egui_wgpu::WgpuSetup {
     let mut setup = egui_wgpu::WgpuSetupCreateNew::without_display_handle();
     setup.device_descriptor = Arc::new(GpuContext::device_descriptor);
     egui_wgpu::WgpuSetup::CreateNew(setup)
-}
-
-/// The scene built from [`SceneSettings`], rebuilt only when they change.
-#[derive(Default)]
-struct SceneState {
-    built_for: Option<SceneSettings>,
-    font: Option<(FontChoice, Result<Font, String>)>,
-    scene: Option<Result<Arc<Scene>, String>>,
-    generation: u64,
-}
-
-impl SceneState {
-    fn sync(&mut self, wanted: &SceneSettings) {
-        if self.built_for.as_ref() == Some(wanted) {
-            return;
-        }
-        self.built_for = Some(wanted.clone());
-        self.generation += 1;
-        if self.font.as_ref().map(|(c, _)| c) != Some(&wanted.font) {
-            let font = match &wanted.font {
-                FontChoice::Shipped(i) if *i < SHIPPED_FONTS.len() => Ok(Font::shipped(*i)),
-                FontChoice::Shipped(i) => Err(format!("there is no shipped font {i}")),
-                FontChoice::File(path) => Font::from_path(path).map_err(|e| e.to_string()),
-            };
-            self.font = Some((wanted.font.clone(), font));
-        }
-        let font = self.font.as_ref().expect("set above").1.clone();
-        self.scene = Some(font.and_then(|font| build_scene(&font, wanted)));
-    }
-
-    fn font(&self) -> Option<&Font> {
-        self.font.as_ref().and_then(|(_, f)| f.as_ref().ok())
-    }
-
-    fn scene(&self) -> Option<&Arc<Scene>> {
-        self.scene.as_ref().and_then(|s| s.as_ref().ok())
-    }
-
-    fn problem(&self) -> Option<String> {
-        match (&self.font, &self.scene) {
-            (Some((_, Err(e))), _) | (_, Some(Err(e))) => Some(e.clone()),
-            _ => None,
-        }
-    }
-
-    fn units_per_em(&self) -> f64 {
-        self.scene().map_or(1000.0, |s| s.units_per_em)
-    }
-}
-
-fn build_scene(font: &Font, wanted: &SceneSettings) -> Result<Arc<Scene>, String> {
-    // Axes the font lacks (left from another font) are ignored, not an error.
-    let axes = font.axes();
-    let variations: Vec<(String, f32)> = wanted
-        .variations
-        .iter()
-        .filter(|(tag, _)| axes.iter().any(|a| &a.tag == tag))
-        .cloned()
-        .collect();
-    let font = font
-        .with_variations(&variations)
-        .map_err(|e| e.to_string())?;
-    let scene = if wanted.glyph_mode {
-        let spec = wanted.glyph.trim();
-        let id = match spec.strip_prefix('#') {
-            Some(n) => n
-                .trim()
-                .parse::<u32>()
-                .map_err(|_| format!("'{spec}': give a character, or # and a glyph id"))?,
-            None => {
-                let c = spec
-                    .chars()
-                    .next()
-                    .ok_or("glyph mode: give a character or #id")?;
-                u32::from(font.glyph_for_char(c).map_err(|e| e.to_string())?)
-            }
-        };
-        Scene::from_glyph_id(&font, id)
-    } else {
-        Scene::from_text(&font, &wanted.text)
-    };
-    scene.map(Arc::new).map_err(|e| e.to_string())
 }
 
 /// The reference for the resting view, on the GPU for the panes that show it.
@@ -315,13 +236,13 @@ impl Explorer {
     /// Whether the reference and every pane's numbers are worked out for this view, and
     /// the view is what the settings say (nothing changed since it was laid out).
     pub fn settled(&self) -> bool {
-        let up_to_date = self.scene.built_for.as_ref() == Some(&self.settings.scene)
+        let up_to_date = self.scene.is_built_for(&self.settings.scene)
             && self
                 .view
                 .camera
                 .is_some_and(|c| c == self.settings.camera.camera(c.width, c.height))
             && (0..self.settings.layout.panes()).all(|i| {
-                self.panes[i].is_built_for(&self.settings.panes[i], self.scene.generation)
+                self.panes[i].is_built_for(&self.settings.panes[i], self.scene.generation())
             });
         up_to_date
             && self.view.key.is_some()
@@ -366,7 +287,7 @@ impl Explorer {
     fn reference_is_current(&self) -> bool {
         match (self.reference.made_for, self.view.camera) {
             (Some((generation, camera)), Some(current)) => {
-                generation == self.scene.generation && camera == current
+                generation == self.scene.generation() && camera == current
             }
             _ => false,
         }
@@ -549,22 +470,6 @@ mod tests {
             }
         }
         assert!(found > 0, "no method shader draws a cost heat map");
-    }
-
-    #[test]
-    fn glyph_mode_takes_a_character_or_an_id() {
-        let font = Font::default_font();
-        let mut s = SceneSettings {
-            glyph_mode: true,
-            glyph: "g".into(),
-            ..Default::default()
-        };
-        let by_char = build_scene(&font, &s).unwrap();
-        s.glyph = format!("#{}", by_char.glyphs[0].id);
-        let by_id = build_scene(&font, &s).unwrap();
-        assert_eq!(by_char.glyphs[0].id, by_id.glyphs[0].id);
-        s.glyph = "#99999".into();
-        assert!(build_scene(&font, &s).unwrap_err().contains("out of range"));
     }
 
     #[test]

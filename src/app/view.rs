@@ -54,7 +54,7 @@ impl Explorer {
             return;
         };
         let scene = self.scene.scene().cloned();
-        let generation = self.scene.generation;
+        let generation = self.scene.generation();
         for (index, pane) in self.panes.iter_mut().enumerate().take(rects.len()) {
             pane.sync(
                 &gpu,
@@ -466,7 +466,7 @@ impl Explorer {
         let visible = self.settings.layout.panes();
         let key = ViewKey {
             camera,
-            scene: self.scene.generation,
+            scene: self.scene.generation(),
             panes: self.panes[..visible]
                 .iter()
                 .map(|p| {
@@ -522,7 +522,7 @@ impl Explorer {
         self.analysis.send(Request {
             id: 0,
             scene,
-            scene_generation: self.scene.generation,
+            scene_generation: self.scene.generation(),
             camera,
             captures,
             counts,
