@@ -7,9 +7,11 @@
 //! - `camera_control`: the shared camera and how input steers it.
 //! - `shortcuts`: the keyboard and mouse, one table for the keys, the help and the README.
 //! - `panes`: the method catalog, each pane's prepared method, the pane controls.
+//! - `view`: the panes laid out, steered by the pointer, and settling when at rest.
 //! - `gpu_view`: egui_wgpu paint callbacks drawing each pane's offscreen target.
 //! - `analysis`: the reference and the error figures, on a background thread.
 //! - `sweep`: speed against error over every parameter combination, plotted.
+//! - `controls`: the side panel, the status bar and the windows.
 //! - `outline`, `font_dialog`, `headless` (offscreen frames for `glyphscope screenshots`).
 
 mod analysis;
@@ -28,31 +30,24 @@ mod sweep;
 mod view;
 
 use std::collections::VecDeque;
-use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 
 use eframe::egui;
 use glam::DVec2;
 
-use self::analysis::Analysis;
-use self::camera_control::{MAX_SIZE_PX_PER_EM, MAX_TILT_DEG, MIN_SIZE_PX_PER_EM};
+use self::analysis::{Analysis, ReferenceState};
 use self::font_dialog::FontDialog;
 use self::gpu_view::{Compositor, lock};
 use self::panes::{Catalog, Pane};
 use self::scene_state::SceneState;
-use self::settings::{FontChoice, PANES, PaneSource, Settings};
+use self::settings::{PANES, Settings, sanitize};
 use self::sweep::Sweep;
+use self::view::ViewState;
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
-use crate::font::SHIPPED_FONTS;
 use crate::gpu::GpuContext;
 use crate::scene::Scene;
 
-/// Seconds the view must stay still before the reference and the errors are worked out.
-const REST_SECONDS: f64 = 0.25;
-/// Top of the cost heat map's scale, curves per pixel (`COST_SCALE` in the method
-/// shaders; a test keeps them equal).
-pub const COST_SCALE_CURVES: u32 = 16;
 /// Opens the explorer window.
 pub fn run() -> Result<(), crate::Error> {
     let options = eframe::NativeOptions {
@@ -81,41 +76,6 @@ pub fn wgpu_setup() -> egui_wgpu::WgpuSetup {
     let mut setup = egui_wgpu::WgpuSetupCreateNew::without_display_handle();
     setup.device_descriptor = Arc::new(GpuContext::device_descriptor);
     egui_wgpu::WgpuSetup::CreateNew(setup)
-}
-
-/// The reference for the resting view, on the GPU for the panes that show it.
-#[derive(Default)]
-struct ReferenceState {
-    texture: gpu_view::ReferenceTexture,
-    image: Option<Arc<CoverageImage>>,
-    /// (scene generation, camera) the image is for.
-    made_for: Option<(u64, Camera)>,
-    cpu_ms: Option<f64>,
-    problem: Option<String>,
-}
-
-/// What the view shows; when it stops changing, the view is at rest.
-#[derive(Clone, Debug, PartialEq)]
-struct ViewKey {
-    camera: Camera,
-    scene: u64,
-    panes: Vec<(u64, bool)>,
-}
-
-/// The pane layout and hover of the last frame.
-#[derive(Default)]
-struct ViewState {
-    /// The camera every pane shares this frame (its size: one pane, in pixels).
-    camera: Option<Camera>,
-    key: Option<ViewKey>,
-    changed_at: f64,
-    analysed: Option<ViewKey>,
-    /// Pane index and pixel under the pointer.
-    hovered: Option<(usize, u32, u32)>,
-    /// Notes to show, per pane.
-    notes: Vec<String>,
-    /// Where the visible panes are, in points.
-    rects: Vec<egui::Rect>,
 }
 
 /// The explorer app.
@@ -259,31 +219,6 @@ impl Explorer {
             .map(|(m, _)| m)
     }
 
-    pub fn sweep_points(&self) -> &[sweep::SweepPoint] {
-        &self.sweep.points
-    }
-
-    pub fn sweep_running(&self) -> bool {
-        self.sweep.running()
-    }
-
-    /// Starts the speed-vs-error sweep on the current scene and view and opens its window.
-    pub fn start_sweep(&mut self, ctx: &egui::Context) {
-        self.sweep.open = true;
-        if let (Some((gpu, _)), Some(scene), Some(camera)) =
-            (&self.gpu, self.scene.scene(), self.view.camera)
-        {
-            self.sweep
-                .start(ctx, gpu, &self.catalog, scene.clone(), camera);
-        }
-    }
-
-    /// Opens a font file, as the font dialog and a file drop do.
-    pub fn open_font(&mut self, path: PathBuf) {
-        self.settings.scene.font = FontChoice::File(path);
-        self.settings.scene.variations.clear();
-    }
-
     fn reference_is_current(&self) -> bool {
         match (self.reference.made_for, self.view.camera) {
             (Some((generation, camera)), Some(current)) => {
@@ -303,37 +238,6 @@ impl Explorer {
     fn set_status(&self, message: String) {
         *self.status.lock().unwrap_or_else(|p| p.into_inner()) = message;
     }
-}
-
-/// Keeps remembered settings usable with this build (fonts, pane references).
-fn sanitize(settings: &mut Settings) {
-    if let FontChoice::Shipped(i) = settings.scene.font
-        && i >= SHIPPED_FONTS.len()
-    {
-        settings.scene.font = FontChoice::Shipped(0);
-    }
-    for (index, pane) in settings.panes.iter_mut().enumerate() {
-        if let PaneSource::Difference { first, second } = &mut pane.source {
-            if *first >= PANES || *first == index {
-                *first = usize::from(index == 0);
-            }
-            if second.is_some_and(|s| s >= PANES || s == index) {
-                *second = None;
-            }
-        }
-    }
-    let c = &mut settings.camera;
-    if !(c.size_px_per_em.is_finite() && c.size_px_per_em > 0.0) {
-        *c = Default::default();
-    }
-    c.size_px_per_em = c
-        .size_px_per_em
-        .clamp(MIN_SIZE_PX_PER_EM, MAX_SIZE_PX_PER_EM);
-    c.tilt_deg = c.tilt_deg.clamp(-MAX_TILT_DEG, MAX_TILT_DEG);
-}
-
-fn color(rgb: [u8; 3]) -> egui::Color32 {
-    egui::Color32::from_rgb(rgb[0], rgb[1], rgb[2])
 }
 
 impl eframe::App for Explorer {
@@ -383,113 +287,8 @@ impl Explorer {
             }
         }
         self.sweep.poll();
-        let Some(outcome) = self.analysis.receive() else {
-            return;
-        };
-        // Results for a pane whose method was remade meanwhile belong to the old one.
-        let current = |pane: usize| {
-            lock(&self.panes[pane].surface).generation == outcome.pane_generations[pane]
-        };
-        let errors: Vec<_> = outcome
-            .errors
-            .into_iter()
-            .filter(|(p, _)| current(*p))
-            .collect();
-        let curves: Vec<_> = outcome
-            .curves
-            .into_iter()
-            .filter(|(p, _)| current(*p))
-            .collect();
-        for (pane, result) in errors {
-            match result {
-                Ok(stats) => self.panes[pane].error = Some((outcome.camera, stats)),
-                Err(e) => self.panes[pane].problem = Some(e),
-            }
+        if let Some(outcome) = self.analysis.receive() {
+            self.take_analysis(outcome);
         }
-        for (pane, result) in curves {
-            match result {
-                Ok(cost) => self.panes[pane].curves = cost.map(|c| (outcome.camera, c)),
-                Err(e) => self.panes[pane].problem = Some(e),
-            }
-        }
-        if let Some(ms) = outcome.reference_ms {
-            self.reference.cpu_ms = Some(ms);
-        }
-        match outcome.reference {
-            Ok(image) => {
-                self.reference.problem = None;
-                if let Some((gpu, _)) = &self.gpu {
-                    gpu_view::upload_reference(gpu, &self.reference.texture, &image);
-                }
-                self.reference.image = Some(image);
-                self.reference.made_for = Some((outcome.scene_generation, outcome.camera));
-            }
-            Err(e) => self.reference.problem = Some(e),
-        }
-    }
-
-    fn take_dropped_files(&mut self, ctx: &egui::Context) {
-        let dropped: Vec<PathBuf> = ctx.input(|i| {
-            i.raw
-                .dropped_files
-                .iter()
-                .map(|f| f.path().to_path_buf())
-                .collect()
-        });
-        if let Some(path) = dropped.into_iter().next() {
-            if font_dialog::is_font_file(&path) {
-                self.open_font(path);
-            } else {
-                self.set_status(format!("'{}' is not a .ttf/.otf font", path.display()));
-            }
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_compositor_shader_is_valid_wgsl() {
-        let module = naga::front::wgsl::parse_str(&gpu_view::composite_wgsl()).unwrap();
-        naga::valid::Validator::new(Default::default(), naga::valid::Capabilities::all())
-            .validate(&module)
-            .unwrap();
-    }
-
-    /// The heat map legend's labels must match the scale the method shaders draw.
-    #[test]
-    fn cost_legend_matches_the_method_shaders() {
-        let mut found = 0;
-        for (file, source) in crate::gpu::shaders::METHOD_SHADERS {
-            if let Some(rest) = source.split("const COST_SCALE: f32 = ").nth(1) {
-                let value: f32 = rest.split(';').next().unwrap().trim().parse().unwrap();
-                assert_eq!(value, COST_SCALE_CURVES as f32, "{file}");
-                found += 1;
-            }
-        }
-        assert!(found > 0, "no method shader draws a cost heat map");
-    }
-
-    #[test]
-    fn remembered_settings_survive_a_round_trip_and_bad_values_are_mended() {
-        let mut s = Settings::default();
-        s.panes[2].source = PaneSource::Difference {
-            first: 9,
-            second: Some(2),
-        };
-        s.scene.font = FontChoice::Shipped(42);
-        let mut back: Settings = serde_json::from_str(&serde_json::to_string(&s).unwrap()).unwrap();
-        assert_eq!(back, s);
-        sanitize(&mut back);
-        assert_eq!(back.scene.font, FontChoice::Shipped(0));
-        assert_eq!(
-            back.panes[2].source,
-            PaneSource::Difference {
-                first: 0,
-                second: None
-            }
-        );
     }
 }

@@ -8,12 +8,12 @@ use std::sync::Arc;
 use eframe::egui;
 use glam::DVec2;
 
+use super::Explorer;
 use super::analysis::Request;
 use super::gpu_view::{CompositeMode, PanePaint, Source, lock};
 use super::outline;
 use super::panes::{REFERENCE, pane_letter, subtrahend_label};
 use super::settings::{PaneOverlay, PaneSource};
-use super::{COST_SCALE_CURVES, Explorer, REST_SECONDS, ViewKey, color};
 use crate::camera::Camera;
 use crate::methods::Overlay;
 
@@ -21,6 +21,35 @@ use crate::methods::Overlay;
 const GAP: f32 = 2.0;
 /// Wheel zoom: factor per point scrolled.
 const WHEEL_ZOOM_PER_POINT: f64 = 0.004;
+/// Seconds the view must stay still before the reference and the errors are worked out.
+const REST_SECONDS: f64 = 0.25;
+/// Top of the cost heat map's scale, curves per pixel (`COST_SCALE` in the method
+/// shaders; a test keeps them equal).
+const COST_SCALE_CURVES: u32 = 16;
+
+/// What the view shows; when it stops changing, the view is at rest.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ViewKey {
+    camera: Camera,
+    scene: u64,
+    panes: Vec<(u64, bool)>,
+}
+
+/// The pane layout and hover of the last frame.
+#[derive(Default)]
+pub struct ViewState {
+    /// The camera every pane shares this frame (its size: one pane, in pixels).
+    pub camera: Option<Camera>,
+    pub key: Option<ViewKey>,
+    changed_at: f64,
+    pub analysed: Option<ViewKey>,
+    /// Pane index and pixel under the pointer.
+    pub hovered: Option<(usize, u32, u32)>,
+    /// Notes to show, per pane.
+    notes: Vec<String>,
+    /// Where the visible panes are, in points.
+    pub rects: Vec<egui::Rect>,
+}
 
 impl Explorer {
     pub(super) fn view(&mut self, ui: &mut egui::Ui) {
@@ -529,5 +558,28 @@ impl Explorer {
             pane_generations,
         });
         self.view.analysed = Some(key);
+    }
+}
+
+fn color(rgb: [u8; 3]) -> egui::Color32 {
+    egui::Color32::from_rgb(rgb[0], rgb[1], rgb[2])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The heat map legend's labels must match the scale the method shaders draw.
+    #[test]
+    fn cost_legend_matches_the_method_shaders() {
+        let mut found = 0;
+        for (file, source) in crate::gpu::shaders::METHOD_SHADERS {
+            if let Some(rest) = source.split("const COST_SCALE: f32 = ").nth(1) {
+                let value: f32 = rest.split(';').next().unwrap().trim().parse().unwrap();
+                assert_eq!(value, COST_SCALE_CURVES as f32, "{file}");
+                found += 1;
+            }
+        }
+        assert!(found > 0, "no method shader draws a cost heat map");
     }
 }
