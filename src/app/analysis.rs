@@ -2,7 +2,8 @@
 //! and curves evaluated per pixel (a counting pass of the method's own) — worked out on
 //! a background thread once the view rests. A newer request supersedes any still
 //! waiting. The thread keeps its own prepared copy of each pane's method for counting,
-//! made again only when the scene or the parameters change.
+//! made again only when the scene or the parameters change. The answers go to the
+//! panes and to the explorer's [`ReferenceState`].
 
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -11,6 +12,8 @@ use std::time::Instant;
 
 use eframe::egui;
 
+use super::Explorer;
+use super::gpu_view::{self, ReferenceTexture, lock};
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
 use crate::gpu::GpuContext;
@@ -113,6 +116,63 @@ impl Analysis {
         let newest = self.outcomes.try_iter().last()?;
         self.answered = newest.id;
         Some(newest)
+    }
+}
+
+/// The reference for the resting view, on the GPU for the panes that show it.
+#[derive(Default)]
+pub struct ReferenceState {
+    pub texture: ReferenceTexture,
+    pub image: Option<Arc<CoverageImage>>,
+    /// (scene generation, camera) the image is for.
+    pub made_for: Option<(u64, Camera)>,
+    pub cpu_ms: Option<f64>,
+    pub problem: Option<String>,
+}
+
+impl Explorer {
+    /// Takes in an answer of the worker: the reference, and each pane's numbers.
+    pub(super) fn take_analysis(&mut self, outcome: Outcome) {
+        // Results for a pane whose method was remade meanwhile belong to the old one.
+        let current = |pane: usize| {
+            lock(&self.panes[pane].surface).generation == outcome.pane_generations[pane]
+        };
+        let errors: Vec<_> = outcome
+            .errors
+            .into_iter()
+            .filter(|(p, _)| current(*p))
+            .collect();
+        let curves: Vec<_> = outcome
+            .curves
+            .into_iter()
+            .filter(|(p, _)| current(*p))
+            .collect();
+        for (pane, result) in errors {
+            match result {
+                Ok(stats) => self.panes[pane].error = Some((outcome.camera, stats)),
+                Err(e) => self.panes[pane].problem = Some(e),
+            }
+        }
+        for (pane, result) in curves {
+            match result {
+                Ok(cost) => self.panes[pane].curves = cost.map(|c| (outcome.camera, c)),
+                Err(e) => self.panes[pane].problem = Some(e),
+            }
+        }
+        if let Some(ms) = outcome.reference_ms {
+            self.reference.cpu_ms = Some(ms);
+        }
+        match outcome.reference {
+            Ok(image) => {
+                self.reference.problem = None;
+                if let Some((gpu, _)) = &self.gpu {
+                    gpu_view::upload_reference(gpu, &self.reference.texture, &image);
+                }
+                self.reference.image = Some(image);
+                self.reference.made_for = Some((outcome.scene_generation, outcome.camera));
+            }
+            Err(e) => self.reference.problem = Some(e),
+        }
     }
 }
 

@@ -2,12 +2,12 @@
 //! and the windows (help, open font, speed vs error).
 
 use eframe::egui;
-use glam::DVec2;
 
+use super::Explorer;
 use super::camera_control::{MAX_SIZE_PX_PER_EM, MAX_TILT_DEG, MIN_SIZE_PX_PER_EM};
-use super::panes::pane_controls;
+use super::panes::{REFERENCE, pane_controls, pane_letter};
 use super::settings::{FontChoice, Layout, PaneSource};
-use super::{Explorer, SHORTCUTS, pane_letter};
+use super::shortcuts::{Action, SHORTCUTS, key_name};
 use crate::font::SHIPPED_FONTS;
 
 impl Explorer {
@@ -37,17 +37,28 @@ impl Explorer {
         }
         ui.separator();
         ui.horizontal(|ui| {
-            if ui.button("Speed vs error…").on_hover_text("P").clicked() {
+            if ui
+                .button("Speed vs error…")
+                .on_hover_text(key_name(Action::ToggleSweep))
+                .clicked()
+            {
                 self.sweep.open = true;
             }
             if ui
                 .button("Screenshot")
-                .on_hover_text("S: PNG in the current folder")
+                .on_hover_text(format!(
+                    "{}: PNG in the current folder",
+                    key_name(Action::Screenshot)
+                ))
                 .clicked()
             {
                 self.screenshot(ui.ctx());
             }
-            if ui.button("Help").on_hover_text("H").clicked() {
+            if ui
+                .button("Help")
+                .on_hover_text(key_name(Action::ToggleHelp))
+                .clicked()
+            {
                 self.help_open = true;
             }
         });
@@ -75,7 +86,10 @@ impl Explorer {
                 .labelled_by(label.id);
             if ui
                 .button("Open…")
-                .on_hover_text("Ctrl+O, or drop a font file")
+                .on_hover_text(format!(
+                    "{}, or drop a font file",
+                    key_name(Action::OpenFont)
+                ))
                 .clicked()
             {
                 self.font_dialog.open = true;
@@ -98,7 +112,10 @@ impl Explorer {
         ui.horizontal(|ui| {
             let toggle = ui
                 .checkbox(&mut scene.glyph_mode, "one glyph")
-                .on_hover_text("G: a single glyph, big; a character, or # and a glyph id");
+                .on_hover_text(format!(
+                    "{}: a single glyph, big; a character, or # and a glyph id",
+                    key_name(Action::ToggleGlyphMode)
+                ));
             ui.add_enabled(
                 scene.glyph_mode,
                 egui::TextEdit::singleline(&mut scene.glyph)
@@ -129,9 +146,7 @@ impl Explorer {
 
     fn camera_controls(&mut self, ui: &mut egui::Ui) {
         let upem = self.scene.units_per_em();
-        let centre = self.view.camera.map_or(DVec2::ZERO, |c| {
-            DVec2::new(f64::from(c.width), f64::from(c.height)) / 2.0
-        });
+        let centre = self.view_centre();
         let camera = &mut self.settings.camera;
         let mut size = camera.size_px_per_em;
         ui.horizontal(|ui| {
@@ -172,7 +187,7 @@ impl Explorer {
             let scene = self.scene.scene().cloned();
             if ui
                 .add_enabled(scene.is_some(), egui::Button::new("Reset"))
-                .on_hover_text("R")
+                .on_hover_text(key_name(Action::ResetCamera))
                 .clicked()
                 && let Some(scene) = &scene
             {
@@ -180,7 +195,7 @@ impl Explorer {
             }
             if ui
                 .add_enabled(scene.is_some(), egui::Button::new("Fit"))
-                .on_hover_text("F")
+                .on_hover_text(key_name(Action::FitText))
                 .clicked()
                 && let Some(scene) = &scene
             {
@@ -192,9 +207,9 @@ impl Explorer {
     fn view_controls(&mut self, ui: &mut egui::Ui) {
         let settings = &mut self.settings;
         ui.horizontal(|ui| {
-            for (layout, key) in Layout::ALL.into_iter().zip(["1", "2", "4"]) {
+            for layout in Layout::ALL {
                 ui.selectable_value(&mut settings.layout, layout, layout.label())
-                    .on_hover_text(key);
+                    .on_hover_text(key_name(Action::SetLayout(layout)));
             }
         });
         ui.horizontal(|ui| {
@@ -210,7 +225,10 @@ impl Explorer {
         )
         .on_hover_text("coverage error drawn at full red or blue");
         ui.checkbox(&mut settings.continuous, "draw continuously")
-            .on_hover_text("C: redraw every frame, for live GPU time; otherwise panes are drawn only when something changes");
+            .on_hover_text(format!(
+                "{}: redraw every frame, for live GPU time; otherwise panes are drawn only when something changes",
+                key_name(Action::ToggleContinuous)
+            ));
     }
 
     pub(super) fn status_bar(&mut self, ui: &mut egui::Ui) {
@@ -266,7 +284,7 @@ impl Explorer {
             let value = self
                 .pane_capture(index)
                 .or_else(|| {
-                    (name == super::REFERENCE)
+                    (name == REFERENCE)
                         .then(|| self.reference_image())
                         .flatten()
                 })
@@ -286,9 +304,9 @@ impl Explorer {
             .resizable(false)
             .show(ctx, |ui| {
                 egui::Grid::new("shortcuts").striped(true).show(ui, |ui| {
-                    for (keys, what) in SHORTCUTS {
-                        ui.strong(*keys);
-                        ui.label(*what);
+                    for shortcut in SHORTCUTS {
+                        ui.strong(shortcut.keys);
+                        ui.label(shortcut.what);
                         ui.end_row();
                     }
                 });

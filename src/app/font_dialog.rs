@@ -6,6 +6,9 @@ use std::path::{Path, PathBuf};
 
 use eframe::egui;
 
+use super::Explorer;
+use super::settings::FontChoice;
+
 pub struct FontDialog {
     pub open: bool,
     /// The path typed or picked: a font file, or a folder to list.
@@ -18,6 +21,31 @@ impl Default for FontDialog {
         FontDialog {
             open: false,
             path: start.display().to_string(),
+        }
+    }
+}
+
+impl Explorer {
+    /// Opens a font file, as the font dialog and a file drop do.
+    pub fn open_font(&mut self, path: PathBuf) {
+        self.settings.scene.font = FontChoice::File(path);
+        self.settings.scene.variations.clear();
+    }
+
+    pub(super) fn take_dropped_files(&mut self, ctx: &egui::Context) {
+        let dropped: Vec<PathBuf> = ctx.input(|i| {
+            i.raw
+                .dropped_files
+                .iter()
+                .map(|f| f.path().to_path_buf())
+                .collect()
+        });
+        if let Some(path) = dropped.into_iter().next() {
+            if is_font_file(&path) {
+                self.open_font(path);
+            } else {
+                self.set_status(format!("'{}' is not a .ttf/.otf font", path.display()));
+            }
         }
     }
 }

@@ -534,3 +534,16 @@ pub fn upload_reference(gpu: &GpuContext, texture: &ReferenceTexture, image: &Co
         size,
     );
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_compositor_shader_is_valid_wgsl() {
+        let module = naga::front::wgsl::parse_str(&composite_wgsl()).unwrap();
+        naga::valid::Validator::new(Default::default(), naga::valid::Capabilities::all())
+            .validate(&module)
+            .unwrap();
+    }
+}

@@ -332,8 +332,14 @@ fn param_control(
     }
 }
 
-fn pane_letter(index: usize) -> char {
+/// How the explorer names pane `index`: A, B, C, D.
+pub fn pane_letter(index: usize) -> char {
     (b'A' + index as u8) as char
+}
+
+/// What a difference pane subtracts, named: pane `second`, or the reference when None.
+pub fn subtrahend_label(second: Option<usize>) -> String {
+    second.map_or_else(|| REFERENCE.to_string(), |i| pane_letter(i).to_string())
 }
 
 fn difference_controls(
@@ -354,11 +360,8 @@ fn difference_controls(
                 }
             });
         ui.label("−");
-        let label = |s: Option<usize>| {
-            s.map_or_else(|| REFERENCE.to_string(), |i| pane_letter(i).to_string())
-        };
         egui::ComboBox::from_id_salt((index, "second"))
-            .selected_text(label(*second))
+            .selected_text(subtrahend_label(*second))
             .width(80.0)
             .show_ui(ui, |ui| {
                 ui.selectable_value(second, None, REFERENCE);

@@ -1,10 +1,12 @@
 //! Everything the explorer remembers between runs: the scene, the camera, the layout and
-//! each pane's method, parameters and overlays. Plain data, saved by eframe's storage.
+//! each pane's method, parameters and overlays. Plain data, saved by eframe's storage and
+//! mended on loading where a value no longer fits this build.
 
 use std::path::PathBuf;
 
 use serde::{Deserialize, Serialize};
 
+use super::camera_control::{MAX_SIZE_PX_PER_EM, MAX_TILT_DEG, MIN_SIZE_PX_PER_EM};
 use crate::font::SHIPPED_FONTS;
 use crate::methods::registry;
 
@@ -216,4 +218,57 @@ pub enum PaneOverlay {
     Method(String),
     /// Signed error against the reference (red: too much coverage, blue: too little).
     Error,
+}
+
+/// Keeps remembered settings usable with this build (fonts, pane references).
+pub(super) fn sanitize(settings: &mut Settings) {
+    if let FontChoice::Shipped(i) = settings.scene.font
+        && i >= SHIPPED_FONTS.len()
+    {
+        settings.scene.font = FontChoice::Shipped(0);
+    }
+    for (index, pane) in settings.panes.iter_mut().enumerate() {
+        if let PaneSource::Difference { first, second } = &mut pane.source {
+            if *first >= PANES || *first == index {
+                *first = usize::from(index == 0);
+            }
+            if second.is_some_and(|s| s >= PANES || s == index) {
+                *second = None;
+            }
+        }
+    }
+    let c = &mut settings.camera;
+    if !(c.size_px_per_em.is_finite() && c.size_px_per_em > 0.0) {
+        *c = Default::default();
+    }
+    c.size_px_per_em = c
+        .size_px_per_em
+        .clamp(MIN_SIZE_PX_PER_EM, MAX_SIZE_PX_PER_EM);
+    c.tilt_deg = c.tilt_deg.clamp(-MAX_TILT_DEG, MAX_TILT_DEG);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn remembered_settings_survive_a_round_trip_and_bad_values_are_mended() {
+        let mut s = Settings::default();
+        s.panes[2].source = PaneSource::Difference {
+            first: 9,
+            second: Some(2),
+        };
+        s.scene.font = FontChoice::Shipped(42);
+        let mut back: Settings = serde_json::from_str(&serde_json::to_string(&s).unwrap()).unwrap();
+        assert_eq!(back, s);
+        sanitize(&mut back);
+        assert_eq!(back.scene.font, FontChoice::Shipped(0));
+        assert_eq!(
+            back.panes[2].source,
+            PaneSource::Difference {
+                first: 0,
+                second: None
+            }
+        );
+    }
 }

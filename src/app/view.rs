@@ -8,12 +8,12 @@ use std::sync::Arc;
 use eframe::egui;
 use glam::DVec2;
 
+use super::Explorer;
 use super::analysis::Request;
 use super::gpu_view::{CompositeMode, PanePaint, Source, lock};
 use super::outline;
-use super::panes::REFERENCE;
+use super::panes::{REFERENCE, pane_letter, subtrahend_label};
 use super::settings::{PaneOverlay, PaneSource};
-use super::{Explorer, REST_SECONDS, ViewKey, color, pane_letter};
 use crate::camera::Camera;
 use crate::gpu::shaders::COST_SCALE_CURVES;
 use crate::methods::Overlay;
@@ -22,6 +22,32 @@ use crate::methods::Overlay;
 const GAP: f32 = 2.0;
 /// Wheel zoom: factor per point scrolled.
 const WHEEL_ZOOM_PER_POINT: f64 = 0.004;
+/// Seconds the view must stay still before the reference and the errors are worked out.
+const REST_SECONDS: f64 = 0.25;
+
+/// What the view shows; when it stops changing, the view is at rest.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ViewKey {
+    camera: Camera,
+    scene: u64,
+    panes: Vec<(u64, bool)>,
+}
+
+/// The pane layout and hover of the last frame.
+#[derive(Default)]
+pub struct ViewState {
+    /// The camera every pane shares this frame (its size: one pane, in pixels).
+    pub camera: Option<Camera>,
+    pub key: Option<ViewKey>,
+    changed_at: f64,
+    pub analysed: Option<ViewKey>,
+    /// Pane index and pixel under the pointer.
+    pub hovered: Option<(usize, u32, u32)>,
+    /// Notes to show, per pane.
+    notes: Vec<String>,
+    /// Where the visible panes are, in points.
+    pub rects: Vec<egui::Rect>,
+}
 
 impl Explorer {
     pub(super) fn view(&mut self, ui: &mut egui::Ui) {
@@ -55,7 +81,7 @@ impl Explorer {
             return;
         };
         let scene = self.scene.scene().cloned();
-        let generation = self.scene.generation;
+        let generation = self.scene.generation();
         for (index, pane) in self.panes.iter_mut().enumerate().take(rects.len()) {
             pane.sync(
                 &gpu,
@@ -306,7 +332,7 @@ impl Explorer {
                 "{} difference {} − {}",
                 pane_letter(index),
                 pane_letter(*first),
-                second.map_or(REFERENCE.to_string(), |s| pane_letter(s).to_string())
+                subtrahend_label(*second)
             ),
         };
         match &settings.overlay {
@@ -472,7 +498,7 @@ impl Explorer {
         let visible = self.settings.layout.panes();
         let key = ViewKey {
             camera,
-            scene: self.scene.generation,
+            scene: self.scene.generation(),
             panes: self.panes[..visible]
                 .iter()
                 .map(|p| {
@@ -528,7 +554,7 @@ impl Explorer {
         self.analysis.send(Request {
             id: 0,
             scene,
-            scene_generation: self.scene.generation,
+            scene_generation: self.scene.generation(),
             camera,
             captures,
             counts,
@@ -536,4 +562,8 @@ impl Explorer {
         });
         self.view.analysed = Some(key);
     }
+}
+
+fn color(rgb: [u8; 3]) -> egui::Color32 {
+    egui::Color32::from_rgb(rgb[0], rgb[1], rgb[2])
 }
