@@ -1,0 +1,96 @@
+//! The count behind `curves_per_pixel`: the frame's curve triangles drawn again, with
+//! its samples and jitter, into an additive target instead of the stencil.
+
+use super::Settings;
+use super::jitter::jitter_offset;
+use super::passes::draw_runs;
+use super::pipelines::{Builder, Pipelines};
+use super::prepared::Prepared;
+use crate::Error;
+use crate::gpu::kit::ColorOut;
+use crate::gpu::msaa::Attachments;
+use crate::gpu::{CoverageTarget, GpuContext};
+use crate::methods::CurveCost;
+
+/// The mean and largest count over the pixels that `coverage` (the frame just rendered
+/// into `target`, one value per pixel) covers. `prepared` must still hold that frame's
+/// instances and runs.
+pub(super) fn curve_cost(
+    gpu: &GpuContext,
+    pipelines: &mut Pipelines,
+    prepared: &Prepared,
+    settings: &Settings,
+    target: &CoverageTarget,
+    coverage: &[f32],
+) -> Result<Option<CurveCost>, Error> {
+    let samples = settings.samples;
+    gpu.catching_errors("counting curve evaluations", || {
+        if pipelines.count.is_none() {
+            let builder = Builder {
+                device: &gpu.device,
+                layout: &pipelines.pipeline_layout,
+                shader: &pipelines.shader,
+                samples,
+            };
+            pipelines.count = Some(builder.build(
+                "xor-stencil count",
+                ("vs_curve", "fs_count"),
+                wgpu::PrimitiveTopology::TriangleList,
+                None,
+                ColorOut::Add,
+            ));
+        }
+        let pipelines = &*pipelines;
+        let multisampled = Attachments::fit(None, gpu, target, samples, false);
+        let mut encoder = gpu
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("xor-stencil count"),
+            });
+        {
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("xor-stencil count"),
+                color_attachments: &[Some(
+                    multisampled.color(target, wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT)),
+                )],
+                depth_stencil_attachment: None,
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            pass.set_pipeline(pipelines.count.as_ref().expect("built above"));
+            // `render_frame` left this camera's instances and runs in place.
+            for k in 0..settings.passes {
+                pass.set_bind_group(0, prepared.instances.bind_group(), &[]);
+                pass.set_bind_group(1, &prepared.bind_group, &[jitter_offset(pipelines, k)]);
+                draw_runs(
+                    &mut pass,
+                    &prepared.runs,
+                    &prepared.geometry.curve_ranges,
+                    1,
+                );
+            }
+        }
+        gpu.queue.submit([encoder.finish()]);
+        gpu.wait_idle()
+    })?;
+    // The resolve averaged the samples' counts.
+    let counts = target.read_texels(gpu)?;
+    let (mut total, mut covered, mut max) = (0.0, 0u64, 0u32);
+    for (texel, &c) in counts.iter().zip(coverage) {
+        if c > 0.0 {
+            let n = f64::from(texel[3]) * f64::from(samples);
+            total += n;
+            covered += 1;
+            max = max.max(n.round() as u32);
+        }
+    }
+    Ok(Some(CurveCost {
+        mean: if covered > 0 {
+            total / covered as f64
+        } else {
+            0.0
+        },
+        max,
+    }))
+}
