@@ -87,6 +87,18 @@ fn glyph_quad(inst: GlyphInstance, rect_min: vec2<f32>, rect_max: vec2<f32>, ver
     return out;
 }
 
+// Which roots of a quadratic count as crossings of a ray along +x through the origin,
+// from the signs of its control points' y alone (Slug's root-eligibility table): with
+// k = [y0 > 0] + 2[y1 > 0] + 4[y2 > 0], bit 0 of the class is the descending root t1
+// (y' < 0), real for k in {1, 2, 3, 5}, and bit 1 the ascending root t2, for k in
+// {2, 4, 5, 6}: bits of 0x2E and 0x74, interleaved as 0x2E74. An endpoint on the ray
+// counts as "below", so a ray through a shared endpoint or along a horizontal segment
+// counts it exactly once, whatever rounding does to the roots; no epsilon decides.
+fn crossing_class(y0: f32, y1: f32, y2: f32) -> u32 {
+    let k = u32(y0 > 0.0) | (u32(y1 > 0.0) << 1u) | (u32(y2 > 0.0) << 2u);
+    return (0x2E74u >> (2u * k)) & 3u;
+}
+
 fn cross2(a: vec2<f32>, b: vec2<f32>) -> f32 {
     return a.x * b.y - a.y * b.x;
 }

@@ -272,20 +272,16 @@ fn exact_curve(p: vec2<f32>, i: u32, field: ptr<function, Field>) {
 // Signed crossings of the ray from the origin towards +x by the quadratic (p0, p1, p2),
 // given relative to the ray's start: +1 for each crossing downwards, −1 upwards.
 //
-// Which roots count follows from the signs of y0, y1, y2 alone (y > 0 is "above", y ≤ 0
-// "below", so an endpoint on the ray belongs to exactly one side and a join is counted
-// once): y(t) = a t² − 2b t + c has its downward crossing at t1 = (b − √D)/a and its
-// upward one at t2 = (b + √D)/a, and with k = [y0 > 0] + 2[y1 > 0] + 4[y2 > 0], t1 is
-// a real crossing for k in {1, 2, 3, 5} and t2 for k in {2, 4, 5, 6}: bits of 0x2E and
-// 0x74 (the table Slug uses). No epsilon decides anything. D = b² − ac is computed as
+// Which roots count is `crossing_class` (common.wgsl): y(t) = a t² − 2b t + c has its
+// downward crossing at t1 = (b − √D)/a and its upward one at t2 = (b + √D)/a. D = b² − ac is computed as
 // y1² − y0·y2, which is never negative when the endpoints lie on opposite sides (one
 // crossing for sure); when they lie on the same side, D ≤ 0 means the curve only
 // touches or misses the ray. The roots are taken in the form that does not cancel
 // (c/q and q/a, q = b ± √D), so nearly straight curves lose no precision.
 fn quadratic_ray_crossings(p0: vec2<f32>, p1: vec2<f32>, p2: vec2<f32>) -> i32 {
-    let k = u32(p0.y > 0.0) | (u32(p1.y > 0.0) << 1u) | (u32(p2.y > 0.0) << 2u);
-    let down = ((0x2Eu >> k) & 1u) == 1u;
-    let up = ((0x74u >> k) & 1u) == 1u;
+    let roots = crossing_class(p0.y, p1.y, p2.y);
+    let down = (roots & 1u) != 0u;
+    let up = (roots & 2u) != 0u;
     let discriminant = p1.y * p1.y - p0.y * p2.y;
     if !(down || up) || (down && up && discriminant <= 0.0) {
         return 0;

@@ -212,12 +212,9 @@ fn cast_ray(sample_local: vec2<f32>, jx_local: vec2<f32>, jy_local: vec2<f32>, b
         let p1 = ray_frame(c.p0p1.zw, axis, direction) - s;
         let p2 = ray_frame(c.p2_max.xy, axis, direction) - s;
 
-        // Which roots count follows from the sign bits of the three y's alone: bit 0
-        // of the class is the descending crossing t1, bit 1 the ascending one t2. A
-        // ray through a shared endpoint or along a horizontal segment therefore counts
-        // it exactly once, whatever rounding does to the roots themselves.
-        let shift = select(0u, 2u, p0.y > 0.0) + select(0u, 4u, p1.y > 0.0) + select(0u, 8u, p2.y > 0.0);
-        let root_class = (0x2E74u >> shift) & 3u;
+        // Which roots count (`crossing_class`): bit 0 the descending crossing t1, bit
+        // 1 the ascending one t2.
+        let root_class = crossing_class(p0.y, p1.y, p2.y);
         if root_class == 0u {
             continue;
         }
