@@ -304,7 +304,17 @@ fn bad_input_fails_cleanly() {
             "--variation",
             "opsz=14",
         ],
-        "has no variation axis 'opsz' (it has: wght)",
+        "has no variation axis 'opsz' (it has: 'wght')",
+    );
+    fails(
+        "long axis tag",
+        &with(&["--text", "a", "--variation", "wghts=700"]),
+        "1 to 4 ASCII",
+    );
+    fails(
+        "non-ASCII axis tag",
+        &with(&["--text", "a", "--variation", "wé=700"]),
+        "1 to 4 ASCII",
     );
     fails("no text", &base, "required");
 }

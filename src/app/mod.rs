@@ -39,7 +39,7 @@ use self::settings::{FontChoice, Layout, PANES, PaneOverlay, PaneSource, SceneSe
 use self::sweep::Sweep;
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
-use crate::font::{Font, SHIPPED_FONTS};
+use crate::font::{Font, SHIPPED_FONTS, axis_tag};
 use crate::gpu::GpuContext;
 use crate::scene::Scene;
 
@@ -152,7 +152,7 @@ fn build_scene(font: &Font, wanted: &SceneSettings) -> Result<Arc<Scene>, String
     let variations: Vec<(String, f32)> = wanted
         .variations
         .iter()
-        .filter(|(tag, _)| axes.iter().any(|a| &a.tag == tag))
+        .filter(|(tag, _)| axis_tag(tag).is_ok_and(|tag| axes.iter().any(|a| a.tag == tag)))
         .cloned()
         .collect();
     let font = font
