@@ -42,6 +42,9 @@ pub enum Command {
     /// scenes: a Markdown table, CSV, JSON and plots. Run it from the repository root
     /// (the scenes read fonts/).
     Bench(BenchArgs),
+    /// Print which outline table a font uses (and why), its units per em and axes, and
+    /// for the glyphs asked for their advance, lsb, xMin and the shift applied to them.
+    Info(crate::info::InfoArgs),
 }
 
 #[derive(Args, Clone, Debug)]

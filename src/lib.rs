@@ -11,6 +11,7 @@ pub mod coverage;
 pub mod font;
 pub mod geometry;
 pub mod gpu;
+pub mod info;
 pub mod measure;
 pub mod methods;
 pub mod metrics;

@@ -11,6 +11,7 @@ fn main() -> ExitCode {
         // Exit 1, distinct from bad input's 2, when a method breaks a claimed bound.
         Some(Command::Stability(args)) => glyphscope::cli::run_stability(args),
         Some(Command::Screenshots(args)) => run_screenshots(args).map(|()| true),
+        Some(Command::Info(args)) => glyphscope::info::run(args).map(|()| true),
         None => run_app().map(|()| true),
     };
     match result {

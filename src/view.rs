@@ -2,14 +2,14 @@
 //! arguments describe them. The CLI, the bench's standard scenes and the tests build
 //! their frames from these, so every bench case reruns alone as a `render` command.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use clap::Args;
 use glam::DVec2;
 
 use crate::Error;
 use crate::camera::{Camera, MAX_IMAGE_SIDE, MAX_SIZE_PX_PER_EM};
-use crate::font::Font;
+use crate::font::{Font, axis_tag};
 use crate::scene::Scene;
 
 /// What to draw and from where.
@@ -49,7 +49,8 @@ pub struct ViewArgs {
     /// Perspective tilt in degrees about the image's horizontal centre line.
     #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
     pub tilt: f64,
-    /// Variable-font axis values, TAG=VALUE[,TAG=VALUE...] (e.g. wght=700).
+    /// Variable-font axis values, TAG=VALUE[,TAG=VALUE...] (e.g. wght=700); a tag
+    /// shorter than four characters is space-padded (M1=0.4 sets axis 'M1  ').
     #[arg(long, value_delimiter = ',', value_parser = parse_variation)]
     pub variation: Vec<(String, f32)>,
 }
@@ -78,15 +79,7 @@ impl ViewArgs {
 
     /// Loads the font, applying `--variation` values.
     pub fn font(&self) -> Result<Font, Error> {
-        let font = match &self.font {
-            Some(path) => Font::from_path(path)?,
-            None => Font::default_font(),
-        };
-        if self.variation.is_empty() {
-            Ok(font)
-        } else {
-            font.with_variations(&self.variation)
-        }
+        load_font(self.font.as_deref(), &self.variation)
     }
 
     /// Builds the scene and the camera that look at it, checking every input.
@@ -172,9 +165,23 @@ impl ViewArgs {
             out.extend(["--tilt".into(), self.tilt.to_string()]);
         }
         for (tag, value) in &self.variation {
-            out.extend(["--variation".into(), format!("{tag}={value}")]);
+            // Unpadded, so the line pastes into a shell; parsing pads it again.
+            out.extend(["--variation".into(), format!("{}={value}", tag.trim_end())]);
         }
         out
+    }
+}
+
+/// `--font` (the embedded default when absent) at the `--variation` instance.
+pub fn load_font(path: Option<&Path>, variation: &[(String, f32)]) -> Result<Font, Error> {
+    let font = match path {
+        Some(path) => Font::from_path(path)?,
+        None => Font::default_font(),
+    };
+    if variation.is_empty() {
+        Ok(font)
+    } else {
+        font.with_variations(variation)
     }
 }
 
@@ -217,13 +224,10 @@ pub fn parse_key_value(s: &str) -> Result<(String, String), String> {
     }
 }
 
-fn parse_variation(s: &str) -> Result<(String, f32), String> {
+/// TAG=VALUE, the tag space-padded to four characters.
+pub fn parse_variation(s: &str) -> Result<(String, f32), String> {
     let (tag, value) = parse_key_value(s)?;
-    if tag.len() != 4 || !tag.is_ascii() {
-        return Err(format!(
-            "axis tag '{tag}' must be 4 ASCII characters (e.g. wght)"
-        ));
-    }
+    let tag = axis_tag(&tag).map_err(|e| e.to_string())?;
     let value = parse_number(&value)?;
     Ok((tag, value as f32))
 }

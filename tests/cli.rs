@@ -304,9 +304,127 @@ fn bad_input_fails_cleanly() {
             "--variation",
             "opsz=14",
         ],
-        "has no variation axis 'opsz' (it has: wght)",
+        "has no variation axis 'opsz' (it has: 'wght')",
+    );
+    fails(
+        "long axis tag",
+        &with(&["--text", "a", "--variation", "wghts=700"]),
+        "1 to 4 ASCII",
+    );
+    fails(
+        "non-ASCII axis tag",
+        &with(&["--text", "a", "--variation", "wé=700"]),
+        "1 to 4 ASCII",
     );
     fails("no text", &base, "required");
+}
+
+/// Runs `info` with no display to open, returning (exit code, stdout, stderr).
+fn info(args: &[&str]) -> (Option<i32>, String, String) {
+    let result = bin()
+        .arg("info")
+        .args(args)
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .output()
+        .expect("the binary runs");
+    (
+        result.status.code(),
+        String::from_utf8_lossy(&result.stdout).into_owned(),
+        String::from_utf8_lossy(&result.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn info_reports_the_outline_table_and_each_glyphs_placement() {
+    // The variable twin of tests/fonts/placement.ttf at SHFT 0.5 (tables in
+    // tools/make_test_fonts.py): A's xMin 100, hmtx lsb 40 and advance 600; gvar moves pp1
+    // by 0.5 × 30 = 15 and pp2 by 0.5 × 80 = 40. pp1.x = 100 − 40 + 15 = 75, shift −75,
+    // advance (60 + 600 + 40) − 75 = 625.
+    let (code, out, err) = info(&[
+        "--font",
+        "tests/fonts/placement-var.ttf",
+        "--variation",
+        "SHFT=0.5",
+        "--text",
+        "AA",
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    for line in [
+        "outline table: 'glyf' (sfntVersion 0x00010000 is not 'OTTO')",
+        "units per em: 1000",
+        "axis 'SHFT': 0..1, default 0",
+        "glyph 1: advance 625, lsb 40, xMin 100, pp1.x 75, shift -75",
+    ] {
+        assert!(
+            out.lines().any(|l| l == line),
+            "no line {line:?} in:\n{out}"
+        );
+    }
+    // Glyph A appears once however often the text uses it.
+    assert_eq!(out.matches("glyph 1:").count(), 1, "{out}");
+    let (code, out, err) = info(&["--font", "tests/fonts/both-outlines.otf", "--glyph-id", "1"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(
+        out.contains("outline table: 'CFF ' (sfntVersion 'OTTO')"),
+        "{out}"
+    );
+    assert!(
+        out.contains("glyph 1: advance 600, lsb 100, shift 0"),
+        "{out}"
+    );
+}
+
+#[test]
+fn short_axis_tags_are_padded_on_the_command_line() {
+    let font = "tests/fonts/short-tags.ttf";
+    for variation in ["M1=0.5", "M1  =0.5", " M1=0.5"] {
+        let (code, out, err) = info(&["--font", font, "--variation", variation]);
+        assert_eq!(code, Some(0), "{variation}: {err}");
+        assert!(out.contains("axis 'M1  ': 0..1, default 0"), "{out}");
+        assert!(out.contains("instance: 'M1  ' = 0.5"), "{variation}: {out}");
+    }
+    let out = scratch("short-tags.png");
+    run_ok(&[
+        "render",
+        "--font",
+        font,
+        "--text",
+        "A",
+        "--size",
+        "20",
+        "--method",
+        "reference",
+        "--variation",
+        "M1=0.5,HV=50",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+}
+
+#[test]
+fn info_fails_cleanly_on_bad_input() {
+    for (args, expect) in [
+        (vec!["--font", "no/such/font.ttf"], "cannot read font file"),
+        (vec!["--glyph-id", "999999"], "out of range"),
+        (vec!["--text", "\u{E000}"], "U+E000"),
+        (
+            vec![
+                "--font",
+                "tests/fonts/short-tags.ttf",
+                "--variation",
+                "M2=0.5",
+            ],
+            "has no variation axis 'M2  ' (it has: 'M1  ', 'HV  ')",
+        ),
+        (vec!["--variation", "MOVE1=0.5"], "1 to 4 ASCII"),
+    ] {
+        let (code, out, err) = info(&args);
+        assert_eq!(code, Some(2), "{args:?}: {err}");
+        assert!(err.contains(expect), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        assert!(out.is_empty(), "{args:?}: {out}");
+    }
 }
 
 #[test]

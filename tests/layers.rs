@@ -18,6 +18,7 @@ const LAYERS: &[(&str, u32)] = &[
     ("camera", 4),
     ("reference", 5),
     ("view", 5),
+    ("info", 6),
     ("gpu", 5),
     ("methods", 6),
     ("measure", 7),

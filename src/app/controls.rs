@@ -102,7 +102,9 @@ impl Explorer {
                     .iter()
                     .find(|(t, _)| *t == axis.tag)
                     .map_or(axis.default, |(_, v)| *v);
-                let slider = egui::Slider::new(&mut value, axis.min..=axis.max).text(&axis.tag);
+                // Shown without its padding; stored padded, as the font names it.
+                let slider =
+                    egui::Slider::new(&mut value, axis.min..=axis.max).text(axis.tag.trim_end());
                 if ui.add(slider).changed() {
                     scene.variations.retain(|(t, _)| *t != axis.tag);
                     scene.variations.push((axis.tag.clone(), value));

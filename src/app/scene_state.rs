@@ -5,7 +5,7 @@
 use std::sync::Arc;
 
 use super::settings::{FontChoice, SceneSettings};
-use crate::font::{Font, SHIPPED_FONTS};
+use crate::font::{Font, SHIPPED_FONTS, axis_tag};
 use crate::scene::Scene;
 
 /// The scene built from [`SceneSettings`], rebuilt only when they change.
@@ -71,7 +71,7 @@ fn build_scene(font: &Font, wanted: &SceneSettings) -> Result<Arc<Scene>, String
     let variations: Vec<(String, f32)> = wanted
         .variations
         .iter()
-        .filter(|(tag, _)| axes.iter().any(|a| &a.tag == tag))
+        .filter(|(tag, _)| axis_tag(tag).is_ok_and(|tag| axes.iter().any(|a| a.tag == tag)))
         .cloned()
         .collect();
     let font = font

@@ -1,0 +1,111 @@
+//! `glyphscope info`: which outline table a font's glyphs come from and where each
+//! requested glyph is placed — the figures behind [`Font::outline`](crate::font::Font::outline) and
+//! [`Font::advance`](crate::font::Font::advance), printed without opening a display.
+
+use std::fmt::Write;
+use std::path::PathBuf;
+
+use clap::Args;
+
+use crate::Error;
+use crate::font::{GlyphId, OutlineTable, describe_sfnt_version};
+use crate::shaping;
+use crate::view::{load_font, parse_variation};
+
+#[derive(Args, Clone, Debug)]
+pub struct InfoArgs {
+    /// Font file (.ttf/.otf); the embedded DejaVu Sans when absent.
+    #[arg(long)]
+    pub font: Option<PathBuf>,
+    /// Also report the glyphs this text shapes to, in order of first use.
+    #[arg(long, conflicts_with = "glyph_id")]
+    pub text: Option<String>,
+    /// Also report this glyph, by its id in the font.
+    #[arg(long)]
+    pub glyph_id: Option<u32>,
+    /// Variable-font axis values, TAG=VALUE[,TAG=VALUE...]; a short tag is space-padded.
+    #[arg(long, value_delimiter = ',', value_parser = parse_variation)]
+    pub variation: Vec<(String, f32)>,
+}
+
+/// `glyphscope info`: prints the report.
+pub fn run(args: &InfoArgs) -> Result<(), Error> {
+    print!("{}", report(args)?);
+    Ok(())
+}
+
+/// The report: the font's outline table and why, units per em, axes (tags quoted so their
+/// padding shows), and per requested glyph its advance, lsb, xMin and the applied shift.
+pub fn report(args: &InfoArgs) -> Result<String, Error> {
+    let font = load_font(args.font.as_deref(), &args.variation)?;
+    let glyphs: Vec<GlyphId> = match (&args.text, args.glyph_id) {
+        (Some(text), _) => {
+            let mut ids = Vec::new();
+            for shaped in shaping::shape(&font, text)? {
+                if !ids.contains(&shaped.glyph) {
+                    ids.push(shaped.glyph);
+                }
+            }
+            ids
+        }
+        (None, Some(id)) => vec![font.check_glyph_id(id)?],
+        (None, None) => Vec::new(),
+    };
+    let mut out = String::new();
+    let table = font.outline_table();
+    let version = describe_sfnt_version(font.sfnt_version());
+    let why = match table {
+        OutlineTable::Glyf => format!("sfntVersion {version} is not 'OTTO'"),
+        OutlineTable::Cff | OutlineTable::Cff2 => format!("sfntVersion {version}"),
+    };
+    let _ = writeln!(out, "font: {}", font.name());
+    let _ = writeln!(out, "outline table: '{}' ({why})", table.tag());
+    let _ = writeln!(out, "units per em: {}", font.units_per_em());
+    let axes = font.axes();
+    if axes.is_empty() {
+        let _ = writeln!(out, "axes: none");
+    }
+    for axis in axes {
+        let _ = writeln!(
+            out,
+            "axis '{}': {}..{}, default {}",
+            axis.tag, axis.min, axis.max, axis.default
+        );
+    }
+    for (tag, value) in font.variations() {
+        let _ = writeln!(out, "instance: '{tag}' = {value}");
+    }
+    for glyph in glyphs {
+        let placed = font.placement(glyph);
+        let _ = write!(
+            out,
+            "glyph {glyph}: advance {}, lsb {}",
+            units(placed.advance),
+            units(placed.lsb)
+        );
+        let _ = match placed.x_min {
+            Some(x_min) => write!(
+                out,
+                ", xMin {}, pp1.x {}, shift {}",
+                units(x_min),
+                units(-placed.shift),
+                units(placed.shift)
+            ),
+            None => write!(out, ", shift 0 (CFF has no phantom points)"),
+        };
+        if placed.metrics_glyph != glyph {
+            let _ = write!(
+                out,
+                " (metrics of glyph {}, flagged USE_MY_METRICS)",
+                placed.metrics_glyph
+            );
+        }
+        out.push('\n');
+    }
+    Ok(out)
+}
+
+/// Font units as text, with no "-0".
+fn units(value: f64) -> String {
+    format!("{}", value + 0.0)
+}
