@@ -47,7 +47,7 @@ pub struct Case {
     pub world_offset: DVec2,
     /// What makes it hard in ways some methods document as their limits.
     pub traits: &'static [Trait],
-    /// Also seen through the sweep's full turn of rotations: for shapes whose trouble
+    /// Also seen through the sweep's full turn of rotations, for shapes whose trouble
     /// depends on which of their edges lies along a ray, at every angle.
     pub full_turn: bool,
 }

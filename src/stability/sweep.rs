@@ -25,26 +25,26 @@ pub struct SweepSize {
 
 impl SweepSize {
     /// 16 sub-pixel offsets (a 4×4 grid of 1/4 px) × rotations of 0°, 1°, 45°, 89.9°;
-    /// for a full turn, every 15° besides.
+    /// for a full turn, every 30° besides.
     pub fn full() -> SweepSize {
         SweepSize {
             offsets: (0..16)
                 .map(|k| DVec2::new(f64::from(k % 4), f64::from(k / 4)) / 4.0)
                 .collect(),
             rotations_deg: vec![0.0, 1.0, 45.0, 89.9],
-            full_turn_deg: every(15.0),
+            full_turn_deg: every(30.0),
         }
     }
 
     /// The CI size: 4 offsets (one per row and column of the grid) × 0° and 45°; for a
-    /// full turn, every 45°.
+    /// full turn, every 90° besides.
     pub fn quick() -> SweepSize {
         SweepSize {
             offsets: [(0.0, 0.0), (0.25, 0.5), (0.5, 0.75), (0.75, 0.25)]
                 .map(DVec2::from)
                 .to_vec(),
             rotations_deg: vec![0.0, 45.0],
-            full_turn_deg: every(45.0),
+            full_turn_deg: every(90.0),
         }
     }
 
