@@ -430,7 +430,12 @@ pub fn all() -> Vec<Case> {
                  cubics end where a ray's horizontal edge starts",
                 Scene::from_outlines(
                     1000.0,
-                    vec![(Outline { contours: path(SUN_SYMBOL) }, DVec2::ZERO)],
+                    vec![(
+                        Outline {
+                            contours: path(SUN_SYMBOL),
+                        },
+                        DVec2::ZERO,
+                    )],
                 ),
                 48.0,
             )
@@ -666,7 +671,12 @@ fn near_tangent_vertices(transpose: bool) -> Vec<Contour> {
                         Segment::Line(upper + bar, upper),
                         Segment::Quad(upper, upper + 0.5 * length * DVec2::new(-sin, cos), end),
                     ];
-                    let corners = [end, DVec2::new(back, end.y), DVec2::new(back, start.y), start];
+                    let corners = [
+                        end,
+                        DVec2::new(back, end.y),
+                        DVec2::new(back, start.y),
+                        start,
+                    ];
                     for k in 1..corners.len() {
                         segments.push(Segment::Line(corners[k - 1], corners[k]));
                     }
@@ -675,7 +685,11 @@ fn near_tangent_vertices(transpose: bool) -> Vec<Contour> {
                     };
                     // Mirroring or transposing alone turns the contour clockwise: turn
                     // it back, as a font winds every contour of a glyph alike.
-                    contours.push(if mirror != transpose { reversed(contour) } else { contour });
+                    contours.push(if mirror != transpose {
+                        reversed(contour)
+                    } else {
+                        contour
+                    });
                     cell += 1;
                 }
             }
