@@ -95,6 +95,8 @@ fn add_crossing(ray: ptr<function, Ray>, x: f32, tangent: vec2<f32>, jx: vec2<f3
         (*ray).average += select(0.0, sign, x > 0.0);
         return;
     }
+    // Within the window only: bands skip the curves wholly behind it, so a farther
+    // crossing would make the image depend on the bands.
     (*ray).other_sight = max((*ray).other_sight, other_sight(x, tangent, pixels_per_unit_across));
     let share = crossing_coverage(x, tangent, jx, jy);
     (*ray).average += sign * share;
