@@ -67,8 +67,8 @@ const MAX_WINDOW_CROSSINGS: u32 = 8u;
 // inside the window as its position `at` (the pixel share on the sample's side of the
 // edge, so a lone crossing covers exactly that much) and its sign; how well it sees
 // an edge at the sample (1 for an edge across the ray through the sample, falling to
-// 0 for edges a pixel away or running along the ray); and how many curves it
-// evaluated.
+// 0 for edges a pixel away or running along the ray); how well the other ray should
+// see one, judging by this ray's crossings; and how many curves it evaluated.
 struct Ray {
     beyond: f32,
     at: array<f32, MAX_WINDOW_CROSSINGS>,
@@ -77,10 +77,12 @@ struct Ray {
     // The winding averaged over the window, for the fallback.
     average: f32,
     sight: f32,
+    other_sight: f32,
     evaluated: u32,
 }
 
-fn add_crossing(ray: ptr<function, Ray>, x: f32, tangent: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>, reach: f32, pixels_per_unit: f32, sign: f32) {
+// `pixels_per_unit_across`: pixels per local unit along the other ray.
+fn add_crossing(ray: ptr<function, Ray>, x: f32, tangent: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>, reach: f32, pixels_per_unit: f32, pixels_per_unit_across: f32, sign: f32) {
     (*ray).sight = max((*ray).sight, sight(x * pixels_per_unit, tangent));
     if abs(x) > reach {
         // Beyond the window: the whole window is on one side of it.
@@ -88,6 +90,9 @@ fn add_crossing(ray: ptr<function, Ray>, x: f32, tangent: vec2<f32>, jx: vec2<f3
         (*ray).average += select(0.0, sign, x > 0.0);
         return;
     }
+    // Within the window only: bands skip the curves wholly behind it, so a farther
+    // crossing would make the image depend on the bands.
+    (*ray).other_sight = max((*ray).other_sight, other_sight(x, tangent, pixels_per_unit_across));
     let share = crossing_coverage(x, tangent, jx, jy);
     (*ray).average += sign * share;
     if (*ray).count < MAX_WINDOW_CROSSINGS {
@@ -184,6 +189,16 @@ fn sight(pixels: f32, tangent: vec2<f32>) -> f32 {
     return saturate(1.0 - abs(pixels)) * across;
 }
 
+// The sight the other ray (along this frame's y, through the sample) would have of a
+// crossing `x` units away along this ray if the edge were the straight line of its
+// tangent: that line meets the other ray |x·t.y / t.x| units from the sample, where
+// the other ray sees it across by |t.x| / |t|. `sight` of that crossing, written
+// without the division, so a tangent along y (t.x = 0) gives 0 rather than 0 / 0.
+fn other_sight(x: f32, tangent: vec2<f32>, pixels_per_unit_across: f32) -> f32 {
+    let pixels_along_times_across = abs(x * tangent.y) * pixels_per_unit_across;
+    return max(abs(tangent.x) - pixels_along_times_across, 0.0) / max(length(tangent), 1e-30);
+}
+
 // Casts one ray from `sample` (local) along `axis` towards `direction`, through the
 // curves of `band` (or of the whole glyph).
 fn cast_ray(sample_local: vec2<f32>, jx_local: vec2<f32>, jy_local: vec2<f32>, band: Band, axis: u32, direction: f32) -> Ray {
@@ -196,6 +211,8 @@ fn cast_ray(sample_local: vec2<f32>, jx_local: vec2<f32>, jy_local: vec2<f32>, b
     let det = jx.x * jy.y - jy.x * jx.y;
     let pixels_per_unit = length(vec2<f32>(jy.y, -jx.y)) / max(abs(det), 1e-30);
     let reach = 1.0 / pixels_per_unit;
+    // Its second column: the same along the frame's y, the other ray's direction.
+    let pixels_per_unit_across = length(vec2<f32>(-jy.x, jx.x)) / max(abs(det), 1e-30);
 
     let start = select(band.by_max, band.by_min, direction < 0.0);
     var ray: Ray;
@@ -239,11 +256,11 @@ fn cast_ray(sample_local: vec2<f32>, jx_local: vec2<f32>, jy_local: vec2<f32>, b
         let t2 = select(p0.y / q, q / a.y, b.y >= 0.0);
         if (root_class & 1u) != 0u {
             let x = (a.x * t1 - 2.0 * b.x) * t1 + p0.x;
-            add_crossing(&ray, x, a * t1 - b, jx, jy, reach, pixels_per_unit, 1.0);
+            add_crossing(&ray, x, a * t1 - b, jx, jy, reach, pixels_per_unit, pixels_per_unit_across, 1.0);
         }
         if (root_class & 2u) != 0u {
             let x = (a.x * t2 - 2.0 * b.x) * t2 + p0.x;
-            add_crossing(&ray, x, a * t2 - b, jx, jy, reach, pixels_per_unit, -1.0);
+            add_crossing(&ray, x, a * t2 - b, jx, jy, reach, pixels_per_unit, pixels_per_unit_across, -1.0);
         }
     }
     return ray;
@@ -299,9 +316,17 @@ fn coverage_at(g: Glyph, sample: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Cov
     // Each ray is exact for the straight edges it crosses near the sample and blind to
     // edges running along it, which are exactly the edges the other ray sees best.
     // So trust a ray by how well it sees an edge, discounted by how well the other ray
-    // sees one it cannot.
-    let x_weight = x_ray.sight * (1.0 - y_ray.sight);
-    let y_weight = y_ray.sight * (1.0 - x_ray.sight);
+    // sees one it cannot. A ray sees an edge at least as well as the other ray's
+    // crossings, taken as the straight lines of their tangents, say it must: where it
+    // meets nothing there, the edge ends or turns away before reaching it, and it is
+    // the other ray's tangent line, run on across the pixel, that misleads. (By its
+    // own crossings alone, a ray that meets nothing would weigh 0, and a crossing the
+    // other ray meets along itself, however faintly seen, would take all the weight.)
+    // For a straight edge the expected sight is the sight itself: nothing changes.
+    let x_sight = max(x_ray.sight, y_ray.other_sight);
+    let y_sight = max(y_ray.sight, x_ray.other_sight);
+    let x_weight = x_sight * (1.0 - y_sight);
+    let y_weight = y_sight * (1.0 - x_sight);
     let total = x_weight + y_weight;
     if total == 0.0 {
         // Neither ray sees an edge better than the other (no edge near, or a corner

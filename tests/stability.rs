@@ -15,7 +15,14 @@ fn every_method_keeps_its_claims_on_every_hard_case() {
     println!("{}", stability::matrix_table(&outcomes));
     assert_eq!(outcomes.len(), cases.len() * variants.len());
     for o in &outcomes {
-        assert_eq!(o.frames, size.cameras(), "{} × {}", o.case, o.variant);
+        let case = cases.iter().find(|c| c.name == o.case).unwrap();
+        assert_eq!(
+            o.frames,
+            size.cameras_for(case),
+            "{} × {}",
+            o.case,
+            o.variant
+        );
         assert!(o.mae_255.is_finite(), "{} × {}", o.case, o.variant);
     }
     let broken = stability::broken_claims(&outcomes);
@@ -54,6 +61,19 @@ fn the_same_cameras_every_run_covering_the_grid() {
     assert_eq!(full.offsets.len(), 16);
     assert_eq!(full.rotations_deg, [0.0, 1.0, 45.0, 89.9]);
     let quick = sweep::SweepSize::quick();
+    // A case seen through a full turn gets every 30° (90° at CI size) besides.
+    let sun = cases::by_name("sun-symbol").unwrap();
+    assert_eq!(
+        full.rotations_for(&sun),
+        [
+            0.0, 1.0, 30.0, 45.0, 60.0, 89.9, 90.0, 120.0, 150.0, 180.0, 210.0, 240.0, 270.0,
+            300.0, 330.0
+        ]
+    );
+    assert_eq!(quick.rotations_for(&sun), [0.0, 45.0, 90.0, 180.0, 270.0]);
+    let square = cases::by_name("vertex-on-centre-row").unwrap();
+    assert_eq!(full.rotations_for(&square), full.rotations_deg);
+    assert_eq!(full.cameras_for(&sun), 16 * 15);
     // One offset in each row and column of the 4×4 grid.
     for axis in [0, 1] {
         let mut seen: Vec<f64> = quick.offsets.iter().map(|o| o[axis]).collect();

@@ -157,6 +157,26 @@ fn hard_cases_at_their_exact_alignment() {
     }
 }
 
+/// Issue 18's pixel: in the sun symbol at 48 px/em, origin (24, 72), pixel (52, 57)
+/// spans font units x 583.3–604.2, y 291.7–312.5 (x = (px − 24) / 0.048, y = (72 − py)
+/// / 0.048): inside the ray's bar (y 284–314, x up to 739) and the ring (its hole ends
+/// at x 563), so it is wholly covered. The y-ray through its centre passes 0.25 units
+/// beside the two vertices where near-vertical cubics meet the bar's edges, and meets
+/// both cubics nearly along itself; the x-ray meets nothing. Weighted by their own
+/// crossings alone, the rays read 0.20 here.
+#[test]
+fn a_ray_meeting_curves_along_itself_beside_a_vertex_does_not_outweigh_one_meeting_nothing() {
+    let gpu = gpu();
+    let sun = cases::by_name("sun-symbol").unwrap().scene;
+    let cam = Camera::new(87, 106, 48.0, DVec2::new(24.0, 72.0));
+    let image = render(&gpu, winding(&[]).as_mut(), &sun, &cam);
+    let covered = image.get(52, 57);
+    assert!(
+        covered > 0.98,
+        "pixel (52, 57) reads {covered}, covered wholly"
+    );
+}
+
 #[test]
 fn far_from_the_origin_nothing_changes() {
     let gpu = gpu();

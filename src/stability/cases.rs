@@ -47,6 +47,9 @@ pub struct Case {
     pub world_offset: DVec2,
     /// What makes it hard in ways some methods document as their limits.
     pub traits: &'static [Trait],
+    /// Also seen through the sweep's full turn of rotations, for shapes whose trouble
+    /// depends on which of their edges lies along a ray, at every angle.
+    pub full_turn: bool,
 }
 
 /// A property of a case that a method's claim may leave out of its scope.
@@ -94,6 +97,7 @@ pub fn all() -> Vec<Case> {
         view: View::Framed,
         world_offset: DVec2::ZERO,
         traits: &[],
+        full_turn: false,
     };
     let overlapping = |case: Case| Case {
         traits: &[Trait::Overlapping],
@@ -117,6 +121,7 @@ pub fn all() -> Vec<Case> {
         view: View::Framed,
         world_offset: DVec2::ZERO,
         traits: &[],
+        full_turn: false,
     };
     let far = |name, what, offset: f64| Case {
         world_offset: DVec2::new(offset, -offset),
@@ -327,6 +332,19 @@ pub fn all() -> Vec<Case> {
                 ],
             }],
         ),
+        // Their layout covers both axes, both sides and both ray directions already:
+        // the sweep's own rotations suffice (a full turn would double its time).
+        synthetic(
+            "near-tangent-vertex-y",
+            "bars and slots along x between the ends of curves 1°–8° off the y axis, \
+             a pixel-centre column just beside the vertices",
+            near_tangent_vertices(false),
+        ),
+        synthetic(
+            "near-tangent-vertex-x",
+            "the same transposed: bars along y between curves near the x axis",
+            near_tangent_vertices(true),
+        ),
         subpixel_detail(real(
             "glyphs-2px",
             "DejaVu Sans 'Hamburg@' at 2 px/em",
@@ -388,8 +406,39 @@ pub fn all() -> Vec<Case> {
             Scene::from_text(&Font::shipped(1), "g§").expect("Latin Modern shapes it"),
             31.0,
         ),
+        Case {
+            full_turn: true,
+            ..real(
+                "sun-symbol",
+                "a sun symbol (a ring with rays, as U+263C) at 48 px/em: near-vertical \
+                 cubics end where a ray's horizontal edge starts",
+                Scene::from_outlines(
+                    1000.0,
+                    vec![(
+                        Outline {
+                            contours: path(SUN_SYMBOL),
+                        },
+                        DVec2::ZERO,
+                    )],
+                ),
+                48.0,
+            )
+        },
     ]
 }
+
+/// The sun symbol of issue 18 (a CFF glyph, 1000 units per em, advance 800), the
+/// outline of a real symbol font's U+263C-like glyph: at 48 px/em with the origin at a
+/// whole pixel, `winding` read 0.20 for 1.0 beside (594, 284), where the cubic
+/// `574,207 588,243 594,284` ends nearly vertical and the line to (739, 284) starts.
+const SUN_SYMBOL: &str = "M 384,-39 L 416,-39 L 416,107 C 470,115 491,126 526,152 \
+    L 635,43 L 659,64 L 549,176 C 574,207 588,243 594,284 L 739,284 L 739,314 L 594,314 \
+    C 592,352 577,389 549,426 L 659,536 L 637,558 L 526,449 C 487,478 459,489 416,493 \
+    L 416,639 L 384,639 L 384,493 C 347,489 311,474 275,449 L 163,558 L 143,534 \
+    L 251,424 C 225,393 210,357 206,315 L 61,315 L 61,285 L 206,285 C 212,244 227,208 \
+    252,175 L 143,65 L 164,43 L 276,151 C 309,127 344,112 384,107 Z \
+    M 400,137 C 312,137 238,211 238,299 C 238,387 310,462 400,462 \
+    C 488,462 563,387 563,299 C 563,211 490,137 400,137 Z";
 
 /// The case called `name`.
 pub fn by_name(name: &str) -> Option<Case> {
@@ -513,4 +562,122 @@ fn tiny_curve_contours() -> Vec<Contour> {
     }
     segments.push(line((2.0, 14.0), (2.0, 2.0)));
     vec![Contour { segments }, polygon(&rect(10.0, 17.0, 10.1, 17.1))]
+}
+
+/// Contours written as an SVG path of absolute `M`, `L`, `C` and `Z` commands, with
+/// `x,y` pairs (font units, y up), each command and point a word. For this file's own
+/// constants: a malformed path is a bug here, hence the panics.
+fn path(d: &str) -> Vec<Contour> {
+    let mut words = d.split_whitespace();
+    let point = |words: &mut std::str::SplitWhitespace| {
+        let (x, y) = words
+            .next()
+            .and_then(|w| w.split_once(','))
+            .expect("a command's points are x,y pairs");
+        DVec2::new(
+            x.parse().expect("x is a number"),
+            y.parse().expect("y is a number"),
+        )
+    };
+    let mut contours = Vec::new();
+    let mut segments = Vec::new();
+    let (mut start, mut pen) = (DVec2::ZERO, DVec2::ZERO);
+    while let Some(command) = words.next() {
+        match command {
+            "M" => {
+                start = point(&mut words);
+                pen = start;
+            }
+            "L" => {
+                let to = point(&mut words);
+                segments.push(Segment::Line(pen, to));
+                pen = to;
+            }
+            "C" => {
+                let (c1, c2, to) = (point(&mut words), point(&mut words), point(&mut words));
+                segments.push(Segment::Cubic(pen, c1, c2, to));
+                pen = to;
+            }
+            "Z" => {
+                if pen != start {
+                    segments.push(Segment::Line(pen, start));
+                }
+                contours.push(Contour {
+                    segments: std::mem::take(&mut segments),
+                });
+            }
+            _ => panic!("path command '{command}' is not M, L, C or Z"),
+        }
+    }
+    contours
+}
+
+/// Angles (degrees) off the axis at which the curves of `near_tangent_vertices` meet
+/// their vertices.
+const NEAR_TANGENT_ANGLES_DEG: [f64; 3] = [1.0, 3.0, 8.0];
+
+/// A grid of contours, each a body whose side is two near-vertical quadratics, `angle`
+/// off the y axis at their ends, with a bar along x between those ends: the curve
+/// arrives at one vertex and a line leaves it along x, as a sun's ray leaves its ring.
+/// Bars sticking out (inner corners) and slots cut in (outer corners), each mirrored
+/// too, at every angle, 1 unit thick with curves 3 long and 1.5 thick with curves 10
+/// long. The vertices sit a small step beside a pixel-centre column (tan(angle) × 0.2,
+/// so the column meets the curves 0.2 units past them) and 0.1 off a pixel-centre row,
+/// so at offset 0 a y-ray passes both on the curves' side. `transpose` swaps x and y.
+fn near_tangent_vertices(transpose: bool) -> Vec<Contour> {
+    let mut contours = Vec::new();
+    let mut cell = 0;
+    for slot in [false, true] {
+        for mirror in [false, true] {
+            for angle_deg in NEAR_TANGENT_ANGLES_DEG {
+                for (thickness, length) in [(1.0, 3.0), (1.5, 10.0)] {
+                    let (sin, cos) = f64::to_radians(angle_deg).sin_cos();
+                    let lower = DVec2::new(sin / cos * 0.2, 0.1);
+                    let upper = lower + DVec2::new(0.0, thickness);
+                    let bar = DVec2::new(if slot { -2.0 } else { 3.0 }, 0.0);
+                    let arrive = DVec2::new(sin, cos);
+                    let start = lower + DVec2::new(-0.6 * length, -length);
+                    let end = upper + DVec2::new(-0.6 * length, length);
+                    let back = start.x - 3.0;
+                    // Cells 14 × 24 units, six a row; the anchor is a pixel centre.
+                    let anchor = DVec2::new(
+                        f64::from(cell % 6) * 14.0 + if mirror { 4.5 } else { 9.5 },
+                        f64::from(cell / 6) * 24.0 + 11.5,
+                    );
+                    let place = |p: DVec2| {
+                        let p = anchor + if mirror { DVec2::new(-p.x, p.y) } else { p };
+                        if transpose { DVec2::new(p.y, p.x) } else { p }
+                    };
+                    let mut segments = vec![
+                        Segment::Quad(start, lower - 0.5 * length * arrive, lower),
+                        Segment::Line(lower, lower + bar),
+                        Segment::Line(lower + bar, upper + bar),
+                        Segment::Line(upper + bar, upper),
+                        Segment::Quad(upper, upper + 0.5 * length * DVec2::new(-sin, cos), end),
+                    ];
+                    let corners = [
+                        end,
+                        DVec2::new(back, end.y),
+                        DVec2::new(back, start.y),
+                        start,
+                    ];
+                    for k in 1..corners.len() {
+                        segments.push(Segment::Line(corners[k - 1], corners[k]));
+                    }
+                    let contour = Contour {
+                        segments: segments.iter().map(|s| s.map(place)).collect(),
+                    };
+                    // Mirroring or transposing alone turns the contour clockwise: turn
+                    // it back, as a font winds every contour of a glyph alike.
+                    contours.push(if mirror != transpose {
+                        reversed(contour)
+                    } else {
+                        contour
+                    });
+                    cell += 1;
+                }
+            }
+        }
+    }
+    contours
 }

@@ -19,32 +19,61 @@ use crate::reference;
 pub struct SweepSize {
     pub offsets: Vec<DVec2>,
     pub rotations_deg: Vec<f64>,
+    /// Rotations added for the cases seen through a full turn (`Case::full_turn`).
+    pub full_turn_deg: Vec<f64>,
 }
 
 impl SweepSize {
-    /// 16 sub-pixel offsets (a 4×4 grid of 1/4 px) × rotations of 0°, 1°, 45°, 89.9°.
+    /// 16 sub-pixel offsets (a 4×4 grid of 1/4 px) × rotations of 0°, 1°, 45°, 89.9°;
+    /// for a full turn, every 30° besides.
     pub fn full() -> SweepSize {
         SweepSize {
             offsets: (0..16)
                 .map(|k| DVec2::new(f64::from(k % 4), f64::from(k / 4)) / 4.0)
                 .collect(),
             rotations_deg: vec![0.0, 1.0, 45.0, 89.9],
+            full_turn_deg: every(30.0),
         }
     }
 
-    /// The CI size: 4 offsets (one per row and column of the grid) × 0° and 45°.
+    /// The CI size: 4 offsets (one per row and column of the grid) × 0° and 45°; for a
+    /// full turn, every 90° besides.
     pub fn quick() -> SweepSize {
         SweepSize {
             offsets: [(0.0, 0.0), (0.25, 0.5), (0.5, 0.75), (0.75, 0.25)]
                 .map(DVec2::from)
                 .to_vec(),
             rotations_deg: vec![0.0, 45.0],
+            full_turn_deg: every(90.0),
         }
     }
 
+    /// The cameras of a case not seen through a full turn.
     pub fn cameras(&self) -> usize {
         self.offsets.len() * self.rotations_deg.len()
     }
+
+    /// The rotations `case` is seen at: the sweep's, and for a full turn its full
+    /// turn's too, each once, in increasing order.
+    pub fn rotations_for(&self, case: &Case) -> Vec<f64> {
+        let mut rotations = self.rotations_deg.clone();
+        if case.full_turn {
+            rotations.extend(&self.full_turn_deg);
+            rotations.sort_by(f64::total_cmp);
+            rotations.dedup();
+        }
+        rotations
+    }
+
+    pub fn cameras_for(&self, case: &Case) -> usize {
+        self.offsets.len() * self.rotations_for(case).len()
+    }
+}
+
+/// Rotations from 0° up to a full turn (not included) in steps of `step_deg`.
+fn every(step_deg: f64) -> Vec<f64> {
+    let steps = (360.0 / step_deg).round() as u32;
+    (0..steps).map(|k| f64::from(k) * step_deg).collect()
 }
 
 /// Where a (case, variant) was worst.
@@ -126,7 +155,7 @@ pub fn run(
                 (method, outcome)
             })
             .collect();
-        for &rotation_deg in &size.rotations_deg {
+        for rotation_deg in size.rotations_for(case) {
             for &subpixel in &size.offsets {
                 let camera = case.camera(rotation_deg, subpixel)?;
                 let reference = reference::rasterize(&case.scene, &camera)?;

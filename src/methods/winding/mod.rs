@@ -8,8 +8,9 @@
 //! - Anti-aliasing: a crossing within one pixel along the ray adds the exact box-filter
 //!   coverage of the curve's tangent line there, with the pixel footprint taken from
 //!   the local coordinates' screen derivatives (rotation, skew, zoom and perspective
-//!   included). Two rays (x and y) are blended by how near each one's nearest crossing
-//!   is, since a ray is blind to edges running along it.
+//!   included). Two rays (x and y) are blended by how well each sees an edge (near, and
+//!   across it), since a ray is blind to edges running along it; a ray sees at least as
+//!   well as the other ray's crossings, taken as straight lines, say it must.
 //! - Bands let a pixel visit only the curves at its height, cast towards the nearer
 //!   side of the glyph, and stop at the first curve wholly behind it.
 //! - Each instance's quad grows by exactly the pixel footprint (`dilated_corner`).
