@@ -232,8 +232,10 @@ pub fn run_stability(args: &StabilityArgs) -> Result<bool, Error> {
         SweepSize::full()
     };
     let gpu = GpuContext::new()?;
+    let frames: usize = cases.iter().map(|c| size.cameras_for(c)).sum();
     eprintln!(
-        "{} cases × {} methods × {} cameras on {}",
+        "{} cases × {} methods, {frames} frames each (cameras per case: {}, a full turn \
+         more) on {}",
         cases.len(),
         variants.len(),
         size.cameras(),

@@ -254,22 +254,31 @@ pub fn count_curves(
         gpu.queue.submit([encoder.finish()]);
         gpu.wait_idle()
     })?;
+    let texels = target.read_texels(gpu)?;
+    Ok(tally(
+        texels
+            .iter()
+            .filter(|t| t[3] > 0.0)
+            .map(|t| f64::from(t[0])),
+    ))
+}
+
+/// Mean and most of the curves counted at each covered pixel.
+pub fn tally(counts: impl Iterator<Item = f64>) -> CurveCost {
     let (mut sum, mut covered, mut max) = (0.0, 0u64, 0u32);
-    for texel in target.read_texels(gpu)? {
-        if texel[3] > 0.0 {
-            sum += f64::from(texel[0]);
-            covered += 1;
-            max = max.max(texel[0].round() as u32);
-        }
+    for n in counts {
+        sum += n;
+        covered += 1;
+        max = max.max(n.round() as u32);
     }
-    Ok(CurveCost {
+    CurveCost {
         mean: if covered > 0 {
             sum / covered as f64
         } else {
             0.0
         },
         max,
-    })
+    }
 }
 
 /// What [`count_curves`] tallied: mean and most curves per covered pixel.

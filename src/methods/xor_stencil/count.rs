@@ -7,7 +7,7 @@ use super::passes::draw_runs;
 use super::pipelines::{Builder, Pipelines};
 use super::prepared::Prepared;
 use crate::Error;
-use crate::gpu::kit::ColorOut;
+use crate::gpu::kit::{self, ColorOut};
 use crate::gpu::msaa::Attachments;
 use crate::gpu::{CoverageTarget, GpuContext};
 use crate::methods::CurveCost;
@@ -76,21 +76,11 @@ pub(super) fn curve_cost(
     })?;
     // The resolve averaged the samples' counts.
     let counts = target.read_texels(gpu)?;
-    let (mut total, mut covered, mut max) = (0.0, 0u64, 0u32);
-    for (texel, &c) in counts.iter().zip(coverage) {
-        if c > 0.0 {
-            let n = f64::from(texel[3]) * f64::from(samples);
-            total += n;
-            covered += 1;
-            max = max.max(n.round() as u32);
-        }
-    }
-    Ok(Some(CurveCost {
-        mean: if covered > 0 {
-            total / covered as f64
-        } else {
-            0.0
-        },
-        max,
-    }))
+    Ok(Some(kit::tally(
+        counts
+            .iter()
+            .zip(coverage)
+            .filter(|(_, c)| **c > 0.0)
+            .map(|(texel, _)| f64::from(texel[3]) * f64::from(samples)),
+    )))
 }
