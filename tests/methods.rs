@@ -245,7 +245,7 @@ fn every_overlay_and_parameter_of_every_method_works() {
 /// A name the registry does not hold is refused with the names it does, in one line.
 #[test]
 fn an_unknown_method_names_the_known_ones() {
-    let error = registry::find("solid-box").unwrap_err().to_string();
+    let error = registry::find("no-such-method").unwrap_err().to_string();
     assert!(!error.contains('\n'));
     for m in registry::METHODS {
         assert!(error.contains(m.name), "{error}");
