@@ -155,7 +155,9 @@ fn every_method_draws_every_scene_within_its_claims() {
                 .unwrap()
                 .image;
         for m in registry::METHODS.iter().filter(|m| !m.is_reference()) {
-            let mut settings: Vec<(Vec<(String, String)>, Option<f64>, &str)> = m
+            // (params, the bound claimed on this scene, label)
+            type Setting<'a> = (Vec<(String, String)>, Option<f64>, &'a str);
+            let mut settings: Vec<Setting> = m
                 .claims
                 .iter()
                 .map(|c| {

@@ -22,6 +22,9 @@ pub enum Role {
     Diagnostic,
 }
 
+/// Makes a GPU method from its `--param`s.
+pub type Constructor = fn(&Params) -> Result<Box<dyn Method>, Error>;
+
 /// One method, as everything that lists methods sees it.
 #[derive(Debug)]
 pub struct MethodInfo {
@@ -40,7 +43,7 @@ pub struct MethodInfo {
     /// What the stability sweep checks of it: each setting with its claim.
     pub claims: &'static [ClaimedSetting],
     /// Builds it from `--param`s (None for the reference, which is not a GPU method).
-    pub create: Option<fn(&Params) -> Result<Box<dyn Method>, Error>>,
+    pub create: Option<Constructor>,
 }
 
 impl MethodInfo {
