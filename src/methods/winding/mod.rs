@@ -14,6 +14,7 @@
 //!   side of the glyph, and stop at the first curve wholly behind it.
 //! - Each instance's quad grows by exactly the pixel footprint (`dilated_corner`).
 
+pub mod area;
 mod bands;
 
 pub use bands::{BandCount, GlyphData, MAX_BANDS};
