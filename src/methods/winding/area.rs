@@ -194,28 +194,33 @@ pub fn curve_term(c: Bezier, slope: f64) -> f64 {
     match zone(&c, slope) {
         Zone::Outside => 0.0,
         Zone::Right => area_below(c[2].y, slope) - area_below(c[0].y, slope),
-        Zone::Across => monotone_pieces(c)
-            .into_iter()
-            .flatten()
-            .map(|piece| piece_term(piece, slope))
-            .sum(),
+        Zone::Across => across_term(c, slope),
     }
 }
 
-/// The curve split where u or v turns: up to three pieces, each monotone in both.
-fn monotone_pieces(c: Bezier) -> [Option<Bezier>; 3] {
-    let turn = |k: usize| {
-        let (a, b, d) = (c[0][k], c[1][k], c[2][k]);
-        let denominator = a - 2.0 * b + d;
-        let t = if denominator == 0.0 {
-            1.0
-        } else {
-            (a - b) / denominator
-        };
-        if t > 0.0 && t < 1.0 { t } else { 1.0 }
-    };
-    let (t1, t2) = (turn(0), turn(1));
-    let (t1, t2) = (t1.min(t2), t1.max(t2));
+/// ∫ G dv along a curve across P, split where u or v turns.
+fn across_term(c: Bezier, slope: f64) -> f64 {
+    monotone_pieces(c)
+        .into_iter()
+        .flatten()
+        .map(|piece| piece_term(piece, slope))
+        .sum()
+}
+
+/// Where a quadratic (control values) turns, or 1 when it does not inside (0, 1).
+fn turn(c: [f64; 3]) -> f64 {
+    let denominator = c[0] - 2.0 * c[1] + c[2];
+    if denominator == 0.0 {
+        return 1.0;
+    }
+    let t = (c[0] - c[1]) / denominator;
+    if t > 0.0 && t < 1.0 { t } else { 1.0 }
+}
+
+/// The curve split where x or y turns: up to three pieces, each monotone in both.
+pub(super) fn monotone_pieces(c: Bezier) -> [Option<Bezier>; 3] {
+    let (tx, ty) = (turn(c.map(|p| p.x)), turn(c.map(|p| p.y)));
+    let (t1, t2) = (tx.min(ty), tx.max(ty));
     let piece = |a: f64, b: f64| (b > a).then(|| subcurve(c, a, b));
     [piece(0.0, t1), piece(t1, t2), piece(t2, 1.0)]
 }
@@ -244,68 +249,68 @@ fn piece_term(c: Bezier, slope: f64) -> f64 {
     term
 }
 
-/// ∫ G dv along a piece monotone in u and v lying within P's columns (|u| ≤ ½).
+/// ∫ G dv along a piece monotone in u and v lying within P's columns (|u| ≤ ½): with
+/// α = u + ½, α between heights v0 and v2, plus ramp(α − (v − v2)/slope) across the top
+/// side, less ramp(α − (v − v0)/slope) across the bottom one (the chord's end there
+/// moves a pixel's width over `slope` of height).
 fn inside_term(c: Bezier, slope: f64) -> f64 {
     let [v0, v1, v2, v3] = PixelFrame { slope, ..IDENTITY }.levels();
-    let alpha = |p: DVec2| p.x + 0.5;
-    let mut term = match slab(c, v0, v2) {
-        Some(s) => integral_x_dy(s.map(alpha), s.map(|p| p.y)),
-        None => 0.0,
-    };
-    if slope > 0.0 {
-        // Across a slanted side, the chord's end moves by one pixel width over `slope`
-        // of height: ℓ = α − (v − v_side)/slope is how far right of it a point lies.
-        let side = |from: f64, to: f64| {
-            slab(c, from, to).map_or(0.0, |s| {
-                ramp_integral(s.map(|p| alpha(p) - (p.y - from) / slope), s.map(|p| p.y))
-            })
-        };
-        term += side(v2, v3) - side(v0, v1);
+    // (heights, whether the side slants, sign)
+    let slabs = [
+        (v0, v2, false, 1.0),
+        (v2, v3, true, 1.0),
+        (v0, v1, true, -1.0),
+    ];
+    let v = c.map(|p| p.y);
+    let mut term = 0.0;
+    for (low, high, slanted, sign) in slabs {
+        if slanted && slope == 0.0 {
+            continue;
+        }
+        let (a, b) = (t_at(v, low), t_at(v, high));
+        if a.max(b) <= a.min(b) {
+            continue;
+        }
+        let part = subcurve(c, a.min(b), a.max(b));
+        let ramp = part.map(|p| {
+            let alpha = p.x + 0.5;
+            let l = if slanted {
+                alpha - (p.y - low) / slope
+            } else {
+                alpha
+            };
+            DVec2::new(l, p.y)
+        });
+        term += sign * ramp_integral(ramp);
     }
     term
 }
 
-/// The part of a piece monotone in v with v in [lo, hi], if any.
-fn slab(c: Bezier, lo: f64, hi: f64) -> Option<Bezier> {
-    let v = c.map(|p| p.y);
-    let (a, b) = (t_at(v, lo), t_at(v, hi));
-    let (from, to) = (a.min(b), a.max(b));
-    (to > from).then(|| subcurve(c, from, to))
-}
-
-/// ∫ ramp(ℓ(t)) y′(t) dt over a quadratic piece, ℓ and y given by control values.
-fn ramp_integral(l: [f64; 3], y: [f64; 3]) -> f64 {
-    let c: Bezier = std::array::from_fn(|i| DVec2::new(l[i], y[i]));
-    // Split where ℓ turns, so each part crosses ℓ = 0 once at most.
-    let denominator = l[0] - 2.0 * l[1] + l[2];
-    let turn = if denominator == 0.0 {
-        1.0
-    } else {
-        (l[0] - l[1]) / denominator
-    };
-    let turn = if turn > 0.0 && turn < 1.0 { turn } else { 1.0 };
-    let mut total = 0.0;
-    for (a, b) in [(0.0, turn), (turn, 1.0)] {
-        if b <= a {
-            continue;
-        }
-        let part = subcurve(c, a, b);
-        let l = part.map(|p| p.x);
-        let (from, to) = if l[0] >= 0.0 && l[2] >= 0.0 {
-            (0.0, 1.0)
-        } else if l[0] <= 0.0 && l[2] <= 0.0 {
-            continue;
-        } else if l[2] > l[0] {
-            (t_at(l, 0.0), 1.0)
-        } else {
-            (0.0, t_at(l, 0.0))
-        };
-        if to > from {
-            let positive = subcurve(part, from, to);
-            total += integral_x_dy(positive.map(|p| p.x), positive.map(|p| p.y));
-        }
-    }
-    total
+/// ∫ ramp(ℓ(t)) y′(t) dt over a quadratic piece (ℓ its x, y its y), split where ℓ
+/// turns so that each part crosses ℓ = 0 once at most.
+fn ramp_integral(c: Bezier) -> f64 {
+    let t = turn(c.map(|p| p.x));
+    [(0.0, t), (t, 1.0)]
+        .into_iter()
+        .filter(|(a, b)| b > a)
+        .map(|(a, b)| {
+            let part = subcurve(c, a, b);
+            let l = part.map(|p| p.x);
+            let (mut low, mut high) = (0.0, 1.0);
+            if l[0] < 0.0 || l[2] < 0.0 {
+                if l[2] > l[0] {
+                    low = t_at(l, 0.0);
+                } else {
+                    high = t_at(l, 0.0);
+                }
+            }
+            if high <= low || (l[0] <= 0.0 && l[2] <= 0.0) {
+                return 0.0;
+            }
+            let positive = subcurve(part, low, high);
+            integral_x_dy(positive.map(|p| p.x), positive.map(|p| p.y))
+        })
+        .sum()
 }
 
 /// ∫₀¹ x(t) y′(t) dt for a quadratic Bézier given by its control values: exact (the
@@ -317,29 +322,29 @@ pub fn integral_x_dy(x: [f64; 3], y: [f64; 3]) -> f64 {
 }
 
 /// The parameter in [0, 1] where a quadratic monotone on [0, 1] (control values `c`)
-/// takes the value `target`: 0 or 1 when it stays on one side. The stable form of the
+/// takes `value`: 0 or 1 when it stays on one side. The stable form of the
 /// quadratic formula, which stays finite as the quadratic degenerates to a line.
-pub fn t_at(c: [f64; 3], target: f64) -> f64 {
+pub fn t_at(c: [f64; 3], value: f64) -> f64 {
     let increasing = c[2] >= c[0];
     let (low, high) = if increasing {
         (c[0], c[2])
     } else {
         (c[2], c[0])
     };
-    if target <= low {
+    if value <= low {
         return if increasing { 0.0 } else { 1.0 };
     }
-    if target >= high {
+    if value >= high {
         return if increasing { 1.0 } else { 0.0 };
     }
     let a = c[0] - 2.0 * c[1] + c[2];
     let b = 2.0 * (c[1] - c[0]);
-    let k = c[0] - target;
+    let k = c[0] - value;
     let root = (b * b - 4.0 * a * k).max(0.0).sqrt();
     let denominator = b + if increasing { root } else { -root };
     if denominator == 0.0 {
         // Only when rounding has flattened the piece: its chord's answer.
-        return ((target - c[0]) / (c[2] - c[0])).clamp(0.0, 1.0);
+        return ((value - c[0]) / (c[2] - c[0])).clamp(0.0, 1.0);
     }
     (-2.0 * k / denominator).clamp(0.0, 1.0)
 }

@@ -1,13 +1,20 @@
-//! CPU preparation for `winding`: each distinct glyph's quadratic curves, and its
-//! horizontal and vertical bands, laid out as the shader reads them.
+//! CPU preparation for `winding`: each distinct glyph's quadratic curves, and its bands,
+//! laid out as the shader reads them.
 //!
 //! A band lists every curve whose control-point bounds overlap it across the ray, so a
 //! ray cast inside the band meets no other curve. Each band keeps its curves twice:
 //! by descending max (rays cast towards +) and by ascending min (rays cast towards −);
 //! a ray then stops at the first curve lying wholly behind it.
+//!
+//! `aa=area` needs every curve at the height of a whole pixel, not of one ray, so its
+//! bands ([`Layout::Area`]) overlap: each reaches half a band beyond its neighbours'
+//! boundaries, and a pixel up to a band tall lies wholly inside the band holding its
+//! centre. Pixels taller than that take a coarser level: the same at twice the height,
+//! four times, … up to one band for the glyph.
 
 use glam::DVec2;
 
+use super::overlaps::overlap_flags;
 use crate::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Segment};
 use crate::scene::Scene;
 
@@ -19,7 +26,10 @@ pub struct GpuCurve {
     /// p2, then max x and max y of the control points.
     pub p2_max: [f32; 4],
     pub min: [f32; 2],
-    pub _pad: [f32; 2],
+    /// 1 where the curve may separate other winding levels than 0 and the fill
+    /// ([`overlap_flags`]), else 0.
+    pub overlaps: f32,
+    pub _pad: f32,
 }
 
 /// `Glyph` in `winding.wgsl`.
@@ -54,13 +64,24 @@ pub enum BandCount {
 /// Most bands in one direction: past this, bands cost memory and save nothing.
 pub const MAX_BANDS: u32 = 64;
 
+/// Which bands each glyph gets, in the order `winding.wgsl` finds them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Layout {
+    /// For rays: its horizontal bands, its vertical bands, then one band listing all its
+    /// curves (brute force, and the class overlay).
+    Rays,
+    /// For `aa=area`: its horizontal bands, each reaching half a band beyond its
+    /// boundaries; the band of all its curves; then the coarser levels, each with bands
+    /// twice as tall (and as far apart) as the last, down to a single band.
+    Area,
+}
+
 /// Everything the shader reads about the distinct glyphs, built once per scene.
 #[derive(Default, Debug)]
 pub struct GlyphData {
     pub curves: Vec<GpuCurve>,
     pub glyphs: Vec<GpuGlyph>,
-    /// Per glyph: its horizontal bands, its vertical bands, then one band listing all
-    /// its curves (brute force, and the class overlay).
+    /// Per glyph, as its [`Layout`] orders them.
     pub bands: Vec<GpuBand>,
     pub band_curves: Vec<u32>,
 }
@@ -85,33 +106,36 @@ impl Quad {
     }
 }
 
-/// The quadratics of an outline (already free of cubics): lines become quadratics with
-/// their midpoint as control point, exactly representable; zero-length pieces, which
-/// cannot change any winding number, are dropped.
-fn quads(outline: &Outline) -> Vec<Quad> {
+/// The quadratics of an outline (already free of cubics), contour by contour: lines
+/// become quadratics with their midpoint as control point, exactly representable;
+/// zero-length pieces, which cannot change any winding number, are dropped.
+fn contours(outline: &Outline) -> Vec<Vec<Quad>> {
     outline
-        .segments()
-        .filter_map(|s| {
-            let p = match *s {
-                Segment::Line(a, b) => [a, (a + b) * 0.5, b],
-                Segment::Quad(a, b, c) => [a, b, c],
-                Segment::Cubic(..) => unreachable!("outlines are converted to quadratics first"),
-            };
-            // Round once, here, so that bounds and bands agree with what the GPU sees.
-            let p = p.map(|v| v.as_vec2().as_dvec2());
-            (p[0] != p[1] || p[1] != p[2]).then(|| Quad {
-                p,
-                min: p[0].min(p[1]).min(p[2]),
-                max: p[0].max(p[1]).max(p[2]),
-            })
-        })
+        .contours
+        .iter()
+        .map(|contour| contour.segments.iter().filter_map(quad).collect())
         .collect()
+}
+
+fn quad(segment: &Segment) -> Option<Quad> {
+    let p = match *segment {
+        Segment::Line(a, b) => [a, (a + b) * 0.5, b],
+        Segment::Quad(a, b, c) => [a, b, c],
+        Segment::Cubic(..) => unreachable!("outlines are converted to quadratics first"),
+    };
+    // Round once, here, so that bounds and bands agree with what the GPU sees.
+    let p = p.map(|v| v.as_vec2().as_dvec2());
+    (p[0] != p[1] || p[1] != p[2]).then(|| Quad {
+        p,
+        min: p[0].min(p[1]).min(p[2]),
+        max: p[0].max(p[1]).max(p[2]),
+    })
 }
 
 impl GlyphData {
     /// What `winding` uploads for `scene`: every distinct glyph, its cubics converted to
-    /// quadratics within the project's tolerance.
-    pub fn of_scene(scene: &Scene, band_count: BandCount) -> GlyphData {
+    /// quadratics within the project's tolerance, with bands in `layout`.
+    pub fn of_scene(scene: &Scene, band_count: BandCount, layout: Layout) -> GlyphData {
         let tolerance = DEFAULT_QUAD_TOLERANCE_EM * scene.units_per_em;
         let mut data = GlyphData::default();
         for glyph in &scene.glyphs {
@@ -119,6 +143,7 @@ impl GlyphData {
                 &glyph.outline.to_quadratics(tolerance),
                 scene.units_per_em,
                 band_count,
+                layout,
             );
         }
         data
@@ -126,25 +151,45 @@ impl GlyphData {
 
     /// Appends one glyph (an outline of lines and quadratics, in a font of
     /// `units_per_em`) and returns its index.
-    pub fn push(&mut self, outline: &Outline, units_per_em: f64, band_count: BandCount) -> u32 {
-        let quads = quads(outline);
+    pub fn push(
+        &mut self,
+        outline: &Outline,
+        units_per_em: f64,
+        band_count: BandCount,
+        layout: Layout,
+    ) -> u32 {
+        let contours = contours(outline);
+        // Only `aa=area` reads the marks (rays never integrate a pixel as a whole).
+        let overlaps: Vec<bool> = match layout {
+            Layout::Rays => vec![false; contours.iter().map(Vec::len).sum()],
+            Layout::Area => {
+                let beziers: Vec<Vec<[DVec2; 3]>> = contours
+                    .iter()
+                    .map(|c| c.iter().map(|q| q.p).collect())
+                    .collect();
+                overlap_flags(&beziers, units_per_em).concat()
+            }
+        };
+        let quads = contours.concat();
         let first_curve = self.curves.len() as u32;
-        self.curves.extend(quads.iter().map(|q| GpuCurve {
-            p0p1: [
-                q.p[0].x as f32,
-                q.p[0].y as f32,
-                q.p[1].x as f32,
-                q.p[1].y as f32,
-            ],
-            p2_max: [
-                q.p[2].x as f32,
-                q.p[2].y as f32,
-                q.max.x as f32,
-                q.max.y as f32,
-            ],
-            min: [q.min.x as f32, q.min.y as f32],
-            _pad: [0.0; 2],
-        }));
+        self.curves
+            .extend(quads.iter().zip(&overlaps).map(|(q, &overlaps)| GpuCurve {
+                p0p1: [
+                    q.p[0].x as f32,
+                    q.p[0].y as f32,
+                    q.p[1].x as f32,
+                    q.p[1].y as f32,
+                ],
+                p2_max: [
+                    q.p[2].x as f32,
+                    q.p[2].y as f32,
+                    q.max.x as f32,
+                    q.max.y as f32,
+                ],
+                min: [q.min.x as f32, q.min.y as f32],
+                overlaps: f32::from(u8::from(overlaps)),
+                _pad: 0.0,
+            }));
         let min = quads
             .iter()
             .fold(DVec2::splat(f64::INFINITY), |m, q| m.min(q.min));
@@ -158,11 +203,30 @@ impl GlyphData {
         };
 
         let first_band = self.bands.len() as u32;
-        // Horizontal bands split y (rays along x, axis 0); vertical ones split x.
-        let count_h = self.push_bands(&quads, first_curve, 1, (min.y, max.y), band_count);
-        let count_v = self.push_bands(&quads, first_curve, 0, (min.x, max.x), band_count);
         let all: Vec<usize> = (0..quads.len()).collect();
-        self.push_band(&quads, first_curve, &all, 0);
+        // Horizontal bands split y (rays along x, axis 0); vertical ones split x.
+        let count_h = resolve(band_count, &quads, 1, (min.y, max.y));
+        let count_v = match layout {
+            Layout::Rays => {
+                let count_v = resolve(band_count, &quads, 0, (min.x, max.x));
+                self.push_bands(&quads, first_curve, 1, (min.y, max.y), count_h, 0.0);
+                self.push_bands(&quads, first_curve, 0, (min.x, max.x), count_v, 0.0);
+                self.push_band(&quads, first_curve, &all, 0);
+                count_v
+            }
+            Layout::Area => {
+                self.push_bands(&quads, first_curve, 1, (min.y, max.y), count_h, AREA_REACH);
+                self.push_band(&quads, first_curve, &all, 0);
+                let (mut height, mut count) = ((max.y - min.y) / f64::from(count_h), count_h);
+                while count > 1 {
+                    height *= 2.0;
+                    count = count.div_ceil(2);
+                    let range = (min.y, min.y + height * f64::from(count));
+                    self.push_bands(&quads, first_curve, 1, range, count, AREA_REACH);
+                }
+                0
+            }
+        };
         self.glyphs.push(GpuGlyph {
             bounds: [min.x as f32, min.y as f32, max.x as f32, max.y as f32],
             band_count_h: count_h,
@@ -173,24 +237,21 @@ impl GlyphData {
         self.glyphs.len() as u32 - 1
     }
 
-    /// Pushes the bands splitting `range` of coordinate `across`; returns how many.
+    /// Pushes `count` bands splitting `range` of coordinate `across`, each reaching
+    /// `reach` of a band beyond its boundaries.
     fn push_bands(
         &mut self,
         quads: &[Quad],
         first_curve: u32,
         across: usize,
         range: (f64, f64),
-        band_count: BandCount,
-    ) -> u32 {
-        let count = match band_count {
-            BandCount::Fixed(n) => n,
-            BandCount::Auto => auto_band_count(quads, across, range),
-        };
+        count: u32,
+        reach: f64,
+    ) {
         let along = 1 - across;
-        for members in band_members(quads, across, range, count) {
+        for members in band_members(quads, across, range, count, reach) {
             self.push_band(quads, first_curve, &members, along);
         }
-        count
     }
 
     fn push_band(&mut self, quads: &[Quad], first_curve: u32, members: &[usize], along: usize) {
@@ -220,13 +281,31 @@ impl GlyphData {
     }
 }
 
-/// The curves of each of `count` equal bands across `range`. Membership is by closed
-/// intervals widened by 1/256 of a band, so a sample the shader rounds into a
-/// neighbouring band still finds every curve at its height: a superset is harmless,
-/// a missing curve is not.
-fn band_members(quads: &[Quad], across: usize, range: (f64, f64), count: u32) -> Vec<Vec<usize>> {
+/// How far `aa=area`'s bands reach beyond their boundaries, in bands: a pixel up to a
+/// band tall whose centre is in a band lies wholly within its reach.
+const AREA_REACH: f64 = 0.5;
+
+/// The band count `band_count` asks for across `range` of coordinate `across`.
+fn resolve(band_count: BandCount, quads: &[Quad], across: usize, range: (f64, f64)) -> u32 {
+    match band_count {
+        BandCount::Fixed(n) => n,
+        BandCount::Auto => auto_band_count(quads, across, range),
+    }
+}
+
+/// The curves of each of `count` equal bands across `range`, each reaching `reach` of a
+/// band beyond its boundaries. Membership is by closed intervals widened by a further
+/// 1/256 of a band, so a sample the shader rounds into a neighbouring band still finds
+/// every curve at its height: a superset is harmless, a missing curve is not.
+fn band_members(
+    quads: &[Quad],
+    across: usize,
+    range: (f64, f64),
+    count: u32,
+    reach: f64,
+) -> Vec<Vec<usize>> {
     let height = (range.1 - range.0) / f64::from(count);
-    let slack = height / 256.0;
+    let slack = height * (reach + 1.0 / 256.0);
     (0..count)
         .map(|k| {
             let lo = range.0 + height * f64::from(k) - slack;
@@ -245,7 +324,7 @@ fn band_members(quads: &[Quad], across: usize, range: (f64, f64), count: u32) ->
 /// average, up to [`MAX_BANDS`].
 fn auto_band_count(quads: &[Quad], across: usize, range: (f64, f64)) -> u32 {
     let mean = |count: u32| {
-        let members = band_members(quads, across, range, count);
+        let members = band_members(quads, across, range, count, 0.0);
         members.iter().map(Vec::len).sum::<usize>() as f64 / f64::from(count)
     };
     let mut count = 1;
@@ -279,7 +358,7 @@ mod tests {
         let font = Font::default_font();
         for c in "gS@&mW".chars() {
             let mut data = GlyphData::default();
-            data.push(&glyph(&font, c), 2048.0, BandCount::Fixed(7));
+            data.push(&glyph(&font, c), 2048.0, BandCount::Fixed(7), Layout::Rays);
             let g = data.glyphs[0];
             let (lo, hi) = (g.bounds[1], g.bounds[3]);
             for k in 0..7 {
@@ -303,7 +382,7 @@ mod tests {
     fn both_orderings_are_sorted_and_hold_the_same_curves() {
         let font = Font::shipped(1);
         let mut data = GlyphData::default();
-        data.push(&glyph(&font, '&'), 1000.0, BandCount::Auto);
+        data.push(&glyph(&font, '&'), 1000.0, BandCount::Auto, Layout::Rays);
         let g = data.glyphs[0];
         for (k, band) in data.bands.iter().enumerate() {
             let along =
@@ -337,7 +416,7 @@ mod tests {
     fn auto_bands_shrink_the_lists() {
         let font = Font::default_font();
         let mut data = GlyphData::default();
-        data.push(&glyph(&font, '@'), 2048.0, BandCount::Auto);
+        data.push(&glyph(&font, '@'), 2048.0, BandCount::Auto, Layout::Rays);
         let g = data.glyphs[0];
         assert!(g.band_count_h > 1 && g.band_count_v > 1, "{g:?}");
         let all = data.bands[(g.band_count_h + g.band_count_v) as usize].count;
@@ -366,7 +445,7 @@ mod tests {
             }],
         };
         let mut data = GlyphData::default();
-        data.push(&outline, 1000.0, BandCount::Auto);
+        data.push(&outline, 1000.0, BandCount::Auto, Layout::Rays);
         assert_eq!(data.curves.len(), 2, "the zero-length line is gone");
         let c = data.curves[0];
         assert_eq!(

@@ -16,8 +16,9 @@
 
 pub mod area;
 mod bands;
+mod overlaps;
 
-pub use bands::{BandCount, GlyphData, MAX_BANDS};
+pub use bands::{BandCount, GlyphData, Layout, MAX_BANDS};
 
 use super::instances::Instances;
 use super::registry::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at};
@@ -74,6 +75,14 @@ pub const OVERLAYS: &[Overlay] = &[Overlay::CurveClasses, Overlay::CostHeatMap];
 /// The parameters `winding` takes.
 pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
+        key: "aa",
+        choices: &["rays", "area"],
+        range: None,
+        help: "rays: coverage from the crossings of rays through the pixel (the rays \
+               setting); area: the exact box-filter integral of the winding number over \
+               the pixel, by Green's theorem over each curve (rays do not apply).",
+    },
+    ParamSpec {
         key: "rays",
         choices: &["2", "1"],
         range: None,
@@ -85,7 +94,9 @@ pub const PARAMS: &[ParamSpec] = &[
         choices: &["auto", "1", "4"],
         range: None,
         help: "4 sub-pixels tiling the pixel cut small-size error ~4x for ~3.5x the \
-               curves; auto uses 4 where a pixel spans over 1/32 em.",
+               curves; auto uses 4 where a pixel spans over 1/32 em. With aa=area: 4 \
+               integrates quarter pixels everywhere, 1 never, auto only where a curve \
+               of overlapping contours meets another one in the pixel.",
     },
     ParamSpec {
         key: "bands",
@@ -123,9 +134,19 @@ pub const CLASS_LEGEND: [([f32; 3], &str); 8] = [
     ([0.7, 0.7, 0.7], "111 above: no root"),
 ];
 
+/// How a pixel's coverage is found.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Antialiasing {
+    /// From the crossings of rays through the pixel, each anti-aliased by its tangent.
+    Rays,
+    /// The exact integral of the winding number over the pixel ([`area`]).
+    Area,
+}
+
 /// What the `--param`s choose.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Settings {
+    pub aa: Antialiasing,
     /// 1: rays along x only; 2: x and y.
     pub rays: u32,
     /// 1 or 4 sub-pixel samples; 0: 4 where a pixel spans over 1/32 em, else 1.
@@ -139,6 +160,7 @@ pub struct Settings {
 impl Default for Settings {
     fn default() -> Self {
         Settings {
+            aa: Antialiasing::Rays,
             rays: 2,
             samples: 0,
             even_odd: false,
@@ -156,6 +178,13 @@ impl Settings {
             Error::Input(format!("winding: {key}={value} is not one of {allowed}"))
         };
         let mut s = Settings::default();
+        if let Some(v) = param(params, "aa") {
+            s.aa = match v {
+                "rays" => Antialiasing::Rays,
+                "area" => Antialiasing::Area,
+                _ => return Err(bad("aa", v, "rays, area")),
+            };
+        }
         if let Some(v) = param(params, "rays") {
             s.rays = match v {
                 "1" => 1,
@@ -257,6 +286,7 @@ impl Winding {
         }
         let s = self.settings;
         let constants = [
+            ("AREA", f64::from(u8::from(s.aa == Antialiasing::Area))),
             ("RAYS", f64::from(s.rays)),
             ("SAMPLES", f64::from(s.samples)),
             ("EVEN_ODD", f64::from(u8::from(s.even_odd))),
@@ -306,7 +336,11 @@ impl Method for Winding {
 
     fn prepare(&mut self, gpu: &GpuContext, scene: &Scene) -> Result<(), Error> {
         let band_count = self.settings.bands.unwrap_or(BandCount::Fixed(1));
-        let data = GlyphData::of_scene(scene, band_count);
+        let layout = match self.settings.aa {
+            Antialiasing::Rays => Layout::Rays,
+            Antialiasing::Area => Layout::Area,
+        };
+        let data = GlyphData::of_scene(scene, band_count, layout);
         gpu.catching_errors("preparing 'winding'", || {
             let instances = Instances::new(gpu, scene);
             let storage = wgpu::BufferUsages::STORAGE;
