@@ -92,6 +92,8 @@ struct Quad {
     p: [DVec2; 3],
     min: DVec2,
     max: DVec2,
+    /// Marked by [`overlap_flags`] (only for [`Layout::Area`]).
+    overlaps: bool,
 }
 
 impl Quad {
@@ -99,10 +101,14 @@ impl Quad {
         (self.min[axis], self.max[axis])
     }
 
-    /// A line along the ray never crosses it (its sign class is uniform): it is left
-    /// out of that direction's bands, as Slug does.
-    fn is_flat_across(&self, across: usize) -> bool {
-        self.p[0][across] == self.p[1][across] && self.p[1][across] == self.p[2][across]
+    /// A line along the ray never crosses it (its sign class is uniform), nor adds to
+    /// a pixel's integral: it is left out of that direction's bands, as Slug does —
+    /// unless it is marked, as `aa=area` must see it to know where three winding levels
+    /// may meet.
+    fn is_left_out(&self, across: usize) -> bool {
+        !self.overlaps
+            && self.p[0][across] == self.p[1][across]
+            && self.p[1][across] == self.p[2][across]
     }
 }
 
@@ -129,6 +135,7 @@ fn quad(segment: &Segment) -> Option<Quad> {
         p,
         min: p[0].min(p[1]).min(p[2]),
         max: p[0].max(p[1]).max(p[2]),
+        overlaps: false,
     })
 }
 
@@ -170,26 +177,27 @@ impl GlyphData {
                 overlap_flags(&beziers, units_per_em).concat()
             }
         };
-        let quads = contours.concat();
+        let quads: Vec<Quad> = (contours.concat().into_iter().zip(overlaps))
+            .map(|(q, overlaps)| Quad { overlaps, ..q })
+            .collect();
         let first_curve = self.curves.len() as u32;
-        self.curves
-            .extend(quads.iter().zip(&overlaps).map(|(q, &overlaps)| GpuCurve {
-                p0p1: [
-                    q.p[0].x as f32,
-                    q.p[0].y as f32,
-                    q.p[1].x as f32,
-                    q.p[1].y as f32,
-                ],
-                p2_max: [
-                    q.p[2].x as f32,
-                    q.p[2].y as f32,
-                    q.max.x as f32,
-                    q.max.y as f32,
-                ],
-                min: [q.min.x as f32, q.min.y as f32],
-                overlaps: f32::from(u8::from(overlaps)),
-                _pad: 0.0,
-            }));
+        self.curves.extend(quads.iter().map(|q| GpuCurve {
+            p0p1: [
+                q.p[0].x as f32,
+                q.p[0].y as f32,
+                q.p[1].x as f32,
+                q.p[1].y as f32,
+            ],
+            p2_max: [
+                q.p[2].x as f32,
+                q.p[2].y as f32,
+                q.max.x as f32,
+                q.max.y as f32,
+            ],
+            min: [q.min.x as f32, q.min.y as f32],
+            overlaps: f32::from(u8::from(q.overlaps)),
+            _pad: 0.0,
+        }));
         let min = quads
             .iter()
             .fold(DVec2::splat(f64::INFINITY), |m, q| m.min(q.min));
@@ -313,7 +321,7 @@ fn band_members(
             (0..quads.len())
                 .filter(|&i| {
                     let (min, max) = quads[i].along(across);
-                    !quads[i].is_flat_across(across) && min <= hi && max >= lo
+                    !quads[i].is_left_out(across) && min <= hi && max >= lo
                 })
                 .collect()
         })

@@ -1,6 +1,6 @@
 //! Which curves of a glyph can put three winding levels in one pixel: the curves
-//! `aa=area` marks so that a pixel holding one of them (and another curve) is
-//! integrated again in sub-pixels.
+//! `aa=area` marks so that a pixel one of them crosses is integrated again in
+//! sub-pixels.
 //!
 //! One pixel's coverage from its averaged winding number F is exact where the winding
 //! inside the pixel takes two values, 0 and the glyph's fill sign. A curve whose two
