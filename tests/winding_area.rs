@@ -363,11 +363,41 @@ fn overlays_keep_working() {
 }
 
 #[test]
-fn a_bad_mode_is_a_clear_error() {
-    let params = vec![("aa".to_string(), "supersample".to_string())];
-    let err = methods::create("winding", &params)
-        .err()
-        .expect("an error")
-        .to_string();
-    assert!(err.contains("aa=supersample"), "{err}");
+fn bad_settings_are_clear_errors() {
+    for (params, expect) in [
+        (vec![("aa", "supersample")], "aa=supersample"),
+        (
+            vec![("aa", "area"), ("rays", "1")],
+            "rays=1 does not apply to aa=area",
+        ),
+    ] {
+        let params: Vec<(String, String)> = params
+            .iter()
+            .map(|(k, v)| (k.to_string(), v.to_string()))
+            .collect();
+        let err = methods::create("winding", &params)
+            .err()
+            .expect("an error")
+            .to_string();
+        assert!(err.contains(expect), "{params:?}: {err}");
+    }
+}
+
+/// The default is the integral; a ray count alone asks for rays.
+#[test]
+fn the_default_integrates_and_a_ray_count_casts_rays() {
+    use glyphscope::methods::winding::{Antialiasing, Settings};
+    let settings = |params: &[(&str, &str)]| {
+        let params: Vec<(String, String)> = params
+            .iter()
+            .map(|(k, v)| (k.to_string(), v.to_string()))
+            .collect();
+        Settings::from_params(&params).unwrap()
+    };
+    assert_eq!(settings(&[]).aa, Antialiasing::Area);
+    assert_eq!(settings(&[("rays", "1")]).aa, Antialiasing::Rays);
+    assert_eq!(
+        settings(&[("aa", "rays"), ("rays", "2")]).aa,
+        Antialiasing::Rays
+    );
 }
