@@ -332,7 +332,7 @@ struct Bezier {
     p2: vec2<f32>,
 }
 
-// Local offsets low the pixel's centre → the pixel's frame (see `frame_map`).
+// Local offsets from the pixel's centre → the pixel's frame (see `frame_map`).
 struct PixelFrame {
     direction: f32,
     shear: f32,
@@ -568,6 +568,11 @@ fn across_term(c: Bezier, slope: f32) -> f32 {
     return term;
 }
 
+// How far aa=area's bands reach beyond their boundaries, in bands (AREA_REACH in
+// bands.rs): a pixel whose centre is in a band lies within its reach when half its
+// height is at most this many bands.
+const AREA_REACH: f32 = 0.5;
+
 // The band holding every curve at the height of a pixel centred on `centre`, up to
 // `half_height` above and below it: the finest level whose bands are at least the
 // pixel's height (a band reaches half a band beyond its boundaries; see bands.rs).
@@ -581,7 +586,7 @@ fn area_band(g: Glyph, centre: vec2<f32>, half_height: f32) -> Band {
     var first = g.first_band;
     var count = g.band_count_h;
     var next = g.first_band + g.band_count_h + 1u;
-    while count > 1u && height < 2.0 * half_height {
+    while count > 1u && AREA_REACH * height < half_height {
         first = next;
         height *= 2.0;
         count = (count + 1u) / 2u;
@@ -596,8 +601,8 @@ struct AreaWinding {
     winding: f32,
     evaluated: u32,
     // Whether three winding levels may meet in the pixel: a curve marked as overlapping
-    // reaches into it. (A marked curve alone cannot make three levels, but the other
-    // curve may be one the bands leave out.)
+    // and another one reach into it (one curve alone cannot make three levels; the
+    // bands of a glyph with marked curves keep every curve, flat ones too).
     mixed: bool,
 }
 
@@ -614,6 +619,8 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
     // the band is sorted so that every later one lies behind it too.
     let near_end = direction * centre.x - 0.5 * (abs(jx.x) + abs(jy.x));
     let start = select(band.by_max, band.by_min, direction < 0.0);
+    var across = 0u;
+    var marked = false;
     for (var i = 0u; i < band.count; i++) {
         let c = curves[band_curves[start + i]];
         let far_end = select(c.p2_max.z, -c.min_xy.x, direction < 0.0);
@@ -627,9 +634,11 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
             result.winding += area_below(q.p2.y, frame.slope) - area_below(q.p0.y, frame.slope);
         } else if zone == ZONE_ACROSS {
             result.winding += across_term(q, frame.slope);
-            result.mixed = result.mixed || c.overlaps != 0.0;
+            across++;
+            marked = marked || c.overlaps != 0.0;
         }
     }
+    result.mixed = marked && across >= 2u;
     return result;
 }
 

@@ -137,8 +137,8 @@ fn every_font_size_and_transform_is_exact_where_contours_do_not_overlap() {
 }
 
 /// Inter's glyphs whose contours overlap, at its default weight and at 900, at 16 and
-/// 48 px/em: the pixels their curves cross are integrated in sub-pixels, and none is
-/// off by more than a quarter.
+/// 48 px/em: the pixels where their curves meet another are integrated in sub-pixels,
+/// and none is off by more than a quarter.
 #[test]
 fn overlapping_contours_stay_within_a_quarter() {
     let inter = Font::shipped(2);
@@ -279,7 +279,7 @@ fn bands_change_the_cost_not_the_image() {
     }
 }
 
-/// Sub-pixels only where a curve of overlapping contours crosses the pixel: on glyphs
+/// Sub-pixels only where a curve of overlapping contours meets another: on glyphs
 /// without overlaps `samples=auto` is `samples=1`, image and cost; on overlapping ones
 /// it costs more than one integral and less than sub-pixels everywhere.
 #[test]

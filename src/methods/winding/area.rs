@@ -108,17 +108,17 @@ impl PixelFrame {
             offset.y * self.v_scale,
         )
     }
+}
 
-    /// The heights of P's four corners, lowest first.
-    pub fn levels(&self) -> [f64; 4] {
-        let h = 0.5 * self.slope;
-        [-0.5 - h, -0.5 + h, 0.5 - h, 0.5 + h]
-    }
+/// The heights of the four corners of P with sides sloping by `slope`, lowest first.
+pub fn levels(slope: f64) -> [f64; 4] {
+    let h = 0.5 * slope;
+    [-0.5 - h, -0.5 + h, 0.5 - h, 0.5 + h]
 }
 
 /// Area of P below height `v`: 0 under P, 1 over it, quadratic across each slanted side.
 pub fn area_below(v: f64, slope: f64) -> f64 {
-    let [v0, v1, v2, v3] = PixelFrame { slope, ..IDENTITY }.levels();
+    let [v0, v1, v2, v3] = levels(slope);
     if v <= v0 {
         0.0
     } else if v >= v3 {
@@ -132,14 +132,6 @@ pub fn area_below(v: f64, slope: f64) -> f64 {
         v - v1 + 0.5 * slope
     }
 }
-
-const IDENTITY: PixelFrame = PixelFrame {
-    direction: 1.0,
-    shear: 0.0,
-    u_scale: 1.0,
-    v_scale: 1.0,
-    slope: 0.0,
-};
 
 /// The pixel-averaged winding number F of the pixel centred on local point `centre`
 /// (steps `jx`, `jy`), over every curve of a glyph: every curve is visited, no bands.
@@ -177,7 +169,7 @@ pub enum Zone {
 
 /// The zone of a curve's control points (a curve lies within their hull).
 pub fn zone(c: &Bezier, slope: f64) -> Zone {
-    let [v0, _, _, v3] = PixelFrame { slope, ..IDENTITY }.levels();
+    let [v0, _, _, v3] = levels(slope);
     let min = c[0].min(c[1]).min(c[2]);
     let max = c[0].max(c[1]).max(c[2]);
     if max.y <= v0 || min.y >= v3 || max.x <= -0.5 {
@@ -254,7 +246,7 @@ fn piece_term(c: Bezier, slope: f64) -> f64 {
 /// side, less ramp(α − (v − v0)/slope) across the bottom one (the chord's end there
 /// moves a pixel's width over `slope` of height).
 fn inside_term(c: Bezier, slope: f64) -> f64 {
-    let [v0, v1, v2, v3] = PixelFrame { slope, ..IDENTITY }.levels();
+    let [v0, v1, v2, v3] = levels(slope);
     // (heights, whether the side slants, sign)
     let slabs = [
         (v0, v2, false, 1.0),

@@ -94,6 +94,9 @@ struct Quad {
     max: DVec2,
     /// Marked by [`overlap_flags`] (only for [`Layout::Area`]).
     overlaps: bool,
+    /// Kept in the bands even when it runs along them: in a glyph with marked curves,
+    /// `aa=area` counts every curve crossing a pixel.
+    counted: bool,
 }
 
 impl Quad {
@@ -103,10 +106,9 @@ impl Quad {
 
     /// A line along the ray never crosses it (its sign class is uniform), nor adds to
     /// a pixel's integral: it is left out of that direction's bands, as Slug does —
-    /// unless it is marked, as `aa=area` must see it to know where three winding levels
-    /// may meet.
+    /// unless `aa=area` must count it to know where three winding levels may meet.
     fn is_left_out(&self, across: usize) -> bool {
-        !self.overlaps
+        !self.counted
             && self.p[0][across] == self.p[1][across]
             && self.p[1][across] == self.p[2][across]
     }
@@ -136,6 +138,7 @@ fn quad(segment: &Segment) -> Option<Quad> {
         min: p[0].min(p[1]).min(p[2]),
         max: p[0].max(p[1]).max(p[2]),
         overlaps: false,
+        counted: false,
     })
 }
 
@@ -177,8 +180,13 @@ impl GlyphData {
                 overlap_flags(&beziers, units_per_em).concat()
             }
         };
+        let any_marked = overlaps.contains(&true);
         let quads: Vec<Quad> = (contours.concat().into_iter().zip(overlaps))
-            .map(|(q, overlaps)| Quad { overlaps, ..q })
+            .map(|(q, overlaps)| Quad {
+                overlaps,
+                counted: any_marked,
+                ..q
+            })
             .collect();
         let first_curve = self.curves.len() as u32;
         self.curves.extend(quads.iter().map(|q| GpuCurve {
@@ -461,5 +469,82 @@ mod tests {
             [50.0, 15.0],
             "line control point is its midpoint"
         );
+    }
+
+    /// `aa=area`'s levels: at each level, for a pixel whose half height is at most half
+    /// that level's band height, the band holding the pixel's centre lists every curve
+    /// reaching the pixel's rows. The levels are found as `area_band` in winding.wgsl
+    /// finds them: level 0 first, the band of all curves, then each coarser one.
+    #[test]
+    fn area_levels_hold_every_curve_at_a_pixels_height() {
+        let font = Font::default_font();
+        for (c, count) in [('g', BandCount::Fixed(7)), ('@', BandCount::Auto)] {
+            let mut data = GlyphData::default();
+            data.push(&glyph(&font, c), 2048.0, count, Layout::Area);
+            let g = data.glyphs[0];
+            assert_eq!(g.band_count_v, 0);
+            let (lo, hi) = (f64::from(g.bounds[1]), f64::from(g.bounds[3]));
+            let mut first = 0;
+            let mut next = g.band_count_h as usize + 1;
+            let mut count = g.band_count_h as usize;
+            let mut height = (hi - lo) / count as f64;
+            loop {
+                let half = AREA_REACH * height;
+                for step in 0..200 {
+                    let centre = lo - half + (hi - lo + 2.0 * half) * f64::from(step) / 199.0;
+                    let k = (((centre - lo) / height).floor().max(0.0) as usize).min(count - 1);
+                    let band = data.bands[first + k];
+                    let listed = &data.band_curves[band.by_max as usize..][..band.count as usize];
+                    for (i, curve) in data.curves.iter().enumerate() {
+                        let ys = [curve.p0p1[1], curve.p0p1[3], curve.p2_max[1]].map(f64::from);
+                        let (min, max) = (ys[0].min(ys[1]).min(ys[2]), ys[0].max(ys[1]).max(ys[2]));
+                        let reaches = max > centre - half && min < centre + half && min < max;
+                        assert!(
+                            !reaches || listed.contains(&(i as u32)),
+                            "{c:?}: level of {count} bands, centre {centre}: curve {i} missing"
+                        );
+                    }
+                }
+                if count == 1 {
+                    break;
+                }
+                first = next;
+                height *= 2.0;
+                count = count.div_ceil(2);
+                next = first + count;
+            }
+            assert_eq!(next, data.bands.len(), "{c:?}: every level found");
+        }
+    }
+
+    /// Flat curves add nothing to a pixel's integral and are left out of horizontal
+    /// bands, unless the glyph has curves marked as overlapping: then `aa=area` counts
+    /// every curve crossing a pixel.
+    #[test]
+    fn flat_curves_stay_only_where_overlaps_are_counted() {
+        let square = |x: f64, y: f64| crate::geometry::Contour {
+            segments: [(0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0)]
+                .iter()
+                .zip([(10.0, 0.0), (10.0, 10.0), (0.0, 10.0), (0.0, 0.0)])
+                .map(|(&(ax, ay), (bx, by))| {
+                    Segment::Line(DVec2::new(ax + x, ay + y), DVec2::new(bx + x, by + y))
+                })
+                .collect(),
+        };
+        for (contours, flat_kept) in [
+            (vec![square(0.0, 0.0)], false),
+            (vec![square(0.0, 0.0), square(5.0, 5.0)], true),
+        ] {
+            let mut data = GlyphData::default();
+            data.push(
+                &Outline { contours },
+                1000.0,
+                BandCount::Fixed(1),
+                Layout::Area,
+            );
+            let members = data.bands[0].count as usize;
+            let all = data.curves.len();
+            assert_eq!(members == all, flat_kept, "{members} of {all} curves");
+        }
     }
 }

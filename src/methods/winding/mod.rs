@@ -72,8 +72,8 @@ pub const INFO: MethodInfo = MethodInfo {
                 limitation_max: Some(0.25),
                 statement: "no pixel off by more than 0.02 where contours do not overlap \
                             and f32 font units resolve the pixel; where contours overlap, \
-                            the pixels their curves cross are integrated in 4×4 \
-                            sub-pixels, none off by more than 0.25",
+                            the pixels where their curves meet another are integrated in \
+                            4×4 sub-pixels, none off by more than 0.25",
             },
         },
         ClaimedSetting {
@@ -123,7 +123,7 @@ pub const PARAMS: &[ParamSpec] = &[
         help: "4 sub-pixels tiling the pixel cut small-size error ~4x for ~3.5x the \
                curves; auto uses 4 where a pixel spans over 1/32 em. With aa=area: 4 \
                integrates 4×4 sub-pixels everywhere, 1 never, auto only in the pixels \
-               a curve of overlapping contours crosses.",
+               where a curve of overlapping contours meets another.",
     },
     ParamSpec {
         key: "bands",
