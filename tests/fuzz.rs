@@ -16,7 +16,7 @@ use glyphscope::methods::tessellation::{
     glyph_mesh,
     subdivision::{Subdivision, TaggedContour},
 };
-use glyphscope::methods::winding::{BandCount, GlyphData};
+use glyphscope::methods::winding::{BandCount, GlyphData, Layout};
 use glyphscope::methods::xor_stencil::{GeometryData, tolerance_halvings};
 use glyphscope::methods::{frame, registry};
 use glyphscope::reference;
@@ -122,8 +122,14 @@ fn all_finite<'a>(values: impl IntoIterator<Item = &'a f32>) -> bool {
 /// Every method's CPU preparation of `scene`, checked: no panic, finite floats,
 /// indices in range.
 fn check_cpu_preparation(scene: &Scene) {
-    for bands in [BandCount::Auto, BandCount::Fixed(1), BandCount::Fixed(64)] {
-        let data = GlyphData::of_scene(scene, bands);
+    for (bands, layout) in [
+        (BandCount::Auto, Layout::Rays),
+        (BandCount::Fixed(1), Layout::Rays),
+        (BandCount::Fixed(64), Layout::Rays),
+        (BandCount::Auto, Layout::Area),
+        (BandCount::Fixed(7), Layout::Area),
+    ] {
+        let data = GlyphData::of_scene(scene, bands, layout);
         assert!(
             data.curves
                 .iter()

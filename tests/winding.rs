@@ -1,4 +1,4 @@
-//! Method `winding` against the exact reference: real glyphs of every shipped font at
+//! Method `winding` casting rays (`aa=rays`) against the exact reference: real glyphs of every shipped font at
 //! 8–400 px/em under rotation and skew at 16 sub-pixel offsets, the hard cases that
 //! break ray casting, and what each parameter does.
 
@@ -20,9 +20,11 @@ fn gpu() -> GpuContext {
     GpuContext::new().expect("a GPU adapter (lavapipe: apt-get install mesa-vulkan-drivers)")
 }
 
+/// `winding` casting rays (`aa=rays`): `tests/winding_area.rs` checks its default.
 fn winding(params: &[(&str, &str)]) -> Box<dyn Method> {
-    let params: Vec<(String, String)> = params
+    let params: Vec<(String, String)> = [("aa", "rays")]
         .iter()
+        .chain(params)
         .map(|(k, v)| (k.to_string(), v.to_string()))
         .collect();
     methods::create("winding", &params).unwrap()

@@ -126,6 +126,10 @@ pub enum Trait {
     /// of 256 wrap an 8-bit stencil counter to 0, and more edges cross one pixel's
     /// window than a ray keeps sorted there (8).
     DenseOverlaps,
+    /// A view so deep into one glyph (10⁶ px/em) that f32 font units resolve only about
+    /// 1/32 px there: a method that places edges in local coordinates cannot place them
+    /// closer than that.
+    BeyondF32,
 }
 
 /// The exact CPU rasterizer: not a GPU method, so it has no constructor; callers ask

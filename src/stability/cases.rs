@@ -368,6 +368,7 @@ pub fn all() -> Vec<Case> {
                 side: 48,
                 focus: DVec2::new(bowl.min.x, (bowl.min.y + bowl.max.y) / 2.0),
             },
+            traits: &[Trait::BeyondF32],
             ..real(
                 "glyph-max-size-edge",
                 "the same view at 10⁶ px/em, the largest size accepted",

@@ -1,13 +1,20 @@
-//! CPU preparation for `winding`: each distinct glyph's quadratic curves, and its
-//! horizontal and vertical bands, laid out as the shader reads them.
+//! CPU preparation for `winding`: each distinct glyph's quadratic curves, and its bands,
+//! laid out as the shader reads them.
 //!
 //! A band lists every curve whose control-point bounds overlap it across the ray, so a
 //! ray cast inside the band meets no other curve. Each band keeps its curves twice:
 //! by descending max (rays cast towards +) and by ascending min (rays cast towards −);
 //! a ray then stops at the first curve lying wholly behind it.
+//!
+//! `aa=area` needs every curve at the height of a whole pixel, not of one ray, so its
+//! bands ([`Layout::Area`]) overlap: each reaches half a band beyond its neighbours'
+//! boundaries, and a pixel up to a band tall lies wholly inside the band holding its
+//! centre. Pixels taller than that take a coarser level: the same at twice the height,
+//! four times, … up to one band for the glyph.
 
 use glam::DVec2;
 
+use super::overlaps::overlap_flags;
 use crate::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Segment};
 use crate::scene::Scene;
 
@@ -19,7 +26,10 @@ pub struct GpuCurve {
     /// p2, then max x and max y of the control points.
     pub p2_max: [f32; 4],
     pub min: [f32; 2],
-    pub _pad: [f32; 2],
+    /// 1 where the curve may separate other winding levels than 0 and the fill
+    /// ([`overlap_flags`]), else 0.
+    pub overlaps: f32,
+    pub _pad: f32,
 }
 
 /// `Glyph` in `winding.wgsl`.
@@ -54,13 +64,24 @@ pub enum BandCount {
 /// Most bands in one direction: past this, bands cost memory and save nothing.
 pub const MAX_BANDS: u32 = 64;
 
+/// Which bands each glyph gets, in the order `winding.wgsl` finds them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Layout {
+    /// For rays: its horizontal bands, its vertical bands, then one band listing all its
+    /// curves (brute force, and the class overlay).
+    Rays,
+    /// For `aa=area`: its horizontal bands, each reaching half a band beyond its
+    /// boundaries; the band of all its curves; then the coarser levels, each with bands
+    /// twice as tall (and as far apart) as the last, down to a single band.
+    Area,
+}
+
 /// Everything the shader reads about the distinct glyphs, built once per scene.
 #[derive(Default, Debug)]
 pub struct GlyphData {
     pub curves: Vec<GpuCurve>,
     pub glyphs: Vec<GpuGlyph>,
-    /// Per glyph: its horizontal bands, its vertical bands, then one band listing all
-    /// its curves (brute force, and the class overlay).
+    /// Per glyph, as its [`Layout`] orders them.
     pub bands: Vec<GpuBand>,
     pub band_curves: Vec<u32>,
 }
@@ -71,6 +92,11 @@ struct Quad {
     p: [DVec2; 3],
     min: DVec2,
     max: DVec2,
+    /// Marked by [`overlap_flags`] (only for [`Layout::Area`]).
+    overlaps: bool,
+    /// Kept in the bands even when it runs along them: in a glyph with marked curves,
+    /// `aa=area` counts every curve crossing a pixel.
+    counted: bool,
 }
 
 impl Quad {
@@ -78,40 +104,48 @@ impl Quad {
         (self.min[axis], self.max[axis])
     }
 
-    /// A line along the ray never crosses it (its sign class is uniform): it is left
-    /// out of that direction's bands, as Slug does.
-    fn is_flat_across(&self, across: usize) -> bool {
-        self.p[0][across] == self.p[1][across] && self.p[1][across] == self.p[2][across]
+    /// A line along the ray never crosses it (its sign class is uniform), nor adds to
+    /// a pixel's integral: it is left out of that direction's bands, as Slug does —
+    /// unless `aa=area` must count it to know where three winding levels may meet.
+    fn is_left_out(&self, across: usize) -> bool {
+        !self.counted
+            && self.p[0][across] == self.p[1][across]
+            && self.p[1][across] == self.p[2][across]
     }
 }
 
-/// The quadratics of an outline (already free of cubics): lines become quadratics with
-/// their midpoint as control point, exactly representable; zero-length pieces, which
-/// cannot change any winding number, are dropped.
-fn quads(outline: &Outline) -> Vec<Quad> {
+/// The quadratics of an outline (already free of cubics), contour by contour: lines
+/// become quadratics with their midpoint as control point, exactly representable;
+/// zero-length pieces, which cannot change any winding number, are dropped.
+fn contours(outline: &Outline) -> Vec<Vec<Quad>> {
     outline
-        .segments()
-        .filter_map(|s| {
-            let p = match *s {
-                Segment::Line(a, b) => [a, (a + b) * 0.5, b],
-                Segment::Quad(a, b, c) => [a, b, c],
-                Segment::Cubic(..) => unreachable!("outlines are converted to quadratics first"),
-            };
-            // Round once, here, so that bounds and bands agree with what the GPU sees.
-            let p = p.map(|v| v.as_vec2().as_dvec2());
-            (p[0] != p[1] || p[1] != p[2]).then(|| Quad {
-                p,
-                min: p[0].min(p[1]).min(p[2]),
-                max: p[0].max(p[1]).max(p[2]),
-            })
-        })
+        .contours
+        .iter()
+        .map(|contour| contour.segments.iter().filter_map(quad).collect())
         .collect()
+}
+
+fn quad(segment: &Segment) -> Option<Quad> {
+    let p = match *segment {
+        Segment::Line(a, b) => [a, (a + b) * 0.5, b],
+        Segment::Quad(a, b, c) => [a, b, c],
+        Segment::Cubic(..) => unreachable!("outlines are converted to quadratics first"),
+    };
+    // Round once, here, so that bounds and bands agree with what the GPU sees.
+    let p = p.map(|v| v.as_vec2().as_dvec2());
+    (p[0] != p[1] || p[1] != p[2]).then(|| Quad {
+        p,
+        min: p[0].min(p[1]).min(p[2]),
+        max: p[0].max(p[1]).max(p[2]),
+        overlaps: false,
+        counted: false,
+    })
 }
 
 impl GlyphData {
     /// What `winding` uploads for `scene`: every distinct glyph, its cubics converted to
-    /// quadratics within the project's tolerance.
-    pub fn of_scene(scene: &Scene, band_count: BandCount) -> GlyphData {
+    /// quadratics within the project's tolerance, with bands in `layout`.
+    pub fn of_scene(scene: &Scene, band_count: BandCount, layout: Layout) -> GlyphData {
         let tolerance = DEFAULT_QUAD_TOLERANCE_EM * scene.units_per_em;
         let mut data = GlyphData::default();
         for glyph in &scene.glyphs {
@@ -119,6 +153,7 @@ impl GlyphData {
                 &glyph.outline.to_quadratics(tolerance),
                 scene.units_per_em,
                 band_count,
+                layout,
             );
         }
         data
@@ -126,8 +161,33 @@ impl GlyphData {
 
     /// Appends one glyph (an outline of lines and quadratics, in a font of
     /// `units_per_em`) and returns its index.
-    pub fn push(&mut self, outline: &Outline, units_per_em: f64, band_count: BandCount) -> u32 {
-        let quads = quads(outline);
+    pub fn push(
+        &mut self,
+        outline: &Outline,
+        units_per_em: f64,
+        band_count: BandCount,
+        layout: Layout,
+    ) -> u32 {
+        let contours = contours(outline);
+        // Only `aa=area` reads the marks (rays never integrate a pixel as a whole).
+        let overlaps: Vec<bool> = match layout {
+            Layout::Rays => vec![false; contours.iter().map(Vec::len).sum()],
+            Layout::Area => {
+                let beziers: Vec<Vec<[DVec2; 3]>> = contours
+                    .iter()
+                    .map(|c| c.iter().map(|q| q.p).collect())
+                    .collect();
+                overlap_flags(&beziers, units_per_em).concat()
+            }
+        };
+        let any_marked = overlaps.contains(&true);
+        let quads: Vec<Quad> = (contours.concat().into_iter().zip(overlaps))
+            .map(|(q, overlaps)| Quad {
+                overlaps,
+                counted: any_marked,
+                ..q
+            })
+            .collect();
         let first_curve = self.curves.len() as u32;
         self.curves.extend(quads.iter().map(|q| GpuCurve {
             p0p1: [
@@ -143,7 +203,8 @@ impl GlyphData {
                 q.max.y as f32,
             ],
             min: [q.min.x as f32, q.min.y as f32],
-            _pad: [0.0; 2],
+            overlaps: f32::from(u8::from(q.overlaps)),
+            _pad: 0.0,
         }));
         let min = quads
             .iter()
@@ -158,11 +219,30 @@ impl GlyphData {
         };
 
         let first_band = self.bands.len() as u32;
-        // Horizontal bands split y (rays along x, axis 0); vertical ones split x.
-        let count_h = self.push_bands(&quads, first_curve, 1, (min.y, max.y), band_count);
-        let count_v = self.push_bands(&quads, first_curve, 0, (min.x, max.x), band_count);
         let all: Vec<usize> = (0..quads.len()).collect();
-        self.push_band(&quads, first_curve, &all, 0);
+        // Horizontal bands split y (rays along x, axis 0); vertical ones split x.
+        let count_h = resolve(band_count, &quads, 1, (min.y, max.y));
+        let count_v = match layout {
+            Layout::Rays => {
+                let count_v = resolve(band_count, &quads, 0, (min.x, max.x));
+                self.push_bands(&quads, first_curve, 1, (min.y, max.y), count_h, 0.0);
+                self.push_bands(&quads, first_curve, 0, (min.x, max.x), count_v, 0.0);
+                self.push_band(&quads, first_curve, &all, 0);
+                count_v
+            }
+            Layout::Area => {
+                self.push_bands(&quads, first_curve, 1, (min.y, max.y), count_h, AREA_REACH);
+                self.push_band(&quads, first_curve, &all, 0);
+                let (mut height, mut count) = ((max.y - min.y) / f64::from(count_h), count_h);
+                while count > 1 {
+                    height *= 2.0;
+                    count = count.div_ceil(2);
+                    let range = (min.y, min.y + height * f64::from(count));
+                    self.push_bands(&quads, first_curve, 1, range, count, AREA_REACH);
+                }
+                0
+            }
+        };
         self.glyphs.push(GpuGlyph {
             bounds: [min.x as f32, min.y as f32, max.x as f32, max.y as f32],
             band_count_h: count_h,
@@ -173,24 +253,21 @@ impl GlyphData {
         self.glyphs.len() as u32 - 1
     }
 
-    /// Pushes the bands splitting `range` of coordinate `across`; returns how many.
+    /// Pushes `count` bands splitting `range` of coordinate `across`, each reaching
+    /// `reach` of a band beyond its boundaries.
     fn push_bands(
         &mut self,
         quads: &[Quad],
         first_curve: u32,
         across: usize,
         range: (f64, f64),
-        band_count: BandCount,
-    ) -> u32 {
-        let count = match band_count {
-            BandCount::Fixed(n) => n,
-            BandCount::Auto => auto_band_count(quads, across, range),
-        };
+        count: u32,
+        reach: f64,
+    ) {
         let along = 1 - across;
-        for members in band_members(quads, across, range, count) {
+        for members in band_members(quads, across, range, count, reach) {
             self.push_band(quads, first_curve, &members, along);
         }
-        count
     }
 
     fn push_band(&mut self, quads: &[Quad], first_curve: u32, members: &[usize], along: usize) {
@@ -220,13 +297,31 @@ impl GlyphData {
     }
 }
 
-/// The curves of each of `count` equal bands across `range`. Membership is by closed
-/// intervals widened by 1/256 of a band, so a sample the shader rounds into a
-/// neighbouring band still finds every curve at its height: a superset is harmless,
-/// a missing curve is not.
-fn band_members(quads: &[Quad], across: usize, range: (f64, f64), count: u32) -> Vec<Vec<usize>> {
+/// How far `aa=area`'s bands reach beyond their boundaries, in bands: a pixel up to a
+/// band tall whose centre is in a band lies wholly within its reach.
+const AREA_REACH: f64 = 0.5;
+
+/// The band count `band_count` asks for across `range` of coordinate `across`.
+fn resolve(band_count: BandCount, quads: &[Quad], across: usize, range: (f64, f64)) -> u32 {
+    match band_count {
+        BandCount::Fixed(n) => n,
+        BandCount::Auto => auto_band_count(quads, across, range),
+    }
+}
+
+/// The curves of each of `count` equal bands across `range`, each reaching `reach` of a
+/// band beyond its boundaries. Membership is by closed intervals widened by a further
+/// 1/256 of a band, so a sample the shader rounds into a neighbouring band still finds
+/// every curve at its height: a superset is harmless, a missing curve is not.
+fn band_members(
+    quads: &[Quad],
+    across: usize,
+    range: (f64, f64),
+    count: u32,
+    reach: f64,
+) -> Vec<Vec<usize>> {
     let height = (range.1 - range.0) / f64::from(count);
-    let slack = height / 256.0;
+    let slack = height * (reach + 1.0 / 256.0);
     (0..count)
         .map(|k| {
             let lo = range.0 + height * f64::from(k) - slack;
@@ -234,7 +329,7 @@ fn band_members(quads: &[Quad], across: usize, range: (f64, f64), count: u32) ->
             (0..quads.len())
                 .filter(|&i| {
                     let (min, max) = quads[i].along(across);
-                    !quads[i].is_flat_across(across) && min <= hi && max >= lo
+                    !quads[i].is_left_out(across) && min <= hi && max >= lo
                 })
                 .collect()
         })
@@ -245,7 +340,7 @@ fn band_members(quads: &[Quad], across: usize, range: (f64, f64), count: u32) ->
 /// average, up to [`MAX_BANDS`].
 fn auto_band_count(quads: &[Quad], across: usize, range: (f64, f64)) -> u32 {
     let mean = |count: u32| {
-        let members = band_members(quads, across, range, count);
+        let members = band_members(quads, across, range, count, 0.0);
         members.iter().map(Vec::len).sum::<usize>() as f64 / f64::from(count)
     };
     let mut count = 1;
@@ -279,7 +374,7 @@ mod tests {
         let font = Font::default_font();
         for c in "gS@&mW".chars() {
             let mut data = GlyphData::default();
-            data.push(&glyph(&font, c), 2048.0, BandCount::Fixed(7));
+            data.push(&glyph(&font, c), 2048.0, BandCount::Fixed(7), Layout::Rays);
             let g = data.glyphs[0];
             let (lo, hi) = (g.bounds[1], g.bounds[3]);
             for k in 0..7 {
@@ -303,7 +398,7 @@ mod tests {
     fn both_orderings_are_sorted_and_hold_the_same_curves() {
         let font = Font::shipped(1);
         let mut data = GlyphData::default();
-        data.push(&glyph(&font, '&'), 1000.0, BandCount::Auto);
+        data.push(&glyph(&font, '&'), 1000.0, BandCount::Auto, Layout::Rays);
         let g = data.glyphs[0];
         for (k, band) in data.bands.iter().enumerate() {
             let along =
@@ -337,7 +432,7 @@ mod tests {
     fn auto_bands_shrink_the_lists() {
         let font = Font::default_font();
         let mut data = GlyphData::default();
-        data.push(&glyph(&font, '@'), 2048.0, BandCount::Auto);
+        data.push(&glyph(&font, '@'), 2048.0, BandCount::Auto, Layout::Rays);
         let g = data.glyphs[0];
         assert!(g.band_count_h > 1 && g.band_count_v > 1, "{g:?}");
         let all = data.bands[(g.band_count_h + g.band_count_v) as usize].count;
@@ -366,7 +461,7 @@ mod tests {
             }],
         };
         let mut data = GlyphData::default();
-        data.push(&outline, 1000.0, BandCount::Auto);
+        data.push(&outline, 1000.0, BandCount::Auto, Layout::Rays);
         assert_eq!(data.curves.len(), 2, "the zero-length line is gone");
         let c = data.curves[0];
         assert_eq!(
@@ -374,5 +469,82 @@ mod tests {
             [50.0, 15.0],
             "line control point is its midpoint"
         );
+    }
+
+    /// `aa=area`'s levels: at each level, for a pixel whose half height is at most half
+    /// that level's band height, the band holding the pixel's centre lists every curve
+    /// reaching the pixel's rows. The levels are found as `area_band` in winding.wgsl
+    /// finds them: level 0 first, the band of all curves, then each coarser one.
+    #[test]
+    fn area_levels_hold_every_curve_at_a_pixels_height() {
+        let font = Font::default_font();
+        for (c, count) in [('g', BandCount::Fixed(7)), ('@', BandCount::Auto)] {
+            let mut data = GlyphData::default();
+            data.push(&glyph(&font, c), 2048.0, count, Layout::Area);
+            let g = data.glyphs[0];
+            assert_eq!(g.band_count_v, 0);
+            let (lo, hi) = (f64::from(g.bounds[1]), f64::from(g.bounds[3]));
+            let mut first = 0;
+            let mut next = g.band_count_h as usize + 1;
+            let mut count = g.band_count_h as usize;
+            let mut height = (hi - lo) / count as f64;
+            loop {
+                let half = AREA_REACH * height;
+                for step in 0..200 {
+                    let centre = lo - half + (hi - lo + 2.0 * half) * f64::from(step) / 199.0;
+                    let k = (((centre - lo) / height).floor().max(0.0) as usize).min(count - 1);
+                    let band = data.bands[first + k];
+                    let listed = &data.band_curves[band.by_max as usize..][..band.count as usize];
+                    for (i, curve) in data.curves.iter().enumerate() {
+                        let ys = [curve.p0p1[1], curve.p0p1[3], curve.p2_max[1]].map(f64::from);
+                        let (min, max) = (ys[0].min(ys[1]).min(ys[2]), ys[0].max(ys[1]).max(ys[2]));
+                        let reaches = max > centre - half && min < centre + half && min < max;
+                        assert!(
+                            !reaches || listed.contains(&(i as u32)),
+                            "{c:?}: level of {count} bands, centre {centre}: curve {i} missing"
+                        );
+                    }
+                }
+                if count == 1 {
+                    break;
+                }
+                first = next;
+                height *= 2.0;
+                count = count.div_ceil(2);
+                next = first + count;
+            }
+            assert_eq!(next, data.bands.len(), "{c:?}: every level found");
+        }
+    }
+
+    /// Flat curves add nothing to a pixel's integral and are left out of horizontal
+    /// bands, unless the glyph has curves marked as overlapping: then `aa=area` counts
+    /// every curve crossing a pixel.
+    #[test]
+    fn flat_curves_stay_only_where_overlaps_are_counted() {
+        let square = |x: f64, y: f64| crate::geometry::Contour {
+            segments: [(0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0)]
+                .iter()
+                .zip([(10.0, 0.0), (10.0, 10.0), (0.0, 10.0), (0.0, 0.0)])
+                .map(|(&(ax, ay), (bx, by))| {
+                    Segment::Line(DVec2::new(ax + x, ay + y), DVec2::new(bx + x, by + y))
+                })
+                .collect(),
+        };
+        for (contours, flat_kept) in [
+            (vec![square(0.0, 0.0)], false),
+            (vec![square(0.0, 0.0), square(5.0, 5.0)], true),
+        ] {
+            let mut data = GlyphData::default();
+            data.push(
+                &Outline { contours },
+                1000.0,
+                BandCount::Fixed(1),
+                Layout::Area,
+            );
+            let members = data.bands[0].count as usize;
+            let all = data.curves.len();
+            assert_eq!(members == all, flat_kept, "{members} of {all} curves");
+        }
     }
 }
