@@ -45,6 +45,7 @@ struct Band {
 // on them.
 override AREA: bool = false;      // aa=area: the exact box integral; no rays
 override RAYS: u32 = 2u;          // 1: along x only; 2: x and y, combined by weight
+override SLUG: bool = false;      // rays=slug: two rays combined as Slug's shader does
 override SAMPLES: u32 = 0u;       // 1, 4 (2×2 sub-pixels tiling the pixel), 0: auto
 override EVEN_ODD: bool = false;  // fill rule; nonzero by default
 override USE_BANDS: bool = true;  // false: every curve of the glyph for every ray
@@ -87,6 +88,15 @@ struct Ray {
 
 // `pixels_per_unit_across`: pixels per local unit along the other ray.
 fn add_crossing(ray: ptr<function, Ray>, x: f32, tangent: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>, reach: f32, pixels_per_unit: f32, pixels_per_unit_across: f32, sign: f32) {
+    if SLUG {
+        // Slug's combine: a crossing counts the part of a one-pixel window along the
+        // ray that lies before it, whatever the edge's slant; the ray's weight is its
+        // nearest crossing's closeness (1 at the sample, 0 from half a pixel on).
+        let r = x * pixels_per_unit;
+        (*ray).average += sign * saturate(r + 0.5);
+        (*ray).sight = max((*ray).sight, saturate(1.0 - 2.0 * abs(r)));
+        return;
+    }
     (*ray).sight = max((*ray).sight, sight(x * pixels_per_unit, tangent));
     if abs(x) > reach {
         // Beyond the window: the whole window is on one side of it.
@@ -213,7 +223,9 @@ fn cast_ray(sample_local: vec2<f32>, jx_local: vec2<f32>, jy_local: vec2<f32>, b
     // count fractionally. The inverse Jacobian's first column is the pixel step that
     // moves one local unit along the ray.
     let det = jx.x * jy.y - jy.x * jx.y;
-    let pixels_per_unit = length(vec2<f32>(jy.y, -jx.y)) / max(abs(det), 1e-30);
+    // Slug measures the window by the screen-space extent of a pixel along the ray's
+    // axis (`fwidth`), which exceeds the true one under rotation.
+    let pixels_per_unit = select(length(vec2<f32>(jy.y, -jx.y)) / max(abs(det), 1e-30), 1.0 / (abs(jx.x) + abs(jy.x)), SLUG);
     let reach = 1.0 / pixels_per_unit;
     // Its second column: the same along the frame's y, the other ray's direction.
     let pixels_per_unit_across = length(vec2<f32>(-jy.x, jx.x)) / max(abs(det), 1e-30);
@@ -310,13 +322,22 @@ struct Coverage {
 // Coverage of the pixel part around `sample` whose one-pixel steps are `jx`, `jy`.
 fn coverage_at(g: Glyph, sample: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Coverage {
     let x_ray = cast_ray(sample, jx, jy, band_for(g, sample, 0u), 0u, direction_for(g, sample, 0u));
-    let x_coverage = ray_coverage(x_ray);
     if RAYS == 1u {
-        return Coverage(x_coverage, x_ray.evaluated);
+        return Coverage(ray_coverage(x_ray), x_ray.evaluated);
     }
     let y_ray = cast_ray(sample, jx, jy, band_for(g, sample, 1u), 1u, direction_for(g, sample, 1u));
-    let y_coverage = ray_coverage(y_ray);
     let evaluated = x_ray.evaluated + y_ray.evaluated;
+    if SLUG {
+        // Slug's weighted blend of the two rays' windings, never below the smaller of
+        // them, before the fill rule.
+        let x_winding = x_ray.average;
+        let y_winding = y_ray.average;
+        let total = max(x_ray.sight + y_ray.sight, 1.0 / 65536.0);
+        let blend = abs(x_winding * x_ray.sight + y_winding * y_ray.sight) / total;
+        return Coverage(fill(max(blend, min(abs(x_winding), abs(y_winding)))), evaluated);
+    }
+    let x_coverage = ray_coverage(x_ray);
+    let y_coverage = ray_coverage(y_ray);
     // Each ray is exact for the straight edges it crosses near the sample and blind to
     // edges running along it, which are exactly the edges the other ray sees best.
     // So trust a ray by how well it sees an edge, discounted by how well the other ray

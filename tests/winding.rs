@@ -358,6 +358,49 @@ fn overlays_draw_classes_and_cost() {
     );
 }
 
+/// `rays=slug` reproduces Slug's published combine, checked on pixels worked by hand
+/// (pixel-centre offsets s, t uniform in [−½, ½]; 1 px per font unit):
+/// - a square's corner ¼ px beyond the pixel centre in x and y: each ray's one-pixel
+///   window is ¾ inside, its weight 1 − 2·¼ = ½, so Slug gives ¾; the pixel's exact
+///   coverage is ¾ · ¾ = 9/16;
+/// - a 45° edge s + t < ¼: each ray again ¾ inside with weight ½, so Slug gives ¾;
+///   exactly, 1 − (1 − ¼)²/2 = 0.71875.
+///
+/// `aa=area` must give the exact values, so the probes tell the two apart.
+#[test]
+fn slug_combine_on_hand_worked_pixels() {
+    let gpu = gpu();
+    let square = single(polygons(&[&[
+        (4.25, 4.25),
+        (30.0, 4.25),
+        (30.0, 30.0),
+        (4.25, 30.0),
+    ]]));
+    let triangle = single(polygons(&[&[(0.0, 0.0), (19.25, 0.0), (0.0, 19.25)]]));
+    let cam = unit_camera(32, 32);
+    // Image pixel (i, j) has its centre at font (i + ½, 32 − j − ½).
+    let probes = [
+        ("corner", &square, (4, 27), 0.75, 9.0 / 16.0),
+        ("45° edge", &triangle, (9, 22), 0.75, 0.71875),
+    ];
+    for (what, scene, (i, j), slug, exact) in probes {
+        let by_slug = render(&gpu, winding(&[("rays", "slug")]).as_mut(), scene, &cam);
+        let area_params = [("aa".to_string(), "area".to_string())];
+        let mut area = methods::create("winding", &area_params).unwrap();
+        let by_area = render(&gpu, area.as_mut(), scene, &cam);
+        // Half floats hold ¾ and 9/16 exactly and 0.71875 within 2.5e-4.
+        let (got_slug, got_area) = (by_slug.get(i, j), by_area.get(i, j));
+        assert!(
+            (got_slug - slug).abs() < 1e-3,
+            "{what}: slug {got_slug}, expected {slug}"
+        );
+        assert!(
+            (got_area - exact).abs() < 1e-3,
+            "{what}: area {got_area}, expected {exact}"
+        );
+    }
+}
+
 #[test]
 fn bad_parameters_are_clear_errors() {
     for (key, value, expect) in [

@@ -15,6 +15,8 @@
 //!   included). Two rays (x and y) are blended by how well each sees an edge (near, and
 //!   across it), since a ray is blind to edges running along it; a ray sees at least as
 //!   well as the other ray's crossings, taken as straight lines, say it must.
+//!   `rays=slug` combines the two rays as Slug's published pixel shader does, for
+//!   comparison.
 //! - Bands let a pixel visit only the curves at its height, walked towards the nearer
 //!   side of the glyph, stopping at the first curve wholly behind it.
 //! - Each instance's quad grows by exactly the pixel footprint (`dilated_corner`).
@@ -56,6 +58,7 @@ pub const INFO: MethodInfo = MethodInfo {
         bench_at(&[("aa", "rays")], true),
         bench_at(&[("aa", "rays"), ("samples", "1")], true),
         bench_at(&[("aa", "rays"), ("samples", "4")], false),
+        bench_at(&[("rays", "slug")], false),
         bench_at(&[("rays", "1")], false),
         bench_at(&[("rays", "1"), ("samples", "1")], true),
         bench_at(&[("rays", "1"), ("samples", "1"), ("bands", "off")], false),
@@ -111,11 +114,13 @@ pub const PARAMS: &[ParamSpec] = &[
     },
     ParamSpec {
         key: "rays",
-        choices: &["2", "1"],
+        choices: &["2", "1", "slug"],
         range: None,
         help: "Selects aa=rays. 2: rays along x and y, weighted by which sees the edge \
                best; 1: x only (aliases edges near horizontal). 2 costs about twice the \
-               curves.",
+               curves. slug: x and y rays combined as Slug's published shader does \
+               (a one-pixel window per axis, weights from the nearest root), one \
+               sample unless samples says otherwise: for comparison.",
     },
     ParamSpec {
         key: "samples",
@@ -171,12 +176,22 @@ pub enum Antialiasing {
     Area,
 }
 
+/// Which rays `aa=rays` casts, and how their coverages combine.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Rays {
+    /// Along x only.
+    X,
+    /// Along x and y, weighted by how well each sees the edge (this project's combine).
+    XY,
+    /// Along x and y, combined as Slug's published pixel shader does.
+    Slug,
+}
+
 /// What the `--param`s choose.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Settings {
     pub aa: Antialiasing,
-    /// 1: rays along x only; 2: x and y.
-    pub rays: u32,
+    pub rays: Rays,
     /// 1 or 4 sub-pixel samples; 0: 4 where a pixel spans over 1/32 em, else 1.
     pub samples: u32,
     pub even_odd: bool,
@@ -189,7 +204,7 @@ impl Default for Settings {
     fn default() -> Self {
         Settings {
             aa: Antialiasing::Area,
-            rays: 2,
+            rays: Rays::XY,
             samples: 0,
             even_odd: false,
             bands: Some(BandCount::Auto),
@@ -225,9 +240,14 @@ impl Settings {
                 Some(_) => {}
             }
             s.rays = match v {
-                "1" => 1,
-                "2" => 2,
-                _ => return Err(bad("rays", v, "1, 2")),
+                "1" => Rays::X,
+                "2" => Rays::XY,
+                "slug" => {
+                    // Slug's shader takes one sample per pixel.
+                    s.samples = 1;
+                    Rays::Slug
+                }
+                _ => return Err(bad("rays", v, "1, 2, slug")),
             };
         }
         if let Some(v) = param(params, "samples") {
@@ -325,7 +345,8 @@ impl Winding {
         let s = self.settings;
         let constants = [
             ("AREA", f64::from(u8::from(s.aa == Antialiasing::Area))),
-            ("RAYS", f64::from(s.rays)),
+            ("RAYS", f64::from(if s.rays == Rays::X { 1 } else { 2 })),
+            ("SLUG", f64::from(u8::from(s.rays == Rays::Slug))),
             ("SAMPLES", f64::from(s.samples)),
             ("EVEN_ODD", f64::from(u8::from(s.even_odd))),
             ("USE_BANDS", f64::from(u8::from(s.bands.is_some()))),
