@@ -9,10 +9,12 @@ use clap::{Args, Parser, Subcommand};
 use crate::Error;
 use crate::coverage::CoverageImage;
 use crate::gpu::GpuContext;
+use crate::magnify::{self, Focus, Window};
 use crate::measure::{self, Measured, RENDER_TIMING, RenderStats};
 use crate::methods::frame::ms_since;
 use crate::methods::registry;
 use crate::metrics;
+use crate::outline;
 use crate::reference;
 use crate::stability::{self, sweep::SweepSize};
 use crate::view::{ViewArgs, parse_key_value};
@@ -127,6 +129,27 @@ pub struct RenderArgs {
     /// blue: too little, full intensity at 0.5); the statistics gain the error figures.
     #[arg(long)]
     pub error_image: Option<PathBuf>,
+    /// Magnify: the PNG, of the frame's size, shows the pixels around `--focus`, each as
+    /// an N×N block (1 to 64), with a pixel grid from 8 and each pixel's coverage (and
+    /// error, with `--overlay error`) written in its block from 32.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=i64::from(magnify::MAX_FACTOR)))]
+    pub magnify: u32,
+    /// The pixel the magnified picture is centred on: `worst` (the largest error against
+    /// the reference, the default) or X,Y.
+    #[arg(long)]
+    pub focus: Option<Focus>,
+    /// What the (magnified) picture draws over the pixels, comma-separated: `error` (the
+    /// signed error against the reference instead of the coverage), `outline` (the exact
+    /// curves and their points).
+    #[arg(long = "overlay", value_delimiter = ',')]
+    pub overlays: Vec<PictureOverlay>,
+}
+
+/// A layer of `render`'s magnified picture.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum PictureOverlay {
+    Error,
+    Outline,
 }
 
 impl RenderArgs {
@@ -140,7 +163,22 @@ impl RenderArgs {
             out: PathBuf::new(),
             stats: None,
             error_image: None,
+            magnify: 1,
+            focus: None,
+            overlays: Vec::new(),
         }
+    }
+
+    /// Whether the PNG is the magnifier's picture rather than the frame's coverage.
+    pub fn wants_picture(&self) -> bool {
+        self.magnify > 1 || self.focus.is_some() || !self.overlays.is_empty()
+    }
+
+    fn wants_reference(&self) -> bool {
+        self.error_image.is_some()
+            || (self.wants_picture()
+                && (self.focus.is_none_or(|f| f == Focus::Worst)
+                    || self.overlays.contains(&PictureOverlay::Error)))
     }
 }
 
@@ -156,6 +194,8 @@ pub struct Rendered {
     pub overlay: Option<image::RgbImage>,
     pub reference: Option<CoverageImage>,
     pub stats: RenderStats,
+    /// The magnifier's picture and the pixels it shows, when one was asked for.
+    pub picture: Option<(image::RgbImage, Window)>,
 }
 
 /// Renders what `args` describe (nothing is written).
@@ -182,27 +222,64 @@ pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
         RENDER_TIMING,
     )?;
     stats.cpu_prepare_ms += scene_ms;
-    let reference = match &args.error_image {
-        Some(_) if method.is_reference() => Some(image.clone()),
-        Some(_) => Some(reference::rasterize(&scene, &camera)?),
-        None => None,
+    let reference = match args.wants_reference() {
+        true if method.is_reference() => Some(image.clone()),
+        true => Some(reference::rasterize(&scene, &camera)?),
+        false => None,
     };
     if let Some(reference) = &reference {
         stats.error = Some(metrics::compare(&image, reference)?);
     }
+    let picture = if args.wants_picture() {
+        let focus = args.focus.unwrap_or(Focus::Worst);
+        let pixel = focus.pixel(image.width, image.height, stats.error.as_ref())?;
+        let window = Window::around(image.width, image.height, args.magnify, pixel);
+        let outline = if args.overlays.contains(&PictureOverlay::Outline) {
+            let tolerance_px = 0.2 / f64::from(window.factor);
+            Some(
+                outline::trace(
+                    &scene,
+                    &camera,
+                    &window.rect(),
+                    tolerance_px,
+                    f64::from(window.factor),
+                )
+                .map_err(Error::Input)?,
+            )
+        } else {
+            None
+        };
+        let layers = magnify::Layers {
+            overlay: overlay.as_ref(),
+            error_against: reference
+                .as_ref()
+                .filter(|_| args.overlays.contains(&PictureOverlay::Error)),
+            outline: outline.as_ref(),
+        };
+        let picture = magnify::picture(&image, &window, &layers, image.width, image.height);
+        Some((picture, window))
+    } else {
+        None
+    };
     Ok(Rendered {
         image,
         overlay,
         reference,
         stats,
+        picture,
     })
 }
 
 /// `glyphscope render`: renders, then writes the PNG and, if asked, the statistics.
 pub fn run_render(args: &RenderArgs) -> Result<(), Error> {
     let rendered = render(args)?;
-    match &rendered.overlay {
-        // An overlay is a picture, not coverage: it is written in colour.
+    let colour = rendered
+        .picture
+        .as_ref()
+        .map(|(picture, _)| picture)
+        .or(rendered.overlay.as_ref());
+    match colour {
+        // A picture is not coverage: it is written in colour.
         Some(picture) => picture
             .save(&args.out)
             .map_err(|e| Error::Output(format!("cannot write '{}': {e}", args.out.display())))?,
@@ -214,7 +291,19 @@ pub fn run_render(args: &RenderArgs) -> Result<(), Error> {
             .map_err(|e| Error::Output(format!("cannot write '{}': {e}", path.display())))?;
     }
     if let Some(path) = &args.stats {
-        let json = serde_json::to_string_pretty(&rendered.stats).expect("stats serialize");
+        /// The statistics, and the magnified window where there is one.
+        #[derive(serde::Serialize)]
+        struct Written<'a> {
+            #[serde(flatten)]
+            stats: &'a RenderStats,
+            #[serde(skip_serializing_if = "Option::is_none")]
+            magnified: Option<Window>,
+        }
+        let written = Written {
+            stats: &rendered.stats,
+            magnified: rendered.picture.as_ref().map(|(_, window)| *window),
+        };
+        let json = serde_json::to_string_pretty(&written).expect("stats serialize");
         std::fs::write(path, json + "\n")
             .map_err(|e| Error::Output(format!("cannot write '{}': {e}", path.display())))?;
     }

@@ -542,3 +542,133 @@ fn stability_sweeps_the_named_cases_and_rejects_unknown_names() {
         assert!(String::from_utf8_lossy(&result.stderr).contains(name));
     }
 }
+
+/// `render --magnify N --focus worst`: each N×N block of the picture is the pixel the
+/// plain render wrote at the window's place, and the window is centred on the pixel
+/// the error statistics name as the worst.
+#[test]
+fn magnified_blocks_are_the_rendered_pixels_around_the_worst() {
+    let view = [
+        "render",
+        "--text",
+        "Hamburg",
+        "--size",
+        "12",
+        "--width",
+        "160",
+        "--height",
+        "96",
+        "--method",
+        "winding",
+        "--param",
+        "aa=rays",
+        "--param",
+        "samples=1",
+    ];
+    let (plain, plain_stats, error) = (scratch("m.png"), scratch("m.json"), scratch("m-e.png"));
+    let mut args = view.to_vec();
+    args.extend([
+        "--out",
+        plain.to_str().unwrap(),
+        "--stats",
+        plain_stats.to_str().unwrap(),
+        "--error-image",
+        error.to_str().unwrap(),
+    ]);
+    run_ok(&args);
+    let (picture, picture_stats) = (scratch("m16.png"), scratch("m16.json"));
+    let mut args = view.to_vec();
+    args.extend([
+        "--magnify",
+        "16",
+        "--focus",
+        "worst",
+        "--out",
+        picture.to_str().unwrap(),
+        "--stats",
+        picture_stats.to_str().unwrap(),
+    ]);
+    run_ok(&args);
+    let read = |p: &PathBuf| -> serde_json::Value {
+        serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap()
+    };
+    let (plain_json, window) = (
+        read(&plain_stats),
+        read(&picture_stats)["magnified"].clone(),
+    );
+    let worst = &plain_json["error"]["worst_pixel"];
+    assert!(
+        plain_json["error"]["max"].as_f64().unwrap() > 0.05,
+        "{plain_json}"
+    );
+    assert_eq!(window["focus"], *worst, "{window}");
+    let coverage = image::open(&plain).unwrap().to_luma8();
+    let magnified = image::open(&picture).unwrap().to_rgb8();
+    assert_eq!(magnified.dimensions(), coverage.dimensions());
+    let field = |k: &str| window[k].as_u64().unwrap() as u32;
+    let (x0, y0, cols, rows) = (field("x0"), field("y0"), field("cols"), field("rows"));
+    // The focus lies inside the window.
+    let (fx, fy) = (
+        worst[0].as_u64().unwrap() as u32,
+        worst[1].as_u64().unwrap() as u32,
+    );
+    assert!((x0..x0 + cols).contains(&fx) && (y0..y0 + rows).contains(&fy));
+    let mut inked = 0;
+    for j in 0..rows {
+        for i in 0..cols {
+            // Inside the block, off the grid line on its top and left edge.
+            let (px, py) = (i * 16 + 8, j * 16 + 8);
+            if px >= magnified.width() || py >= magnified.height() {
+                continue;
+            }
+            let shown = magnified.get_pixel(px, py).0;
+            let value = coverage.get_pixel(x0 + i, y0 + j).0[0];
+            assert_eq!(
+                shown,
+                [value; 3],
+                "block ({i}, {j}) of pixel ({}, {})",
+                x0 + i,
+                y0 + j
+            );
+            inked += usize::from(value > 0);
+        }
+    }
+    assert!(inked > 10, "the window shows ink: {inked} blocks");
+}
+
+/// From ×32 the picture writes values and draws the outline; bad magnifier input is one
+/// line and exit 2.
+#[test]
+fn magnified_picture_draws_error_outline_and_refuses_bad_input() {
+    let picture = scratch("m32.png");
+    run_ok(&[
+        "render",
+        "--text",
+        "o",
+        "--size",
+        "10",
+        "--method",
+        "tessellation",
+        "--magnify",
+        "32",
+        "--overlay",
+        "error,outline",
+        "--width",
+        "64",
+        "--height",
+        "64",
+        "--out",
+        picture.to_str().unwrap(),
+    ]);
+    let img = image::open(&picture).unwrap().to_rgb8();
+    assert_eq!(img.dimensions(), (64, 64));
+    let orange = img.pixels().filter(|p| p.0 == [255, 170, 0]).count();
+    assert!(orange > 20, "the outline is drawn: {orange} pixels");
+    let base = ["--text", "a", "--size", "20", "--method", "reference"];
+    let with = |extra: &[&'static str]| [&base[..], extra].concat();
+    fails("magnify 0", &with(&["--magnify", "0"]), "magnify");
+    fails("magnify 65", &with(&["--magnify", "65"]), "magnify");
+    fails("focus word", &with(&["--focus", "middle"]), "focus");
+    fails("focus outside", &with(&["--focus", "5000,1"]), "outside");
+    fails("overlay name", &with(&["--overlay", "sparkles"]), "overlay");
+}

@@ -18,6 +18,8 @@ const LAYERS: &[(&str, u32)] = &[
     ("camera", 4),
     ("reference", 5),
     ("view", 5),
+    ("outline", 5),
+    ("magnify", 6),
     ("info", 6),
     ("gpu", 5),
     ("methods", 6),
