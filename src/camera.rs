@@ -34,6 +34,18 @@ pub struct Camera {
     pub world_offset: DVec2,
     /// Perspective tilt about the image's horizontal centre line, degrees, |tilt| < 90.
     pub tilt_deg: f64,
+    /// Set when this image is a window of a larger frame (see [`Camera::window`]): the
+    /// tilt stays the frame's, so each pixel shows what it shows in the frame.
+    pub crop: Option<Crop>,
+}
+
+/// Where a cropped camera's image lies in its frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Crop {
+    /// The frame pixel at this image's (0, 0).
+    pub offset: DVec2,
+    pub frame_width: u32,
+    pub frame_height: u32,
 }
 
 /// Largest image side accepted anywhere (GPU targets and the reference alike).
@@ -52,6 +64,31 @@ impl Camera {
             matrix: DMat2::IDENTITY,
             world_offset: DVec2::ZERO,
             tilt_deg: 0.0,
+            crop: None,
+        }
+    }
+
+    /// The camera of the `width`×`height` pixels of this image from (`x`, `y`): each of
+    /// its pixels is exactly the image's pixel (x + i, y + j), under a tilt too.
+    pub fn window(&self, x: u32, y: u32, width: u32, height: u32) -> Camera {
+        let shift = DVec2::new(f64::from(x), f64::from(y));
+        let crop = match self.crop {
+            Some(c) => Crop {
+                offset: c.offset + shift,
+                ..c
+            },
+            None => Crop {
+                offset: shift,
+                frame_width: self.width,
+                frame_height: self.height,
+            },
+        };
+        Camera {
+            width,
+            height,
+            origin: self.origin - shift,
+            crop: Some(crop),
+            ..*self
         }
     }
 
@@ -132,13 +169,18 @@ impl Camera {
     }
 
     /// The tilt as a homography of image pixels: the image plane turned by the tilt
-    /// about its horizontal centre line, seen by a pinhole at distance max(W, H).
+    /// about its horizontal centre line, seen by a pinhole at distance max(W, H) — of
+    /// the frame a window was cropped from, moved to the window's pixels.
     pub fn perspective(&self) -> DMat3 {
         if self.tilt_deg == 0.0 {
             return DMat3::IDENTITY;
         }
-        let centre = DVec2::new(f64::from(self.width), f64::from(self.height)) * 0.5;
-        let focal = f64::from(self.width.max(self.height));
+        let (width, height, offset) = match self.crop {
+            Some(c) => (c.frame_width, c.frame_height, c.offset),
+            None => (self.width, self.height, DVec2::ZERO),
+        };
+        let centre = DVec2::new(f64::from(width), f64::from(height)) * 0.5 - offset;
+        let focal = f64::from(width.max(height));
         let (sin, cos) = self.tilt_deg.to_radians().sin_cos();
         let to_centre = DMat3::from_translation(-centre);
         let from_centre = DMat3::from_translation(centre);
@@ -226,6 +268,27 @@ mod tests {
         let left_bottom = project(&p, DVec2::new(0.0, 100.0));
         // Positive tilt: the top edge (y < centre) comes nearer, the bottom recedes.
         assert!(left_top.x < 0.0 && left_bottom.x > 0.0);
+    }
+
+    #[test]
+    fn a_window_shows_the_frames_own_pixels_under_a_tilt() {
+        let mut frame = Camera::new(300, 200, 40.0, DVec2::new(20.0, 150.0));
+        frame.matrix = Camera::matrix_from_rows(0.9, 0.3, -0.2, 1.1);
+        frame.tilt_deg = 35.0;
+        let window = frame.window(120, 30, 17, 11).window(5, 2, 4, 4);
+        assert_eq!((window.width, window.height), (4, 4));
+        let (a, b) = (
+            frame.glyph_to_image(1000.0, DVec2::new(700.0, 0.0)),
+            window.glyph_to_image(1000.0, DVec2::new(700.0, 0.0)),
+        );
+        for p in [
+            DVec2::new(0.0, 0.0),
+            DVec2::new(300.0, 700.0),
+            DVec2::new(-50.0, 1200.0),
+        ] {
+            let expected = project(&a, p) - DVec2::new(125.0, 32.0);
+            assert!((project(&b, p) - expected).length() < 1e-9, "{p}");
+        }
     }
 
     #[test]

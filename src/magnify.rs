@@ -105,6 +105,11 @@ impl Window {
         }
     }
 
+    /// The window's first pixel.
+    pub fn origin(&self) -> DVec2 {
+        DVec2::new(f64::from(self.x0), f64::from(self.y0))
+    }
+
     /// The window in image pixels.
     pub fn rect(&self) -> Rect {
         let min = DVec2::new(f64::from(self.x0), f64::from(self.y0));

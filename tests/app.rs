@@ -477,3 +477,102 @@ fn settings_are_saved_and_restored() {
     assert_eq!(restored.layout, Layout::Grid);
     assert_eq!(restored.camera.size_px_per_em, 96.0);
 }
+
+/// The magnifier: Alt + wheel three notches over the text gives ×8 about the cursor,
+/// and the panes draw a window of the ×1 pane's own pixels, each as an 8×8 block on the
+/// screen; N halves it.
+#[test]
+fn the_magnifier_shows_the_panes_own_pixels_as_blocks() {
+    let mut settings = Settings {
+        layout: Layout::Single,
+        ..Settings::default()
+    };
+    settings.panes[0] = PaneSettings::method("winding");
+    let mut harness = harness(settings);
+    settle(&mut harness);
+    let whole = harness.state().pane_capture(0).expect("read back at rest");
+    let (rect, _, y0, w, y1) = clear_area(&harness, 0);
+    // A covered pixel in the clear part of the pane, to magnify about.
+    let target = (y0 + 40..y1 - 40)
+        .flat_map(|y| (40..w - 40).map(move |x| (x, y)))
+        .find(|&(x, y)| whole.get(x, y) == 1.0)
+        .expect("the text covers some pixel");
+    let pointer = rect.min + egui::vec2(target.0 as f32 + 0.5, target.1 as f32 + 0.5);
+    harness.hover_at(pointer);
+    // The pixel inspector's line appears under the view: the pane's height settles.
+    for _ in 0..3 {
+        harness.step();
+    }
+    let rect = harness.state().pane_rects()[0];
+    for _ in 0..3 {
+        harness.event(egui::Event::MouseWheel {
+            unit: egui::MouseWheelUnit::Line,
+            delta: egui::vec2(0.0, 1.0),
+            phase: egui::TouchPhase::Move,
+            source: egui::MouseWheelSource::Wheel,
+            modifiers: egui::Modifiers::ALT,
+        });
+        harness.step();
+    }
+    let window = harness.state().magnified_window().expect("laid out");
+    assert_eq!(window.factor, 8);
+    let cursor = pointer - rect.min;
+    let under = (
+        (cursor.x / 8.0) as u32 + window.x0,
+        (cursor.y / 8.0) as u32 + window.y0,
+    );
+    assert!(
+        under.0.abs_diff(target.0) <= 1 && under.1.abs_diff(target.1) <= 1,
+        "the pixel under the cursor moved from {target:?} to {under:?}"
+    );
+    // The pointer leaves the view (its inspector would cover blocks), and the view rests.
+    harness.hover_at(egui::pos2(2.0, 2.0));
+    let screen = settle(&mut harness);
+    let app = harness.state();
+    let window = app.magnified_window().expect("laid out");
+    let rect = app.pane_rects()[0];
+    let camera = app.camera().unwrap();
+    assert_eq!((camera.width, camera.height), (window.cols, window.rows));
+    assert_eq!(
+        (
+            (rect.width() as u32).div_ceil(8),
+            (rect.height() as u32).div_ceil(8)
+        ),
+        (window.cols, window.rows)
+    );
+    let magnified = app.pane_capture(0).expect("read back at rest");
+    // The window's pixels are the ×1 pane's: the same coverage, drawn again.
+    let mut inked = 0;
+    for j in 0..window.rows {
+        for i in 0..window.cols {
+            let (a, b) = (magnified.get(i, j), whole.get(window.x0 + i, window.y0 + j));
+            assert!(
+                (a - b).abs() <= 2e-3,
+                "pixel ({i}, {j}): {a} magnified, {b} at ×1"
+            );
+            inked += usize::from(a > 0.0);
+        }
+    }
+    assert!(inked > 20, "the window shows the text: {inked} pixels");
+    // Each block is its pixel, inside the grid lines, clear of the label and legend.
+    let mut worst = 0.0f32;
+    for j in (y0 / 8 + 1)..(y1 / 8).min(window.rows) {
+        for i in 0..(w / 8).min(window.cols) {
+            let expected = shown(magnified.get(i, j));
+            for (dx, dy) in [(2, 2), (5, 6), (7, 3)] {
+                let p = screen.get_pixel(
+                    rect.min.x as u32 + i * 8 + dx,
+                    rect.min.y as u32 + j * 8 + dy,
+                );
+                for channel in 0..3 {
+                    let d = (f32::from(p[channel]) - expected).abs();
+                    worst = worst.max(d);
+                }
+            }
+        }
+    }
+    assert!(worst <= 1.5, "a block is off its pixel by {worst}");
+    harness.key_press(egui::Key::N);
+    harness.step();
+    assert_eq!(harness.state().magnified_window().unwrap().factor, 4);
+}

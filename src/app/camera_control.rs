@@ -7,6 +7,7 @@ use glam::{DMat2, DVec2};
 use super::settings::CameraSettings;
 use crate::camera::Camera;
 use crate::geometry::project;
+use crate::magnify::{MAX_FACTOR, Window};
 use crate::scene::Scene;
 
 /// The zoom range the explorer offers, px/em.
@@ -36,6 +37,42 @@ impl CameraSettings {
         camera.matrix = self.matrix();
         camera.tilt_deg = self.tilt_deg;
         camera
+    }
+
+    /// The camera a pane of `width`×`height` pixels draws, and the window of its ×1
+    /// pixels that is: at ×1 the pane's own; magnified ×N, the ⌈W/N⌉×⌈H/N⌉ pixels
+    /// around the focus, which the pane shows as N×N blocks. Each drawn pixel is the one
+    /// the ×1 pane shows there (under a tilt too): magnifying changes no value.
+    pub fn pane_camera(&self, width: u32, height: u32) -> (Camera, Window) {
+        let frame = self.camera(width, height);
+        let pixel = |v: f64, size: u32| v.floor().clamp(0.0, f64::from(size - 1)) as u32;
+        let focus = (pixel(self.focus[0], width), pixel(self.focus[1], height));
+        let window = Window::around(width, height, self.magnify, focus);
+        if window.factor == 1 {
+            return (frame, window);
+        }
+        let camera = frame.window(window.x0, window.y0, window.cols, window.rows);
+        (camera, window)
+    }
+
+    /// Sets the magnification to `factor` keeping the ×1 pixel under `cursor` (pane
+    /// pixels, as drawn) under it.
+    pub fn magnify_about(&mut self, factor: u32, cursor: DVec2, width: u32, height: u32) {
+        let (_, before) = self.pane_camera(width, height);
+        let under = DVec2::new(f64::from(before.x0), f64::from(before.y0))
+            + cursor / f64::from(before.factor);
+        self.magnify = factor.clamp(1, MAX_FACTOR);
+        let n = f64::from(self.magnify);
+        let (cols, rows) = (
+            f64::from(width.div_ceil(self.magnify)),
+            f64::from(height.div_ceil(self.magnify)),
+        );
+        // Window::around starts the window half its size before the focus.
+        let start = under - cursor / n;
+        self.focus = [
+            start.x + (cols / 2.0).floor() + 0.5,
+            start.y + (rows / 2.0).floor() + 0.5,
+        ];
     }
 
     /// Font units → pixels, before the tilt: image = origin + linear · (x, y).

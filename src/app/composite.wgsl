@@ -1,6 +1,7 @@
 // Draws a pane of the explorer: a coverage texture (a method's target, or the reference
-// uploaded into one) turned into the picture to show, at one texel per framebuffer
-// pixel. Prefixed with shaders/common.wgsl for `heat_color`.
+// uploaded into one) turned into the picture to show, each texel a block of
+// `block`×`block` framebuffer pixels (1 unless magnified; nearest, never filtered).
+// Prefixed with shaders/common.wgsl for `heat_color`.
 
 struct Composite {
     // The pane's top-left corner in framebuffer pixels, and its size.
@@ -16,7 +17,8 @@ struct Composite {
     srgb_target: u32,
     // Difference at full intensity.
     difference_scale: f32,
-    _pad: f32,
+    // Framebuffer pixels per texel side: the magnifier draws each texel as a block.
+    block: f32,
 }
 
 @group(0) @binding(0) var<uniform> composite: Composite;
@@ -55,7 +57,7 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     if composite.mode == 3u {
         return as_stored(heat_color(local.x / composite.size.x));
     }
-    let texel = vec2<i32>(floor(local));
+    let texel = vec2<i32>(floor(local / composite.block));
     let a = textureLoad(first, texel, 0);
     if composite.mode == 1u {
         // Overlay pictures are written as display values, as the CLI saves them.

@@ -9,6 +9,7 @@ use super::panes::{REFERENCE, pane_controls, pane_letter};
 use super::settings::{FontChoice, Layout, PaneSource};
 use super::shortcuts::{Action, SHORTCUTS, key_name};
 use crate::font::SHIPPED_FONTS;
+use crate::magnify::MAX_FACTOR;
 
 impl Explorer {
     pub(super) fn controls(&mut self, ui: &mut egui::Ui) {
@@ -149,6 +150,7 @@ impl Explorer {
     fn camera_controls(&mut self, ui: &mut egui::Ui) {
         let upem = self.scene.units_per_em();
         let centre = self.view_centre();
+        let pane_size = self.pane_size();
         let camera = &mut self.settings.camera;
         let mut size = camera.size_px_per_em;
         ui.horizontal(|ui| {
@@ -201,7 +203,31 @@ impl Explorer {
                 .clicked()
                 && let Some(scene) = &scene
             {
-                self.settings.camera.fit(scene, centre * 2.0);
+                self.settings.camera.fit(scene, pane_size);
+            }
+            // The magnifier beside them, on this row so the panel keeps its height.
+            let camera = &mut self.settings.camera;
+            let mut factor = camera.magnify;
+            let (w, h) = (pane_size.x as u32, pane_size.y as u32);
+            ui.label("magnify");
+            if ui
+                .add(
+                    egui::DragValue::new(&mut factor)
+                        .range(1..=MAX_FACTOR)
+                        .speed(0.2)
+                        .prefix("×"),
+                )
+                .on_hover_text(
+                    "each pixel drawn as an N×N block, its true size kept (Alt + wheel, \
+                     M / N); a grid from ×8, values from ×32",
+                )
+                .changed()
+                && w > 0
+                && h > 0
+            {
+                let window = camera.pane_camera(w, h).1;
+                let drawn_centre = (centre - window.origin()) * f64::from(window.factor);
+                camera.magnify_about(factor, drawn_centre, w, h);
             }
         });
     }

@@ -42,7 +42,8 @@ struct CompositeUniform {
     mode: u32,
     srgb_target: u32,
     difference_scale: f32,
-    _pad: f32,
+    // Framebuffer pixels per texel side: the magnifier's N.
+    block: f32,
 }
 
 /// The pipeline that draws panes, for egui's framebuffer format.
@@ -285,6 +286,8 @@ pub struct PanePaint {
     pub text: egui::Rgba,
     pub background: egui::Rgba,
     pub difference_scale: f32,
+    /// Each texel drawn as a block of this many pixels a side (the magnifier).
+    pub block: u32,
     /// The pane, in points.
     pub rect: egui::Rect,
 }
@@ -331,7 +334,7 @@ impl egui_wgpu::CallbackTrait for PanePaint {
             },
             srgb_target: u32::from(self.compositor.srgb_target),
             difference_scale: self.difference_scale,
-            _pad: 0.0,
+            block: self.block as f32,
         };
         let buffer = surface.uniform.get_or_insert_with(|| {
             gpu.device.create_buffer(&wgpu::BufferDescriptor {

@@ -147,6 +147,11 @@ impl Explorer {
         self.view.camera
     }
 
+    /// The pixels of a ×1 pane the panes draw this frame, and their magnification.
+    pub fn magnified_window(&self) -> Option<crate::magnify::Window> {
+        self.view.window
+    }
+
     /// Where the visible panes are on the screen, in points.
     pub fn pane_rects(&self) -> &[egui::Rect] {
         &self.view.rects
@@ -197,10 +202,11 @@ impl Explorer {
     /// the view is what the settings say (nothing changed since it was laid out).
     pub fn settled(&self) -> bool {
         let up_to_date = self.scene.is_built_for(&self.settings.scene)
-            && self
-                .view
-                .camera
-                .is_some_and(|c| c == self.settings.camera.camera(c.width, c.height))
+            && self.view.camera.is_some_and(|c| {
+                self.view
+                    .pane_size
+                    .is_some_and(|(w, h)| c == self.settings.camera.pane_camera(w, h).0)
+            })
             && (0..self.settings.layout.panes()).all(|i| {
                 self.panes[i].is_built_for(&self.settings.panes[i], self.scene.generation())
             });
@@ -228,11 +234,20 @@ impl Explorer {
         }
     }
 
-    /// The centre of a pane, pixels (the origin before the view is laid out).
+    /// The centre of what a pane shows, in its ×1 pixels (the magnified window's
+    /// centre when magnified): what keys and sliders zoom and rotate about.
     fn view_centre(&self) -> DVec2 {
-        self.view.camera.map_or(DVec2::ZERO, |c| {
-            DVec2::new(f64::from(c.width), f64::from(c.height)) / 2.0
+        self.view.window.map_or(DVec2::ZERO, |w| {
+            DVec2::new(f64::from(w.x0), f64::from(w.y0))
+                + DVec2::new(f64::from(w.cols), f64::from(w.rows)) / 2.0
         })
+    }
+
+    /// A pane's size in pixels, unmagnified.
+    fn pane_size(&self) -> DVec2 {
+        self.view
+            .pane_size
+            .map_or(DVec2::ZERO, |(w, h)| DVec2::new(f64::from(w), f64::from(h)))
     }
 
     fn set_status(&self, message: String) {

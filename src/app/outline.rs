@@ -16,21 +16,25 @@ const TOLERANCE_PX: f64 = 0.2;
 const OUTLINE: egui::Color32 = egui::Color32::from_rgb(255, 170, 0);
 const HANDLE: egui::Color32 = egui::Color32::from_rgb(120, 170, 255);
 
-/// Draws the outline of the instances in view; returns how many glyphs were in view, or
-/// an error message when there were too many to draw.
+/// Draws the outline of the instances in view, each image pixel `block` framebuffer
+/// pixels a side (the magnifier); returns how many glyphs were in view, or an error
+/// message when there were too many to draw.
 pub fn paint(
     painter: &egui::Painter,
     scene: &Scene,
     camera: &Camera,
     pixels_per_point: f32,
+    block: u32,
 ) -> Result<usize, String> {
     let view = Rect {
         min: DVec2::ZERO,
         max: DVec2::new(f64::from(camera.width), f64::from(camera.height)),
     };
-    let drawing = outline::trace(scene, camera, &view, TOLERANCE_PX, 1.0)?;
+    let block = f64::from(block);
+    let drawing = outline::trace(scene, camera, &view, TOLERANCE_PX / block, block)?;
     let origin = painter.clip_rect().min;
-    let to_screen = |p: DVec2| origin + egui::vec2(p.x as f32, p.y as f32) / pixels_per_point;
+    let scale = block as f32 / pixels_per_point;
+    let to_screen = |p: DVec2| origin + egui::vec2(p.x as f32, p.y as f32) * scale;
     let line = egui::Stroke::new(1.0, OUTLINE);
     for [a, b] in &drawing.lines {
         painter.line_segment([to_screen(*a), to_screen(*b)], line);

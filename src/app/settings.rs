@@ -119,6 +119,10 @@ pub struct CameraSettings {
     /// Horizontal shear: x += skew·y before the rotation.
     pub skew: f64,
     pub tilt_deg: f64,
+    /// The pixel magnifier: each pixel drawn as an N×N block (1: off), N ≤ 64.
+    pub magnify: u32,
+    /// The pane pixel (at ×1) the magnified window is centred on.
+    pub focus: [f64; 2],
 }
 
 impl Default for CameraSettings {
@@ -129,6 +133,8 @@ impl Default for CameraSettings {
             rotation_deg: 0.0,
             skew: 0.0,
             tilt_deg: 0.0,
+            magnify: 1,
+            focus: [0.0, 0.0],
         }
     }
 }
@@ -245,6 +251,10 @@ pub(super) fn sanitize(settings: &mut Settings) {
         .size_px_per_em
         .clamp(MIN_SIZE_PX_PER_EM, MAX_SIZE_PX_PER_EM);
     c.tilt_deg = c.tilt_deg.clamp(-MAX_TILT_DEG, MAX_TILT_DEG);
+    c.magnify = c.magnify.clamp(1, crate::magnify::MAX_FACTOR);
+    if !c.focus.iter().all(|v| v.is_finite()) {
+        c.focus = [0.0, 0.0];
+    }
 }
 
 #[cfg(test)]

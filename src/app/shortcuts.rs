@@ -46,6 +46,8 @@ pub enum Action {
     Zoom(f64),
     /// Rotates by this many degrees (counter-clockwise) about the pane's centre.
     Rotate(f64),
+    /// Multiplies the magnifier's N by this (×2 or ÷2), about the pane's centre.
+    Magnify(bool),
     ResetCamera,
     FitText,
     SetLayout(Layout),
@@ -105,6 +107,11 @@ pub const SHORTCUTS: &[Shortcut] = &[
     keyed("[ / ]", "rotate −15° / +15°", &[
         bind(&[key(Key::OpenBracket)], Action::Rotate(-15.0)),
         bind(&[key(Key::CloseBracket)], Action::Rotate(15.0)),
+    ]),
+    pointer("Alt + wheel", "magnify the pixels ×2 / ÷2 about the cursor (×1 to ×64)"),
+    keyed("M / N", "magnify the pixels ×2 / ÷2", &[
+        bind(&[key(Key::M)], Action::Magnify(true)),
+        bind(&[key(Key::N)], Action::Magnify(false)),
     ]),
     keyed("R", "reset the camera", &[bind(&[key(Key::R)], Action::ResetCamera)]),
     keyed("F", "fit the text to the pane", &[bind(&[key(Key::F)], Action::FitText)]),
@@ -171,6 +178,7 @@ impl Explorer {
 
     fn perform(&mut self, action: Action, ctx: &egui::Context) {
         let centre = self.view_centre();
+        let pane_size = self.pane_size();
         let upem = self.scene.units_per_em();
         let camera = &mut self.settings.camera;
         let visible = self.settings.layout.panes();
@@ -179,6 +187,19 @@ impl Explorer {
             Action::Pan(delta) => camera.pan(delta),
             Action::Zoom(factor) => camera.zoom(factor, centre, upem),
             Action::Rotate(degrees) => camera.rotate(degrees, centre, upem),
+            Action::Magnify(up) => {
+                let factor = if up {
+                    camera.magnify * 2
+                } else {
+                    camera.magnify / 2
+                };
+                let (w, h) = (pane_size.x as u32, pane_size.y as u32);
+                if w > 0 && h > 0 {
+                    let window = camera.pane_camera(w, h).1;
+                    let drawn_centre = (centre - window.origin()) * f64::from(window.factor);
+                    camera.magnify_about(factor, drawn_centre, w, h);
+                }
+            }
             Action::ResetCamera => {
                 if let Some(scene) = self.scene.scene() {
                     camera.reset(scene);
@@ -186,7 +207,7 @@ impl Explorer {
             }
             Action::FitText => {
                 if let Some(scene) = self.scene.scene() {
-                    camera.fit(scene, centre * 2.0);
+                    camera.fit(scene, pane_size);
                 }
             }
             Action::SetLayout(layout) => self.settings.layout = layout,
@@ -249,7 +270,7 @@ mod tests {
     /// number past `KINDS` fails the test.
     #[test]
     fn every_action_is_bound_in_exactly_one_row() {
-        const KINDS: usize = 14;
+        const KINDS: usize = 15;
         let kind = |action: Action| match action {
             Action::Pan(_) => 0,
             Action::Zoom(_) => 1,
@@ -265,6 +286,7 @@ mod tests {
             Action::OpenFont => 11,
             Action::Screenshot => 12,
             Action::ToggleHelp => 13,
+            Action::Magnify(_) => 14,
         };
         let mut rows: [Vec<&str>; KINDS] = Default::default();
         for shortcut in SHORTCUTS {

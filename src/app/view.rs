@@ -16,6 +16,7 @@ use super::panes::{REFERENCE, pane_letter, subtrahend_label};
 use super::settings::{PaneOverlay, PaneSource};
 use crate::camera::Camera;
 use crate::gpu::shaders::COST_SCALE_CURVES;
+use crate::magnify::{GRID_FROM, VALUES_FROM, Window};
 use crate::methods::Overlay;
 
 /// Space between panes, points.
@@ -36,8 +37,16 @@ pub struct ViewKey {
 /// The pane layout and hover of the last frame.
 #[derive(Default)]
 pub struct ViewState {
-    /// The camera every pane shares this frame (its size: one pane, in pixels).
+    /// The camera every pane shares this frame (its size: one pane, in pixels, or the
+    /// magnifier's window of it).
     pub camera: Option<Camera>,
+    /// The pixels of the ×1 pane that camera draws, and their magnification.
+    pub window: Option<Window>,
+    /// One pane's size in pixels, unmagnified.
+    pub pane_size: Option<(u32, u32)>,
+    /// The wheel's scroll action began with Alt: what egui still smooths out of it is
+    /// the magnifier's, not a zoom.
+    magnifying_scroll: bool,
     pub key: Option<ViewKey>,
     changed_at: f64,
     pub analysed: Option<ViewKey>,
@@ -74,8 +83,10 @@ impl Explorer {
 
         self.steer(ui, area, &rects, ppp);
         self.view.rects = rects.clone();
-        let camera = self.settings.camera.camera(width, height);
+        let (camera, window) = self.settings.camera.pane_camera(width, height);
         self.view.camera = Some(camera);
+        self.view.window = Some(window);
+        self.view.pane_size = Some((width, height));
 
         let Some((gpu, _)) = self.gpu.clone() else {
             return;
@@ -122,10 +133,12 @@ impl Explorer {
         );
         let upem = self.scene.units_per_em();
         if response.dragged() {
+            let block = f64::from(self.settings.camera.magnify.max(1));
+            // Magnified, the text follows the pointer block for block.
             let d = response.drag_delta() * ppp;
             self.settings
                 .camera
-                .pan(DVec2::new(f64::from(d.x), f64::from(d.y)));
+                .pan(DVec2::new(f64::from(d.x), f64::from(d.y)) / block);
         }
         self.view.hovered = None;
         let Some(pointer) = response.hover_pos() else {
@@ -136,19 +149,59 @@ impl Explorer {
             return;
         };
         let local = (pointer - rect.min) * ppp;
-        let anchor = DVec2::new(f64::from(local.x), f64::from(local.y));
-        let (scroll, pinch) = ui.input(|i| (i.smooth_scroll_delta.y, i.zoom_delta()));
-        let factor = f64::from(pinch) * (f64::from(scroll) * WHEEL_ZOOM_PER_POINT).exp();
-        if factor != 1.0 {
-            let (width, height) = (rect.width() * ppp, rect.height() * ppp);
-            let anchor =
-                self.settings
-                    .camera
-                    .untilted(anchor, width.round() as u32, height.round() as u32);
-            self.settings.camera.zoom(factor, anchor, upem);
+        let cursor = DVec2::new(f64::from(local.x), f64::from(local.y));
+        let (width, height) = (
+            (rect.width() * ppp).round() as u32,
+            (rect.height() * ppp).round() as u32,
+        );
+        let window = self.settings.camera.pane_camera(width, height).1;
+        let block = f64::from(window.factor);
+        // The ×1 pane pixel under the cursor.
+        let under = DVec2::new(f64::from(window.x0), f64::from(window.y0)) + cursor / block;
+        let (scroll, pinch, alt, scrolling) = ui.input(|i| {
+            (
+                i.smooth_scroll_delta.y,
+                i.zoom_delta(),
+                i.modifiers.alt,
+                i.is_scrolling(),
+            )
+        });
+        self.view.magnifying_scroll &= scrolling;
+        // Alt + wheel, from the wheel's own events (unsmoothed, each with its modifiers):
+        // the magnifier, one notch a doubling, about the cursor.
+        let magnify_scroll: f32 = ui.input(|i| {
+            i.raw
+                .events
+                .iter()
+                .map(|e| match e {
+                    egui::Event::MouseWheel {
+                        delta, modifiers, ..
+                    } if modifiers.alt => delta.y,
+                    _ => 0.0,
+                })
+                .sum()
+        });
+        if magnify_scroll != 0.0 {
+            self.view.magnifying_scroll = true;
+            let factor = if magnify_scroll > 0.0 {
+                window.factor * 2
+            } else {
+                window.factor / 2
+            };
+            self.settings
+                .camera
+                .magnify_about(factor, cursor, width, height);
+        } else if !alt && !self.view.magnifying_scroll {
+            let factor = f64::from(pinch) * (f64::from(scroll) * WHEEL_ZOOM_PER_POINT).exp();
+            if factor != 1.0 {
+                let anchor = self.settings.camera.untilted(under, width, height);
+                self.settings.camera.zoom(factor, anchor, upem);
+            }
         }
-        let (x, y) = (local.x.floor(), local.y.floor());
-        if x >= 0.0 && y >= 0.0 && x < rect.width() * ppp && y < rect.height() * ppp {
+        // The pixel of the drawn image (the window's, when magnified) under the cursor,
+        // bounded in whole pixels.
+        let (x, y) = ((cursor.x / block).floor(), (cursor.y / block).floor());
+        if x >= 0.0 && y >= 0.0 && (x as u32) < window.cols && (y as u32) < window.rows {
             self.view.hovered = Some((index, x as u32, y as u32));
         }
     }
@@ -188,6 +241,7 @@ impl Explorer {
             text: color(self.settings.text_color).into(),
             background: color(self.settings.background).into(),
             difference_scale: self.settings.difference_scale,
+            block: self.view.window.map_or(1, |w| w.factor),
             rect,
         };
         let waiting = "error: shown once the view rests and the reference is ready".to_string();
@@ -276,9 +330,19 @@ impl Explorer {
         let settings = &self.settings.panes[index];
         let painter = ui.painter_at(rect);
         let mut notes: Vec<String> = Vec::new();
+        let block = self.view.window.map_or(1, |w| w.factor);
+        if block >= GRID_FROM {
+            paint_grid(&painter, rect, block, ppp);
+        }
+        if block >= VALUES_FROM
+            && let Some((captured, image)) = &self.panes[index].capture
+            && Some(*captured) == self.view.camera
+        {
+            paint_values(&painter, rect, block, ppp, image);
+        }
         if settings.outline
             && let Some(scene) = self.scene.scene()
-            && let Err(e) = outline::paint(&painter, scene, camera, ppp)
+            && let Err(e) = outline::paint(&painter, scene, camera, ppp, block)
         {
             notes.push(e);
         }
@@ -424,6 +488,7 @@ impl Explorer {
                 text: egui::Rgba::WHITE,
                 background: egui::Rgba::BLACK,
                 difference_scale: 1.0,
+                block: 1,
                 rect: bar,
             };
             painter.add(egui_wgpu::Callback::new_paint_callback(bar, paint));
@@ -561,6 +626,53 @@ impl Explorer {
             pane_generations,
         });
         self.view.analysed = Some(key);
+    }
+}
+
+/// One line between each two blocks of a magnified pane.
+fn paint_grid(painter: &egui::Painter, rect: egui::Rect, block: u32, ppp: f32) {
+    let step = block as f32 / ppp;
+    let stroke = egui::Stroke::new(1.0 / ppp, egui::Color32::from_gray(110).gamma_multiply(0.6));
+    let mut x = rect.min.x;
+    while x <= rect.max.x {
+        painter.vline(x, rect.y_range(), stroke);
+        x += step;
+    }
+    let mut y = rect.min.y;
+    while y <= rect.max.y {
+        painter.hline(rect.x_range(), y, stroke);
+        y += step;
+    }
+}
+
+/// Each block's coverage, as read back, written in it.
+fn paint_values(
+    painter: &egui::Painter,
+    rect: egui::Rect,
+    block: u32,
+    ppp: f32,
+    image: &crate::coverage::CoverageImage,
+) {
+    let step = block as f32 / ppp;
+    let font = egui::FontId::monospace((step / 4.0).clamp(6.0, 14.0));
+    for y in 0..image.height {
+        for x in 0..image.width {
+            let v = image.get(x, y);
+            let min = rect.min + egui::vec2(x as f32, y as f32) * step;
+            if min.x >= rect.max.x || min.y >= rect.max.y {
+                continue;
+            }
+            // White on a black shadow: legible over any text and background colour.
+            for (offset, ink) in [(3.0, egui::Color32::BLACK), (2.0, egui::Color32::WHITE)] {
+                painter.text(
+                    min + egui::vec2(offset, offset),
+                    egui::Align2::LEFT_TOP,
+                    format!("{v:.2}"),
+                    font.clone(),
+                    ink,
+                );
+            }
+        }
     }
 }
 
