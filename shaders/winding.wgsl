@@ -303,8 +303,16 @@ fn band_for(g: Glyph, sample_local: vec2<f32>, axis: u32) -> Band {
     let lo = select(g.bounds.y, g.bounds.x, axis == 1u);
     let hi = select(g.bounds.w, g.bounds.z, axis == 1u);
     let across = select(sample_local.y, sample_local.x, axis == 1u);
+    let first = g.first_band + select(0u, g.band_count_h, axis == 1u);
+    // A glyph flat across the ray (every point on one line) has bands of zero height,
+    // all holding the same curves: take the first. Dividing by its zero extent gives
+    // NaN on that line, whose conversion to u32 is undefined, and a band index out of
+    // range reads another glyph's curves.
+    if !(hi > lo) {
+        return bands[first];
+    }
     let index = u32(clamp(floor((across - lo) / (hi - lo) * f32(count)), 0.0, f32(count - 1u)));
-    return bands[g.first_band + select(0u, g.band_count_h, axis == 1u) + index];
+    return bands[first + index];
 }
 
 // Cast towards the nearer side of the glyph: fewer curves lie that way.

@@ -420,3 +420,47 @@ fn bad_parameters_are_clear_errors() {
         assert!(err.contains(expect), "{key}={value}: {err}");
     }
 }
+
+/// A glyph flat across a ray (every point on one line: zero height, or zero width) has
+/// bands of zero extent. Each ray must still read its own glyph's bands, on the flat
+/// line itself too, where the band index was 0/0. Pixel centres lie on both flat lines,
+/// and the glyph drawn last covers, in its own local units, every point of the flat
+/// ones: a band read from it would show as full pixels where the reference has none.
+#[test]
+fn a_glyph_flat_across_a_ray_reads_its_own_bands() {
+    use glyphscope::geometry::{Contour, Outline, Segment};
+    let p = |x: f64, y: f64| DVec2::new(x, y);
+    let flat = |a: DVec2, b: DVec2| Outline {
+        contours: vec![Contour {
+            segments: vec![Segment::Quad(a, (a + b) * 0.5, b), Segment::Line(b, a)],
+        }],
+    };
+    let scene = Scene::from_outlines(
+        cases::SYNTHETIC_UNITS_PER_EM,
+        vec![
+            (flat(p(0.0, 0.0), p(100.0, 0.0)), p(0.0, 0.0)),
+            (flat(p(0.0, 0.0), p(0.0, 100.0)), p(200.0, -150.0)),
+            (polygons(&[&rect(-40.0, -40.0, 140.0, 140.0)[..]]), p(400.0, -300.0)),
+        ],
+    );
+    // 1 px per unit; font (x, y) at image (x + 10.5, 20.5 − y): both flat lines run
+    // through pixel centres.
+    let cam = Camera::new(560, 380, 1000.0, DVec2::new(10.5, 20.5));
+    let expected = reference::rasterize(&scene, &cam).unwrap();
+    let gpu = gpu();
+    for params in [&[][..], &[("samples", "4")], &[("rays", "1")]] {
+        let got = render(&gpu, winding(params).as_mut(), &scene, &cam);
+        let s = compare(&got, &expected).unwrap();
+        assert_eq!(s.invalid_pixels, 0, "{params:?}: {s:?}");
+        // The rays' claim, anywhere in the frame.
+        assert!(s.max <= 0.5, "{params:?}: {s:?}");
+        // Nothing on the flat glyphs' lines: the reference has nothing there.
+        for (x, y) in (0..100).map(|k| (10 + k, 20)).chain((0..100).map(|k| (210, 70 + k))) {
+            assert!(
+                got.get(x, y) < 0.01,
+                "{params:?}: ({x}, {y}) reads {}",
+                got.get(x, y)
+            );
+        }
+    }
+}
