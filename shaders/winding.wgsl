@@ -805,7 +805,8 @@ fn fs_main(in: GlyphQuad) -> @location(0) vec4<f32> {
         return vec4<f32>(heat * (0.45 + 0.55 * coverage), coverage);
     }
     if OVERLAY == 3u {
-        // Counting pass: the number of curves evaluated, exact in half floats.
+        // Counting pass: the number of curves evaluated, exact in the half-float target
+        // up to 2048 (kit::EXACT_COUNT_LIMIT); counts past it are reported as at least that.
         return vec4<f32>(f32(evaluated), 0.0, 0.0, coverage);
     }
     return vec4<f32>(coverage);

@@ -464,3 +464,43 @@ fn a_glyph_flat_across_a_ray_reads_its_own_bands() {
         }
     }
 }
+
+/// The counting pass writes half floats, exact for every count up to 2048 only: a pixel
+/// past that reports its count as a lower bound, saying so, rather than a rounded count
+/// that looks exact. Brute force with one ray and one sample evaluates every curve of the
+/// glyph once per pixel, so each covered pixel's count is the glyph's curve count.
+#[test]
+fn curve_counts_past_what_half_floats_hold_are_flagged() {
+    let gpu = gpu();
+    // Squares 4 units wide, 6 apart, in rows of 32, and a triangle: 4·squares + 3 curves.
+    let glyph = |squares: usize| {
+        let mut contours: Vec<Vec<(f64, f64)>> = (0..squares)
+            .map(|k| {
+                let (x, y) = ((k % 32) as f64 * 6.0, (k / 32) as f64 * 6.0);
+                rect(x, y, x + 4.0, y + 4.0)
+            })
+            .collect();
+        contours.push(vec![(0.0, -10.0), (8.0, -10.0), (0.0, -4.0)]);
+        let contours: Vec<&[(f64, f64)]> = contours.iter().map(Vec::as_slice).collect();
+        (single(polygons(&contours)), 4 * squares + 3)
+    };
+    let params = [("rays", "1"), ("samples", "1"), ("bands", "off")];
+    for squares in [509, 625] {
+        let (scene, curves) = glyph(squares);
+        let cam = framed(&scene, 1000.0, [1.0, 0.0, 0.0, 1.0], DVec2::new(0.5, 0.5));
+        let mut method = winding(&params);
+        method.prepare(&gpu, &scene).unwrap();
+        let cost = method.curves_per_pixel(&gpu, &cam).unwrap().unwrap();
+        if curves < 2048 {
+            assert_eq!(cost.saturated, 0, "{curves} curves: {cost:?}");
+            assert_eq!(cost.max, curves as u32, "{cost:?}");
+            assert!((cost.mean - curves as f64).abs() < 1e-9, "{cost:?}");
+        } else {
+            // 2503 curves: a half float holds 2502 or 2504, never the count.
+            assert!(cost.saturated > 0, "{curves} curves: {cost:?}");
+            assert_eq!(cost.max, 2048, "{cost:?}");
+            assert_eq!(cost.max_text(), "≥ 2048");
+            assert!(cost.mean <= curves as f64, "{cost:?}");
+        }
+    }
+}

@@ -373,7 +373,7 @@ impl Explorer {
         if let Some((c, cost)) = &pane.curves
             && Some(*c) == self.view.camera
         {
-            lines.push(format!("curves/px {:.2} mean, {} max", cost.mean, cost.max));
+            lines.push(format!("curves/px {:.2} mean, {} max", cost.mean, cost.max_text()));
         }
         lines
     }

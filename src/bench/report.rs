@@ -123,7 +123,7 @@ pub fn markdown(result: &BenchResult) -> String {
                     .map_or_else(|| sig(case.cpu_prepare_ms), sig),
                 bytes(case.gpu_bytes),
                 case.curves_per_pixel
-                    .map_or("—".into(), |c| format!("{:.1} ({})", c.mean, c.max)),
+                    .map_or("—".into(), |c| format!("{:.1} ({})", c.mean, c.max_text())),
                 case.mesh_points.map_or("—".into(), |p| p.to_string()),
                 case.error.mae_255,
                 case.error.edge.mae_255,
