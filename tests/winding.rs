@@ -504,3 +504,138 @@ fn curve_counts_past_what_half_floats_hold_are_flagged() {
         }
     }
 }
+
+/// winding.wgsl's `combine_rays` on the GPU, for each (x coverage, y coverage, x sight,
+/// y sight): the shader's own function, run by a compute entry point appended to it.
+fn combine_rays(gpu: &GpuContext, inputs: &[[f32; 4]]) -> Vec<f32> {
+    use wgpu::util::DeviceExt;
+    let probe = "
+@group(0) @binding(8) var<storage, read> probe_inputs: array<vec4<f32>>;
+@group(0) @binding(9) var<storage, read_write> probe_outputs: array<f32>;
+@compute @workgroup_size(64)
+fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
+    if id.x < arrayLength(&probe_inputs) {
+        let v = probe_inputs[id.x];
+        probe_outputs[id.x] = combine_rays(v.x, v.y, v.z, v.w);
+    }
+}
+";
+    let shader = methods::registry::find("winding").unwrap().shader.unwrap();
+    let device = &gpu.device;
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("combine_rays probe"),
+        source: wgpu::ShaderSource::Wgsl(format!("{}\n{probe}", shader.source()).into()),
+    });
+    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+        label: Some("combine_rays probe"),
+        layout: None,
+        module: &module,
+        entry_point: Some("probe"),
+        compilation_options: Default::default(),
+        cache: None,
+    });
+    let input = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("probe inputs"),
+        contents: bytemuck::cast_slice(inputs),
+        usage: wgpu::BufferUsages::STORAGE,
+    });
+    let size = (inputs.len() * 4) as u64;
+    let output = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("probe outputs"),
+        size,
+        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+        mapped_at_creation: false,
+    });
+    let readback = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("probe readback"),
+        size,
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("probe"),
+        layout: &pipeline.get_bind_group_layout(0),
+        entries: &[
+            wgpu::BindGroupEntry {
+                binding: 8,
+                resource: input.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: 9,
+                resource: output.as_entire_binding(),
+            },
+        ],
+    });
+    let mut encoder = device.create_command_encoder(&Default::default());
+    {
+        let mut pass = encoder.begin_compute_pass(&Default::default());
+        pass.set_pipeline(&pipeline);
+        pass.set_bind_group(0, &bind_group, &[]);
+        pass.dispatch_workgroups(inputs.len().div_ceil(64) as u32, 1, 1);
+    }
+    encoder.copy_buffer_to_buffer(&output, 0, &readback, 0, size);
+    gpu.queue.submit([encoder.finish()]);
+    readback.map_async(wgpu::MapMode::Read, .., |mapped| mapped.unwrap());
+    device
+        .poll(wgpu::PollType::wait_indefinitely())
+        .unwrap();
+    let view = readback.get_mapped_range(..).unwrap();
+    bytemuck::cast_slice::<u8, f32>(&view).to_vec()
+}
+
+/// The two rays' blend is continuous where the weights' total falls to 0 (both rays
+/// blind, or a corner at the sample, both fully sighted): a weight of 1e-7 once handed
+/// one ray everything, a weight of 0 half (the 0.4998 pixels). Claimed before measuring,
+/// from the blend's form: trust rises from 0 to 1 over a ramp R = 1/8 of total weight
+/// by smoothstep (slope at most 1.5/R) and moves a value at most ½ from the average;
+/// the weighted mean moves at most 1/total per unit of sight, and trust ≤ 3(total/R)²
+/// below R: so a unit change of one sight moves the value by at most 0.75/R + 3/R, under
+/// 32. Away from the ramp nothing changes: one ray fully sighted and the other blind
+/// gives the first ray's coverage, both fully sighted their average.
+#[test]
+fn the_two_rays_blend_continuously_as_their_weights_vanish() {
+    const LIPSCHITZ: f32 = 32.0;
+    let step = 1.0 / 4096.0;
+    // Sights swept one at a time towards the places where the total vanishes, with the
+    // coverages as far apart as they go.
+    let mut paths: Vec<Vec<[f32; 4]>> = Vec::new();
+    for other in [0.0, 1e-6, 0.01, 0.3, 0.999, 1.0] {
+        for (x_coverage, y_coverage) in [(1.0, 0.0), (0.0, 1.0), (0.25, 0.75)] {
+            let sights = (0..=4096).map(|k| k as f32 * step);
+            paths.push(sights.clone().map(|s| [x_coverage, y_coverage, s, other]).collect());
+            paths.push(sights.map(|s| [x_coverage, y_coverage, other, s]).collect());
+        }
+    }
+    let inputs: Vec<[f32; 4]> = paths.concat();
+    let gpu = gpu();
+    let values = combine_rays(&gpu, &inputs);
+    let mut worst = 0.0f32;
+    for (k, pair) in inputs.windows(2).enumerate() {
+        let (a, b) = (pair[0], pair[1]);
+        let (va, vb) = (values[k], values[k + 1]);
+        assert!(va.is_finite() && (0.0..=1.0).contains(&va), "{a:?} → {va}");
+        if a[..2] != b[..2] || (a[2] != b[2] && a[3] != b[3]) {
+            continue; // the next path starts
+        }
+        let moved = (a[2] - b[2]).abs() + (a[3] - b[3]).abs();
+        let slope = (va - vb).abs() / moved;
+        worst = worst.max(slope);
+        assert!(
+            slope <= LIPSCHITZ,
+            "{a:?} → {va}, {b:?} → {vb}: slope {slope}"
+        );
+    }
+    println!("steepest slope of the blend per unit of sight: {worst:.2}");
+    let settled = combine_rays(
+        &gpu,
+        &[
+            [0.3, 1.0, 1.0, 0.0],
+            [1.0, 0.3, 0.0, 1.0],
+            [0.3, 1.0, 1.0, 1.0],
+            [0.3, 1.0, 0.0, 0.0],
+        ],
+    );
+    for (got, want) in settled.iter().zip([0.3, 0.3, 0.65, 0.65]) {
+        assert!((got - want).abs() < 1e-6, "{settled:?}");
+    }
+}
