@@ -551,7 +551,9 @@ fn stability_sweeps_the_named_cases_and_rejects_unknown_names() {
 fn headless_render_probes_no_display() {
     let out = scratch("headless.png");
     let result = bin()
-        .args(["render", "--text", "Hi", "--size", "24", "--method", "winding"])
+        .args([
+            "render", "--text", "Hi", "--size", "24", "--method", "winding",
+        ])
         .args(["--out", out.to_str().unwrap()])
         .env_remove("XDG_RUNTIME_DIR")
         .env_remove("WAYLAND_DISPLAY")

@@ -440,7 +440,10 @@ fn a_glyph_flat_across_a_ray_reads_its_own_bands() {
         vec![
             (flat(p(0.0, 0.0), p(100.0, 0.0)), p(0.0, 0.0)),
             (flat(p(0.0, 0.0), p(0.0, 100.0)), p(200.0, -150.0)),
-            (polygons(&[&rect(-40.0, -40.0, 140.0, 140.0)[..]]), p(400.0, -300.0)),
+            (
+                polygons(&[&rect(-40.0, -40.0, 140.0, 140.0)[..]]),
+                p(400.0, -300.0),
+            ),
         ],
     );
     // 1 px per unit; font (x, y) at image (x + 10.5, 20.5 − y): both flat lines run
@@ -455,7 +458,10 @@ fn a_glyph_flat_across_a_ray_reads_its_own_bands() {
         // The rays' claim, anywhere in the frame.
         assert!(s.max <= 0.5, "{params:?}: {s:?}");
         // Nothing on the flat glyphs' lines: the reference has nothing there.
-        for (x, y) in (0..100).map(|k| (10 + k, 20)).chain((0..100).map(|k| (210, 70 + k))) {
+        for (x, y) in (0..100)
+            .map(|k| (10 + k, 20))
+            .chain((0..100).map(|k| (210, 70 + k)))
+        {
             assert!(
                 got.get(x, y) < 0.01,
                 "{params:?}: ({x}, {y}) reads {}",
@@ -576,9 +582,7 @@ fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
     encoder.copy_buffer_to_buffer(&output, 0, &readback, 0, size);
     gpu.queue.submit([encoder.finish()]);
     readback.map_async(wgpu::MapMode::Read, .., |mapped| mapped.unwrap());
-    device
-        .poll(wgpu::PollType::wait_indefinitely())
-        .unwrap();
+    device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
     let view = readback.get_mapped_range(..).unwrap();
     bytemuck::cast_slice::<u8, f32>(&view).to_vec()
 }
@@ -602,7 +606,12 @@ fn the_two_rays_blend_continuously_as_their_weights_vanish() {
     for other in [0.0, 1e-6, 0.01, 0.3, 0.999, 1.0] {
         for (x_coverage, y_coverage) in [(1.0, 0.0), (0.0, 1.0), (0.25, 0.75)] {
             let sights = (0..=4096).map(|k| k as f32 * step);
-            paths.push(sights.clone().map(|s| [x_coverage, y_coverage, s, other]).collect());
+            paths.push(
+                sights
+                    .clone()
+                    .map(|s| [x_coverage, y_coverage, s, other])
+                    .collect(),
+            );
             paths.push(sights.map(|s| [x_coverage, y_coverage, other, s]).collect());
         }
     }

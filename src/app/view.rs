@@ -137,7 +137,8 @@ impl Explorer {
                     .untilted(anchor, width.round() as u32, height.round() as u32);
             self.settings.camera.zoom(factor, anchor, upem);
         }
-        self.view.hovered = pixel_under(pointer, *rect, ppp, pane_pixels).map(|(x, y)| (index, x, y));
+        self.view.hovered =
+            pixel_under(pointer, *rect, ppp, pane_pixels).map(|(x, y)| (index, x, y));
     }
 
     /// A pane that shows a method's coverage, or the reference, as a source for others.
@@ -373,7 +374,11 @@ impl Explorer {
         if let Some((c, cost)) = &pane.curves
             && Some(*c) == self.view.camera
         {
-            lines.push(format!("curves/px {:.2} mean, {} max", cost.mean, cost.max_text()));
+            lines.push(format!(
+                "curves/px {:.2} mean, {} max",
+                cost.mean,
+                cost.max_text()
+            ));
         }
         lines
     }
@@ -623,8 +628,7 @@ mod tests {
                         assert!(pixel_under(rect.center(), rect, ppp, (width, height)).is_some());
                         for pointer in [rect.min, rect.max, rect.right_top(), rect.left_bottom()] {
                             assert!(rect.contains(pointer));
-                            if let Some((x, y)) = pixel_under(pointer, rect, ppp, (width, height))
-                            {
+                            if let Some((x, y)) = pixel_under(pointer, rect, ppp, (width, height)) {
                                 assert!(
                                     x < width && y < height,
                                     "ppp {ppp}: ({x}, {y}) outside {width}x{height} for \

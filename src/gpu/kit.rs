@@ -255,7 +255,10 @@ pub fn count_curves(
         gpu.wait_idle()
     })?;
     let texels = target.read_texels(gpu)?;
-    Ok(tally(texels.iter().filter(|t| t[3] > 0.0).map(|t| t[0]), 1.0))
+    Ok(tally(
+        texels.iter().filter(|t| t[3] > 0.0).map(|t| t[0]),
+        1.0,
+    ))
 }
 
 /// The largest count the counting passes hold exactly: their target is

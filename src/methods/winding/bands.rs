@@ -489,9 +489,7 @@ mod tests {
         let units_per_em = font.units_per_em();
         let outline = font.outline(font.glyph_for_char('S').unwrap());
         assert!(
-            outline
-                .segments()
-                .any(|s| matches!(s, Segment::Cubic(..))),
+            outline.segments().any(|s| matches!(s, Segment::Cubic(..))),
             "Latin Modern's 'S' is drawn with cubics"
         );
         for layout in [Layout::Rays, Layout::Area] {
