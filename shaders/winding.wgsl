@@ -303,8 +303,16 @@ fn band_for(g: Glyph, sample_local: vec2<f32>, axis: u32) -> Band {
     let lo = select(g.bounds.y, g.bounds.x, axis == 1u);
     let hi = select(g.bounds.w, g.bounds.z, axis == 1u);
     let across = select(sample_local.y, sample_local.x, axis == 1u);
+    let first = g.first_band + select(0u, g.band_count_h, axis == 1u);
+    // A glyph flat across the ray (every point on one line) has bands of zero height,
+    // all holding the same curves: take the first. Dividing by its zero extent gives
+    // NaN on that line, whose conversion to u32 is undefined, and a band index out of
+    // range reads another glyph's curves.
+    if !(hi > lo) {
+        return bands[first];
+    }
     let index = u32(clamp(floor((across - lo) / (hi - lo) * f32(count)), 0.0, f32(count - 1u)));
-    return bands[g.first_band + select(0u, g.band_count_h, axis == 1u) + index];
+    return bands[first + index];
 }
 
 // Cast towards the nearer side of the glyph: fewer curves lie that way.
@@ -338,28 +346,44 @@ fn coverage_at(g: Glyph, sample: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Cov
     }
     let x_coverage = ray_coverage(x_ray);
     let y_coverage = ray_coverage(y_ray);
-    // Each ray is exact for the straight edges it crosses near the sample and blind to
-    // edges running along it, which are exactly the edges the other ray sees best.
-    // So trust a ray by how well it sees an edge, discounted by how well the other ray
-    // sees one it cannot. A ray sees an edge at least as well as the other ray's
-    // crossings, taken as the straight lines of their tangents, say it must: where it
-    // meets nothing there, the edge ends or turns away before reaching it, and it is
-    // the other ray's tangent line, run on across the pixel, that misleads. (By its
-    // own crossings alone, a ray that meets nothing would weigh 0, and a crossing the
-    // other ray meets along itself, however faintly seen, would take all the weight.)
-    // For a straight edge the expected sight is the sight itself: nothing changes.
+    // A ray sees an edge at least as well as the other ray's crossings, taken as the
+    // straight lines of their tangents, say it must: where it meets nothing there, the
+    // edge ends or turns away before reaching it, and it is the other ray's tangent
+    // line, run on across the pixel, that misleads. (By its own crossings alone, a ray
+    // that meets nothing would weigh 0, and a crossing the other ray meets along
+    // itself, however faintly seen, would take all the weight.) For a straight edge the
+    // expected sight is the sight itself: nothing changes.
     let x_sight = max(x_ray.sight, y_ray.other_sight);
     let y_sight = max(y_ray.sight, x_ray.other_sight);
+    return Coverage(combine_rays(x_coverage, y_coverage, x_sight, y_sight), evaluated);
+}
+
+// Below this total weight the blend of the two rays leans towards their plain average,
+// reaching it at 0 (see `combine_rays`).
+const RAYS_TRUST_RAMP: f32 = 0.125;
+
+// The two rays' coverages blended by their sights (each in [0, 1]). Each ray is exact
+// for the straight edges it crosses near the sample and blind to edges running along
+// it, which are exactly the edges the other ray sees best: so a ray is trusted by how
+// well it sees an edge, discounted by how well the other ray sees one it cannot.
+// Where neither sees better than the other (no edge near, both blind; or a corner at
+// the sample, both fully sighted) the weights' total falls to 0 and their ratio means
+// nothing: the blend eases into the plain average over `RAYS_TRUST_RAMP` of total
+// weight, so that it stays continuous (a weight of 1e-7 once handed a ray everything,
+// a weight of 0 half). Above the ramp the weighted mean is untouched.
+fn combine_rays(x_coverage: f32, y_coverage: f32, x_sight: f32, y_sight: f32) -> f32 {
     let x_weight = x_sight * (1.0 - y_sight);
     let y_weight = y_sight * (1.0 - x_sight);
     let total = x_weight + y_weight;
-    if total == 0.0 {
-        // Neither ray sees an edge better than the other (no edge near, or a corner
-        // at the sample): average them.
-        return Coverage(0.5 * (x_coverage + y_coverage), evaluated);
+    let average = 0.5 * (x_coverage + y_coverage);
+    let trust = smoothstep(0.0, RAYS_TRUST_RAMP, total);
+    // Tested on `trust`, not `total`: a total too small for trust to leave 0 gives no
+    // 0/0, even where the GPU flushes tiny weights to zero.
+    if trust == 0.0 {
+        return average;
     }
-    let value = (x_coverage * x_weight + y_coverage * y_weight) / total;
-    return Coverage(value, evaluated);
+    let weighted = (x_coverage * x_weight + y_coverage * y_weight) / total;
+    return mix(average, weighted, trust);
 }
 
 // ---- aa=area: the exact box-filter integral of the winding number over the pixel ----
@@ -797,7 +821,8 @@ fn fs_main(in: GlyphQuad) -> @location(0) vec4<f32> {
         return vec4<f32>(heat * (0.45 + 0.55 * coverage), coverage);
     }
     if OVERLAY == 3u {
-        // Counting pass: the number of curves evaluated, exact in half floats.
+        // Counting pass: the number of curves evaluated, exact in the half-float target
+        // up to 2048 (kit::EXACT_COUNT_LIMIT); counts past it are reported as at least that.
         return vec4<f32>(f32(evaluated), 0.0, 0.0, coverage);
     }
     return vec4<f32>(coverage);

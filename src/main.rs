@@ -5,6 +5,9 @@ use glyphscope::cli::{Cli, Command};
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    if cli.command.is_some() {
+        keep_the_gpu_off_the_display();
+    }
     let result = match &cli.command {
         Some(Command::Render(args)) => glyphscope::cli::run_render(args).map(|()| true),
         Some(Command::Bench(args)) => glyphscope::cli::run_bench(args).map(|()| true),
@@ -21,6 +24,24 @@ fn main() -> ExitCode {
             eprintln!("error: {e}");
             ExitCode::from(2)
         }
+    }
+}
+
+/// A subcommand draws offscreen and opens no display. wgpu still enables every window
+/// system's Vulkan surface extension the loader offers, and Mesa's device-select layer,
+/// seeing Wayland's enabled, connects to a Wayland display to find the default GPU: with
+/// none, libwayland prints "XDG_RUNTIME_DIR is invalid or not set" on every command.
+/// `NODEVICE_SELECT=1` is that layer's own off switch; wgpu chooses the adapter itself
+/// (`WGPU_ADAPTER_NAME`). Left alone where the user asks the layer for a GPU
+/// (`MESA_VK_DEVICE_SELECT`) or set the switch either way; the app, which opens a window,
+/// never comes here.
+fn keep_the_gpu_off_the_display() {
+    let asked = |name: &str| std::env::var_os(name).is_some();
+    if !asked("MESA_VK_DEVICE_SELECT") && !asked("NODEVICE_SELECT") {
+        // SAFETY: the first thing `main` does after parsing the arguments, before this
+        // process starts a thread (wgpu, the bench and the sweep start theirs later), so
+        // nothing reads the environment concurrently.
+        unsafe { std::env::set_var("NODEVICE_SELECT", "1") };
     }
 }
 

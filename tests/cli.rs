@@ -672,3 +672,33 @@ fn magnified_picture_draws_error_outline_and_refuses_bad_input() {
     fails("focus outside", &with(&["--focus", "5000,1"]), "outside");
     fails("overlay name", &with(&["--overlay", "sparkles"]), "overlay");
 }
+
+/// A headless command opens no display: with no display in the environment (as on CI or
+/// over ssh) a GPU render says nothing of one. Mesa's device-select layer, which wgpu's
+/// window-system extensions wake, used to print "XDG_RUNTIME_DIR is invalid or not set"
+/// twice on every `render`.
+#[test]
+fn headless_render_probes_no_display() {
+    let out = scratch("headless.png");
+    let result = bin()
+        .args([
+            "render", "--text", "Hi", "--size", "24", "--method", "winding",
+        ])
+        .args(["--out", out.to_str().unwrap()])
+        .env_remove("XDG_RUNTIME_DIR")
+        .env_remove("WAYLAND_DISPLAY")
+        .env_remove("DISPLAY")
+        .env_remove("NODEVICE_SELECT")
+        .env_remove("MESA_VK_DEVICE_SELECT")
+        .output()
+        .expect("the binary runs");
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert!(result.status.success(), "{stderr}");
+    assert!(out.is_file());
+    for display in ["XDG_RUNTIME_DIR", "wayland", "DISPLAY"] {
+        assert!(
+            !stderr.to_lowercase().contains(&display.to_lowercase()),
+            "a headless render probed a display: {stderr}"
+        );
+    }
+}

@@ -420,3 +420,231 @@ fn bad_parameters_are_clear_errors() {
         assert!(err.contains(expect), "{key}={value}: {err}");
     }
 }
+
+/// A glyph flat across a ray (every point on one line: zero height, or zero width) has
+/// bands of zero extent. Each ray must still read its own glyph's bands, on the flat
+/// line itself too, where the band index was 0/0. Pixel centres lie on both flat lines,
+/// and the glyph drawn last covers, in its own local units, every point of the flat
+/// ones: a band read from it would show as full pixels where the reference has none.
+#[test]
+fn a_glyph_flat_across_a_ray_reads_its_own_bands() {
+    use glyphscope::geometry::{Contour, Outline, Segment};
+    let p = |x: f64, y: f64| DVec2::new(x, y);
+    let flat = |a: DVec2, b: DVec2| Outline {
+        contours: vec![Contour {
+            segments: vec![Segment::Quad(a, (a + b) * 0.5, b), Segment::Line(b, a)],
+        }],
+    };
+    let scene = Scene::from_outlines(
+        cases::SYNTHETIC_UNITS_PER_EM,
+        vec![
+            (flat(p(0.0, 0.0), p(100.0, 0.0)), p(0.0, 0.0)),
+            (flat(p(0.0, 0.0), p(0.0, 100.0)), p(200.0, -150.0)),
+            (
+                polygons(&[&rect(-40.0, -40.0, 140.0, 140.0)[..]]),
+                p(400.0, -300.0),
+            ),
+        ],
+    );
+    // 1 px per unit; font (x, y) at image (x + 10.5, 20.5 − y): both flat lines run
+    // through pixel centres.
+    let cam = Camera::new(560, 380, 1000.0, DVec2::new(10.5, 20.5));
+    let expected = reference::rasterize(&scene, &cam).unwrap();
+    let gpu = gpu();
+    for params in [&[][..], &[("samples", "4")], &[("rays", "1")]] {
+        let got = render(&gpu, winding(params).as_mut(), &scene, &cam);
+        let s = compare(&got, &expected).unwrap();
+        assert_eq!(s.invalid_pixels, 0, "{params:?}: {s:?}");
+        // The rays' claim, anywhere in the frame.
+        assert!(s.max <= 0.5, "{params:?}: {s:?}");
+        // Nothing on the flat glyphs' lines: the reference has nothing there.
+        for (x, y) in (0..100)
+            .map(|k| (10 + k, 20))
+            .chain((0..100).map(|k| (210, 70 + k)))
+        {
+            assert!(
+                got.get(x, y) < 0.01,
+                "{params:?}: ({x}, {y}) reads {}",
+                got.get(x, y)
+            );
+        }
+    }
+}
+
+/// The counting pass writes half floats, exact for every count up to 2048 only: a pixel
+/// past that reports its count as a lower bound, saying so, rather than a rounded count
+/// that looks exact. Brute force with one ray and one sample evaluates every curve of the
+/// glyph once per pixel, so each covered pixel's count is the glyph's curve count.
+#[test]
+fn curve_counts_past_what_half_floats_hold_are_flagged() {
+    let gpu = gpu();
+    // Squares 4 units wide, 6 apart, in rows of 32, and a triangle: 4·squares + 3 curves.
+    let glyph = |squares: usize| {
+        let mut contours: Vec<Vec<(f64, f64)>> = (0..squares)
+            .map(|k| {
+                let (x, y) = ((k % 32) as f64 * 6.0, (k / 32) as f64 * 6.0);
+                rect(x, y, x + 4.0, y + 4.0)
+            })
+            .collect();
+        contours.push(vec![(0.0, -10.0), (8.0, -10.0), (0.0, -4.0)]);
+        let contours: Vec<&[(f64, f64)]> = contours.iter().map(Vec::as_slice).collect();
+        (single(polygons(&contours)), 4 * squares + 3)
+    };
+    let params = [("rays", "1"), ("samples", "1"), ("bands", "off")];
+    for squares in [509, 625] {
+        let (scene, curves) = glyph(squares);
+        let cam = framed(&scene, 1000.0, [1.0, 0.0, 0.0, 1.0], DVec2::new(0.5, 0.5));
+        let mut method = winding(&params);
+        method.prepare(&gpu, &scene).unwrap();
+        let cost = method.curves_per_pixel(&gpu, &cam).unwrap().unwrap();
+        if curves < 2048 {
+            assert_eq!(cost.saturated, 0, "{curves} curves: {cost:?}");
+            assert_eq!(cost.max, curves as u32, "{cost:?}");
+            assert!((cost.mean - curves as f64).abs() < 1e-9, "{cost:?}");
+        } else {
+            // 2503 curves: a half float holds 2502 or 2504, never the count.
+            assert!(cost.saturated > 0, "{curves} curves: {cost:?}");
+            assert_eq!(cost.max, 2048, "{cost:?}");
+            assert_eq!(cost.max_text(), "≥ 2048");
+            assert!(cost.mean <= curves as f64, "{cost:?}");
+        }
+    }
+}
+
+/// winding.wgsl's `combine_rays` on the GPU, for each (x coverage, y coverage, x sight,
+/// y sight): the shader's own function, run by a compute entry point appended to it.
+fn combine_rays(gpu: &GpuContext, inputs: &[[f32; 4]]) -> Vec<f32> {
+    use wgpu::util::DeviceExt;
+    let probe = "
+@group(0) @binding(8) var<storage, read> probe_inputs: array<vec4<f32>>;
+@group(0) @binding(9) var<storage, read_write> probe_outputs: array<f32>;
+@compute @workgroup_size(64)
+fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
+    if id.x < arrayLength(&probe_inputs) {
+        let v = probe_inputs[id.x];
+        probe_outputs[id.x] = combine_rays(v.x, v.y, v.z, v.w);
+    }
+}
+";
+    let shader = methods::registry::find("winding").unwrap().shader.unwrap();
+    let device = &gpu.device;
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("combine_rays probe"),
+        source: wgpu::ShaderSource::Wgsl(format!("{}\n{probe}", shader.source()).into()),
+    });
+    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+        label: Some("combine_rays probe"),
+        layout: None,
+        module: &module,
+        entry_point: Some("probe"),
+        compilation_options: Default::default(),
+        cache: None,
+    });
+    let input = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("probe inputs"),
+        contents: bytemuck::cast_slice(inputs),
+        usage: wgpu::BufferUsages::STORAGE,
+    });
+    let size = (inputs.len() * 4) as u64;
+    let output = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("probe outputs"),
+        size,
+        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+        mapped_at_creation: false,
+    });
+    let readback = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("probe readback"),
+        size,
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("probe"),
+        layout: &pipeline.get_bind_group_layout(0),
+        entries: &[
+            wgpu::BindGroupEntry {
+                binding: 8,
+                resource: input.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: 9,
+                resource: output.as_entire_binding(),
+            },
+        ],
+    });
+    let mut encoder = device.create_command_encoder(&Default::default());
+    {
+        let mut pass = encoder.begin_compute_pass(&Default::default());
+        pass.set_pipeline(&pipeline);
+        pass.set_bind_group(0, &bind_group, &[]);
+        pass.dispatch_workgroups(inputs.len().div_ceil(64) as u32, 1, 1);
+    }
+    encoder.copy_buffer_to_buffer(&output, 0, &readback, 0, size);
+    gpu.queue.submit([encoder.finish()]);
+    readback.map_async(wgpu::MapMode::Read, .., |mapped| mapped.unwrap());
+    device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
+    let view = readback.get_mapped_range(..).unwrap();
+    bytemuck::cast_slice::<u8, f32>(&view).to_vec()
+}
+
+/// The two rays' blend is continuous where the weights' total falls to 0 (both rays
+/// blind, or a corner at the sample, both fully sighted): a weight of 1e-7 once handed
+/// one ray everything, a weight of 0 half (the 0.4998 pixels). Claimed before measuring,
+/// from the blend's form: trust rises from 0 to 1 over a ramp R = 1/8 of total weight
+/// by smoothstep (slope at most 1.5/R) and moves a value at most ½ from the average;
+/// the weighted mean moves at most 1/total per unit of sight, and trust ≤ 3(total/R)²
+/// below R: so a unit change of one sight moves the value by at most 0.75/R + 3/R, under
+/// 32. Away from the ramp nothing changes: one ray fully sighted and the other blind
+/// gives the first ray's coverage, both fully sighted their average.
+#[test]
+fn the_two_rays_blend_continuously_as_their_weights_vanish() {
+    const LIPSCHITZ: f32 = 32.0;
+    let step = 1.0 / 4096.0;
+    // Sights swept one at a time towards the places where the total vanishes, with the
+    // coverages as far apart as they go.
+    let mut paths: Vec<Vec<[f32; 4]>> = Vec::new();
+    for other in [0.0, 1e-6, 0.01, 0.3, 0.999, 1.0] {
+        for (x_coverage, y_coverage) in [(1.0, 0.0), (0.0, 1.0), (0.25, 0.75)] {
+            let sights = (0..=4096).map(|k| k as f32 * step);
+            paths.push(
+                sights
+                    .clone()
+                    .map(|s| [x_coverage, y_coverage, s, other])
+                    .collect(),
+            );
+            paths.push(sights.map(|s| [x_coverage, y_coverage, other, s]).collect());
+        }
+    }
+    let inputs: Vec<[f32; 4]> = paths.concat();
+    let gpu = gpu();
+    let values = combine_rays(&gpu, &inputs);
+    let mut worst = 0.0f32;
+    for (k, pair) in inputs.windows(2).enumerate() {
+        let (a, b) = (pair[0], pair[1]);
+        let (va, vb) = (values[k], values[k + 1]);
+        assert!(va.is_finite() && (0.0..=1.0).contains(&va), "{a:?} → {va}");
+        if a[..2] != b[..2] || (a[2] != b[2] && a[3] != b[3]) {
+            continue; // the next path starts
+        }
+        let moved = (a[2] - b[2]).abs() + (a[3] - b[3]).abs();
+        let slope = (va - vb).abs() / moved;
+        worst = worst.max(slope);
+        assert!(
+            slope <= LIPSCHITZ,
+            "{a:?} → {va}, {b:?} → {vb}: slope {slope}"
+        );
+    }
+    println!("steepest slope of the blend per unit of sight: {worst:.2}");
+    let settled = combine_rays(
+        &gpu,
+        &[
+            [0.3, 1.0, 1.0, 0.0],
+            [1.0, 0.3, 0.0, 1.0],
+            [0.3, 1.0, 1.0, 1.0],
+            [0.3, 1.0, 0.0, 0.0],
+        ],
+    );
+    for (got, want) in settled.iter().zip([0.3, 0.3, 0.65, 0.65]) {
+        assert!((got - want).abs() < 1e-6, "{settled:?}");
+    }
+}

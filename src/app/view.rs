@@ -62,26 +62,9 @@ impl Explorer {
     pub(super) fn view(&mut self, ui: &mut egui::Ui) {
         let area = ui.available_rect_before_wrap();
         let ppp = ui.ctx().pixels_per_point();
-        let (columns, rows) = self.settings.layout.grid();
-        let cell = egui::vec2(
-            (area.width() - GAP * (columns - 1) as f32) / columns as f32,
-            (area.height() - GAP * (rows - 1) as f32) / rows as f32,
-        );
-        // Panes are whole pixels, so a target texel is a framebuffer pixel.
-        let width = (cell.x * ppp).floor().max(1.0) as u32;
-        let height = (cell.y * ppp).floor().max(1.0) as u32;
-        let size = egui::vec2(width as f32, height as f32) / ppp;
-        let snap = |p: egui::Pos2| (p.to_vec2() * ppp).round().to_pos2() / ppp;
-        let rects: Vec<egui::Rect> = (0..columns * rows)
-            .map(|k| {
-                let (c, r) = (k % columns, k / columns);
-                let min =
-                    area.min + egui::vec2(c as f32 * (size.x + GAP), r as f32 * (size.y + GAP));
-                egui::Rect::from_min_size(snap(min), size)
-            })
-            .collect();
+        let ((width, height), rects) = pane_rects(area, ppp, self.settings.layout.grid());
 
-        self.steer(ui, area, &rects, ppp);
+        self.steer(ui, area, &rects, ppp, (width, height));
         self.view.rects = rects.clone();
         let (camera, window) = self.settings.camera.pane_camera(width, height);
         self.view.camera = Some(camera);
@@ -125,7 +108,14 @@ impl Explorer {
     }
 
     /// Pan by dragging, zoom with the wheel about the cursor, and find the pixel under it.
-    fn steer(&mut self, ui: &mut egui::Ui, area: egui::Rect, rects: &[egui::Rect], ppp: f32) {
+    fn steer(
+        &mut self,
+        ui: &mut egui::Ui,
+        area: egui::Rect,
+        rects: &[egui::Rect],
+        ppp: f32,
+        pane_pixels: (u32, u32),
+    ) {
         let response = ui.interact(
             area,
             ui.scope_id().with("view"),
@@ -150,10 +140,7 @@ impl Explorer {
         };
         let local = (pointer - rect.min) * ppp;
         let cursor = DVec2::new(f64::from(local.x), f64::from(local.y));
-        let (width, height) = (
-            (rect.width() * ppp).round() as u32,
-            (rect.height() * ppp).round() as u32,
-        );
+        let (width, height) = pane_pixels;
         let window = self.settings.camera.pane_camera(width, height).1;
         let block = f64::from(window.factor);
         // The ×1 pane pixel under the cursor.
@@ -198,12 +185,15 @@ impl Explorer {
                 self.settings.camera.zoom(factor, anchor, upem);
             }
         }
-        // The pixel of the drawn image (the window's, when magnified) under the cursor,
-        // bounded in whole pixels.
-        let (x, y) = ((cursor.x / block).floor(), (cursor.y / block).floor());
-        if x >= 0.0 && y >= 0.0 && (x as u32) < window.cols && (y as u32) < window.rows {
-            self.view.hovered = Some((index, x as u32, y as u32));
-        }
+        // The pixel of the drawn image (the window's, when magnified) under the cursor.
+        self.view.hovered = pixel_under(
+            pointer,
+            *rect,
+            ppp,
+            window.factor,
+            (window.cols, window.rows),
+        )
+        .map(|(x, y)| (index, x, y));
     }
 
     /// A pane that shows a method's coverage, or the reference, as a source for others.
@@ -450,7 +440,11 @@ impl Explorer {
         if let Some((c, cost)) = &pane.curves
             && Some(*c) == self.view.camera
         {
-            lines.push(format!("curves/px {:.2} mean, {} max", cost.mean, cost.max));
+            lines.push(format!(
+                "curves/px {:.2} mean, {} max",
+                cost.mean,
+                cost.max_text()
+            ));
         }
         lines
     }
@@ -678,4 +672,97 @@ fn paint_values(
 
 fn color(rgb: [u8; 3]) -> egui::Color32 {
     egui::Color32::from_rgb(rgb[0], rgb[1], rgb[2])
+}
+
+/// The panes of a `(columns, rows)` grid in `area` at `ppp` pixels per point: each
+/// pane's size in whole pixels (so a target texel is a framebuffer pixel) and where each
+/// is drawn, in points, its corner snapped to a pixel.
+fn pane_rects(
+    area: egui::Rect,
+    ppp: f32,
+    (columns, rows): (usize, usize),
+) -> ((u32, u32), Vec<egui::Rect>) {
+    let cell = egui::vec2(
+        (area.width() - GAP * (columns - 1) as f32) / columns as f32,
+        (area.height() - GAP * (rows - 1) as f32) / rows as f32,
+    );
+    let width = (cell.x * ppp).floor().max(1.0) as u32;
+    let height = (cell.y * ppp).floor().max(1.0) as u32;
+    let size = egui::vec2(width as f32, height as f32) / ppp;
+    let snap = |p: egui::Pos2| (p.to_vec2() * ppp).round().to_pos2() / ppp;
+    let rects = (0..columns * rows)
+        .map(|k| {
+            let (c, r) = (k % columns, k / columns);
+            let min = area.min + egui::vec2(c as f32 * (size.x + GAP), r as f32 * (size.y + GAP));
+            egui::Rect::from_min_size(snap(min), size)
+        })
+        .collect();
+    ((width, height), rects)
+}
+
+/// The pixel under `pointer` in a pane drawn at `rect` (points) whose target is
+/// `width` × `height` pixels at `ppp` pixels per point, each drawn `block` pixels a
+/// side (the magnifier). Bounded in whole pixels after
+/// flooring: the pane's rect holds its far edge, and in points at a fractional scale
+/// its width times `ppp` may round past the last pixel, so a bound in floats let the
+/// pointer there read one column or row beyond the target.
+fn pixel_under(
+    pointer: egui::Pos2,
+    rect: egui::Rect,
+    ppp: f32,
+    block: u32,
+    (width, height): (u32, u32),
+) -> Option<(u32, u32)> {
+    let local = ((pointer - rect.min) * ppp / block as f32).floor();
+    if !(local.x >= 0.0 && local.y >= 0.0) {
+        return None;
+    }
+    // Non-negative and floored: the casts only saturate, and the bound then refuses.
+    let (x, y) = (local.x as u32, local.y as u32);
+    (x < width && y < height).then_some((x, y))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// At fractional scale factors, a pointer anywhere in a pane's rect (its far edges
+    /// included, as `Rect::contains` has them) names a pixel of the pane's target or,
+    /// on the far edges, none; never one past the last column or row.
+    #[test]
+    fn the_hovered_pixel_stays_inside_the_pane_at_fractional_scales() {
+        let mut checked = 0;
+        for ppp in [1.1, 1.25, 4.0 / 3.0, 1.5, 1.75, 2.25, 2.5, 0.9] {
+            for grid in [(1, 1), (2, 1), (2, 2), (3, 2)] {
+                for extent in (300..=1400).step_by(7) {
+                    let area = egui::Rect::from_min_size(
+                        egui::pos2(13.37, 41.3),
+                        egui::vec2(extent as f32, extent as f32 * 0.61),
+                    );
+                    let ((width, height), rects) = pane_rects(area, ppp, grid);
+                    for rect in rects {
+                        for block in [1, 3, 8] {
+                            let (cols, rows) = (width.div_ceil(block), height.div_ceil(block));
+                            let under = |p| pixel_under(p, rect, ppp, block, (cols, rows));
+                            assert!(under(rect.center()).is_some());
+                            for pointer in
+                                [rect.min, rect.max, rect.right_top(), rect.left_bottom()]
+                            {
+                                assert!(rect.contains(pointer));
+                                if let Some((x, y)) = under(pointer) {
+                                    assert!(
+                                        x < cols && y < rows,
+                                        "ppp {ppp} ×{block}: ({x}, {y}) outside {cols}x{rows} \
+                                         for {pointer:?} in {rect:?}"
+                                    );
+                                }
+                                checked += 1;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        assert!(checked > 10_000);
+    }
 }

@@ -122,8 +122,11 @@ pub fn markdown(result: &BenchResult) -> String {
                 case.cpu_render_ms
                     .map_or_else(|| sig(case.cpu_prepare_ms), sig),
                 bytes(case.gpu_bytes),
-                case.curves_per_pixel
-                    .map_or("—".into(), |c| format!("{:.1} ({})", c.mean, c.max)),
+                case.curves_per_pixel.map_or("—".into(), |c| format!(
+                    "{:.1} ({})",
+                    c.mean,
+                    c.max_text()
+                )),
                 case.mesh_points.map_or("—".into(), |p| p.to_string()),
                 case.error.mae_255,
                 case.error.edge.mae_255,

@@ -256,17 +256,30 @@ pub fn count_curves(
     })?;
     let texels = target.read_texels(gpu)?;
     Ok(tally(
-        texels
-            .iter()
-            .filter(|t| t[3] > 0.0)
-            .map(|t| f64::from(t[0])),
+        texels.iter().filter(|t| t[3] > 0.0).map(|t| t[0]),
+        1.0,
     ))
 }
 
-/// Mean and most of the curves counted at each covered pixel.
-pub fn tally(counts: impl Iterator<Item = f64>) -> CurveCost {
-    let (mut sum, mut covered, mut max) = (0.0, 0u64, 0u32);
-    for n in counts {
+/// The largest count the counting passes hold exactly: their target is
+/// [`CoverageTarget::FORMAT`], half floats, which hold every integer up to 2¹¹ and only
+/// every other one past it (then every fourth, …, and nothing past 65 504).
+pub const EXACT_COUNT_LIMIT: f32 = 2048.0;
+
+/// Mean and most of the curves counted at each covered pixel, from the count target's
+/// raw values, each worth `scale` curves (the samples a resolve averaged). A value at
+/// [`EXACT_COUNT_LIMIT`] or past it (or not finite) is no longer the count: it is taken
+/// as the limit and reported in `saturated`, so the figures become lower bounds that
+/// say so, rather than rounded numbers that look exact.
+pub fn tally(raw_counts: impl Iterator<Item = f32>, scale: f64) -> CurveCost {
+    let (mut sum, mut covered, mut max, mut saturated) = (0.0, 0u64, 0u32, 0u64);
+    for raw in raw_counts {
+        // Written so that NaN, too, is not exact.
+        let exact = raw < EXACT_COUNT_LIMIT;
+        if !exact {
+            saturated += 1;
+        }
+        let n = f64::from(if exact { raw } else { EXACT_COUNT_LIMIT }) * scale;
         sum += n;
         covered += 1;
         max = max.max(n.round() as u32);
@@ -278,12 +291,28 @@ pub fn tally(counts: impl Iterator<Item = f64>) -> CurveCost {
             0.0
         },
         max,
+        saturated,
     }
 }
 
 /// What [`count_curves`] tallied: mean and most curves per covered pixel.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct CurveCost {
+    /// A lower bound where `saturated` is not 0.
     pub mean: f64,
+    /// At least this many where `saturated` is not 0 (see [`CurveCost::max_text`]).
     pub max: u32,
+    /// Covered pixels whose count reached [`EXACT_COUNT_LIMIT`], counted as the limit.
+    pub saturated: u64,
+}
+
+impl CurveCost {
+    /// `max` as reports print it: "≥ 2048" where a count reached the exact limit.
+    pub fn max_text(&self) -> String {
+        if self.saturated > 0 {
+            format!("≥ {}", self.max)
+        } else {
+            self.max.to_string()
+        }
+    }
 }

@@ -15,7 +15,7 @@
 use glam::DVec2;
 
 use super::overlaps::overlap_flags;
-use crate::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Segment};
+use crate::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Segment, cubic_to_quadratics};
 use crate::scene::Scene;
 
 /// `Curve` in `winding.wgsl`.
@@ -114,53 +114,63 @@ impl Quad {
     }
 }
 
-/// The quadratics of an outline (already free of cubics), contour by contour: lines
-/// become quadratics with their midpoint as control point, exactly representable;
-/// zero-length pieces, which cannot change any winding number, are dropped.
-fn contours(outline: &Outline) -> Vec<Vec<Quad>> {
+/// The quadratics of an outline, contour by contour: cubics become quadratics within
+/// `tolerance` (font units); lines become quadratics with their midpoint as control
+/// point, exactly representable; zero-length pieces, which cannot change any winding
+/// number, are dropped.
+fn contours(outline: &Outline, tolerance: f64) -> Vec<Vec<Quad>> {
     outline
         .contours
         .iter()
-        .map(|contour| contour.segments.iter().filter_map(quad).collect())
+        .map(|contour| {
+            let mut quads = Vec::with_capacity(contour.segments.len());
+            for segment in &contour.segments {
+                push_quads(segment, tolerance, &mut quads);
+            }
+            quads
+        })
         .collect()
 }
 
-fn quad(segment: &Segment) -> Option<Quad> {
+/// Appends `segment` as quadratics; a cubic is converted here, so that no outline a
+/// caller passes can reach the shader with a curve it cannot read.
+fn push_quads(segment: &Segment, tolerance: f64, quads: &mut Vec<Quad>) {
     let p = match *segment {
         Segment::Line(a, b) => [a, (a + b) * 0.5, b],
         Segment::Quad(a, b, c) => [a, b, c],
-        Segment::Cubic(..) => unreachable!("outlines are converted to quadratics first"),
+        Segment::Cubic(..) => {
+            // The conversion yields only lines and quadratics, handled above.
+            cubic_to_quadratics(segment, tolerance, &mut |piece| {
+                push_quads(&piece, tolerance, quads)
+            });
+            return;
+        }
     };
     // Round once, here, so that bounds and bands agree with what the GPU sees.
     let p = p.map(|v| v.as_vec2().as_dvec2());
-    (p[0] != p[1] || p[1] != p[2]).then(|| Quad {
-        p,
-        min: p[0].min(p[1]).min(p[2]),
-        max: p[0].max(p[1]).max(p[2]),
-        overlaps: false,
-        counted: false,
-    })
+    if p[0] != p[1] || p[1] != p[2] {
+        quads.push(Quad {
+            p,
+            min: p[0].min(p[1]).min(p[2]),
+            max: p[0].max(p[1]).max(p[2]),
+            overlaps: false,
+            counted: false,
+        });
+    }
 }
 
 impl GlyphData {
-    /// What `winding` uploads for `scene`: every distinct glyph, its cubics converted to
-    /// quadratics within the project's tolerance, with bands in `layout`.
+    /// What `winding` uploads for `scene`: every distinct glyph, with bands in `layout`.
     pub fn of_scene(scene: &Scene, band_count: BandCount, layout: Layout) -> GlyphData {
-        let tolerance = DEFAULT_QUAD_TOLERANCE_EM * scene.units_per_em;
         let mut data = GlyphData::default();
         for glyph in &scene.glyphs {
-            data.push(
-                &glyph.outline.to_quadratics(tolerance),
-                scene.units_per_em,
-                band_count,
-                layout,
-            );
+            data.push(&glyph.outline, scene.units_per_em, band_count, layout);
         }
         data
     }
 
-    /// Appends one glyph (an outline of lines and quadratics, in a font of
-    /// `units_per_em`) and returns its index.
+    /// Appends one glyph (an outline in a font of `units_per_em`, its cubics converted to
+    /// quadratics within the project's tolerance) and returns its index.
     pub fn push(
         &mut self,
         outline: &Outline,
@@ -168,7 +178,7 @@ impl GlyphData {
         band_count: BandCount,
         layout: Layout,
     ) -> u32 {
-        let contours = contours(outline);
+        let contours = contours(outline, DEFAULT_QUAD_TOLERANCE_EM * units_per_em);
         // Only `aa=area` reads the marks (rays never integrate a pixel as a whole).
         let overlaps: Vec<bool> = match layout {
             Layout::Rays => vec![false; contours.iter().map(Vec::len).sum()],
@@ -469,6 +479,35 @@ mod tests {
             [50.0, 15.0],
             "line control point is its midpoint"
         );
+    }
+
+    /// `push` is public: an outline with cubics, as a font gives it, is converted within
+    /// the project's tolerance (the same curves as converting it first), never refused.
+    #[test]
+    fn a_pushed_cubic_becomes_the_quadratics_of_the_conversion() {
+        let font = Font::shipped(1);
+        let units_per_em = font.units_per_em();
+        let outline = font.outline(font.glyph_for_char('S').unwrap());
+        assert!(
+            outline.segments().any(|s| matches!(s, Segment::Cubic(..))),
+            "Latin Modern's 'S' is drawn with cubics"
+        );
+        for layout in [Layout::Rays, Layout::Area] {
+            let mut direct = GlyphData::default();
+            direct.push(&outline, units_per_em, BandCount::Auto, layout);
+            let mut converted = GlyphData::default();
+            converted.push(
+                &outline.to_quadratics(DEFAULT_QUAD_TOLERANCE_EM * units_per_em),
+                units_per_em,
+                BandCount::Auto,
+                layout,
+            );
+            assert!(!direct.curves.is_empty());
+            assert_eq!(direct.curves, converted.curves, "{layout:?}");
+            assert_eq!(direct.glyphs, converted.glyphs, "{layout:?}");
+            assert_eq!(direct.bands, converted.bands, "{layout:?}");
+            assert_eq!(direct.band_curves, converted.band_curves, "{layout:?}");
+        }
     }
 
     /// `aa=area`'s levels: at each level, for a pixel whose half height is at most half

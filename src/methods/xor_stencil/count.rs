@@ -81,6 +81,7 @@ pub(super) fn curve_cost(
             .iter()
             .zip(coverage)
             .filter(|(_, c)| **c > 0.0)
-            .map(|(texel, _)| f64::from(texel[3]) * f64::from(samples)),
+            .map(|(texel, _)| texel[3]),
+        f64::from(samples),
     )))
 }
