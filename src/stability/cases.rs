@@ -582,7 +582,7 @@ fn tiny_curve_contours() -> Vec<Contour> {
     vec![Contour { segments }, polygon(&rect(10.0, 17.0, 10.1, 17.1))]
 }
 
-/// Squares 4 units across, counter-clockwise, each with one corner cut by a straight
+/// Squares 3 units across, 3 apart (beyond the estimate's 1-unit ties), counter-clockwise, each with one corner cut by a straight
 /// segment `steps` f32 steps long (2⁻¹⁹ units between 16 and 32, where the corners lie)
 /// leaving the side before it at `slant` degrees: 2, 3 and 4 steps at 10°, 45° and 80°,
 /// each at a different corner of the square so that the cut runs every way. The cut's
@@ -593,8 +593,8 @@ fn slanted_ulp_segments() -> Vec<Contour> {
     for (row, steps) in [2.0, 3.0, 4.0].into_iter().enumerate() {
         for (column, slant) in [10.0f64, 45.0, 80.0].into_iter().enumerate() {
             let corner_index = (row + column) % 4;
-            let origin = DVec2::new(16.3 + 5.0 * column as f64, 16.7 + 5.0 * row as f64);
-            let corners: Vec<DVec2> = rect(0.0, 0.0, 4.0, 4.0)
+            let origin = DVec2::new(16.3 + 6.0 * column as f64, 16.7 + 6.0 * row as f64);
+            let corners: Vec<DVec2> = rect(0.0, 0.0, 3.0, 3.0)
                 .into_iter()
                 .map(|(x, y)| origin + DVec2::new(x, y))
                 .collect();
