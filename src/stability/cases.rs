@@ -582,11 +582,11 @@ fn tiny_curve_contours() -> Vec<Contour> {
     vec![Contour { segments }, polygon(&rect(10.0, 17.0, 10.1, 17.1))]
 }
 
-/// Squares 3 units across, 3 apart (beyond the estimate's 1-unit ties), counter-clockwise, each with one corner cut by a straight
-/// segment `steps` f32 steps long (2⁻¹⁹ units between 16 and 32, where the corners lie)
-/// leaving the side before it at `slant` degrees: 2, 3 and 4 steps at 10°, 45° and 80°,
-/// each at a different corner of the square so that the cut runs every way. The cut's
-/// ends are not on the f32 grid.
+/// Squares 3 units across and 3 apart (beyond the estimate's ties of 1 unit, 0.001 em),
+/// counter-clockwise, each with one corner cut by a straight segment `steps` f32 steps
+/// long (2⁻¹⁹ units between 16 and 32, where the corners lie) leaving the side before it
+/// at `slant` degrees: 2, 3 and 4 steps at 10°, 45° and 80°, each at a different corner
+/// of the square so that the cut runs every way. The cut's ends are not on the f32 grid.
 fn slanted_ulp_segments() -> Vec<Contour> {
     let step = 2f64.powi(-19);
     let mut contours = Vec::new();
