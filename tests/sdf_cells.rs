@@ -814,6 +814,22 @@ fn estimate_on_case(case: &str) -> glyphscope::stability::sweep::Outcome {
     let outcomes = sweep::run(gpu(), &cases, &variants, &sweep::SweepSize::quick(), |_| {});
     let outcome = outcomes.unwrap().remove(0);
     assert!(outcome.failure.is_none(), "{:?}", outcome.failure);
+    // One frame in full, whole frame and edge pixels (> 0.25 and > 0.5 counted), for
+    // the README: the case's own view at offset 0, upright.
+    let camera = cases[0].camera(0.0, DVec2::ZERO).unwrap();
+    let e = Renderer::new(&[]).error(&cases[0].scene, &camera);
+    eprintln!(
+        "{case}, estimate, upright at offset 0: MAE {:.2}/255, max {:.3}, {} px > 0.25, {} > 0.5; \
+         edge pixels ({}): MAE {:.2}/255, {} > 0.25, {} > 0.5",
+        e.mae_255,
+        e.max,
+        e.pixels_over_025,
+        e.pixels_over_05,
+        e.edge.pixels,
+        e.edge.mae_255,
+        e.edge.pixels_over_025,
+        e.edge.pixels_over_05
+    );
     outcome
 }
 
