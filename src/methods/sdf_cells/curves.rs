@@ -90,9 +90,9 @@ impl CurveLayout {
 /// direction (the chord's tangent line), so a short slanted segment at a corner whose
 /// direction rounds past either neighbour's puts a wedge of pixels beyond the corner on
 /// the wrong side. Below 10 steps the direction is not worth keeping, and merging moves
-/// the outline by less than 10 steps: 1/3000 px for a 1000-unit glyph at 1000 px/em,
-/// 1/3 px at the largest size accepted (10⁶ px/em), where f32 coordinates resolve only
-/// 1/32 px anyway.
+/// the outline by less than 10 steps: 1/1600 px for a 1000-unit em at 1000 px/em (steps
+/// of 2⁻¹⁴ units between 512 and 1024), and at the largest size accepted (10⁶ px/em),
+/// where f32 coordinates resolve only about 1/32 px anyway, ten times that.
 const MERGED_BELOW_STEPS: f64 = 10.0;
 
 /// A segment as a quadratic. Cubics are not expected here (the caller converts them) but
