@@ -798,6 +798,77 @@ fn overlapping_contours_crack_only_along_the_curves_inside_the_fill() {
     assert!(cracked > 20, "{cracked}");
 }
 
+// ---- Contours of either direction, segments shorter than f32 can point -------------------
+
+/// The estimate through the stability sweep's CI cameras on `case`: the outcome of its
+/// worst frame, artifact pixels (off by more than 0.5) summed over the frames.
+fn estimate_on_case(case: &str) -> glyphscope::stability::sweep::Outcome {
+    use glyphscope::stability::{self, sweep};
+    let cases = stability::select_cases(Some(&[case.into()])).unwrap();
+    let variants: Vec<_> = stability::select_variants(Some(&["sdf-cells".into()]))
+        .unwrap()
+        .into_iter()
+        .filter(|v| v.params.is_empty())
+        .collect();
+    assert_eq!(variants.len(), 1, "the estimate is sdf-cells' default");
+    let outcomes = sweep::run(gpu(), &cases, &variants, &sweep::SweepSize::quick(), |_| {});
+    let outcome = outcomes.unwrap().remove(0);
+    assert!(outcome.failure.is_none(), "{:?}", outcome.failure);
+    // One frame in full, whole frame and edge pixels (> 0.25 and > 0.5 counted), for
+    // the README: the case's own view at offset 0, upright.
+    let camera = cases[0].camera(0.0, DVec2::ZERO).unwrap();
+    let e = Renderer::new(&[]).error(&cases[0].scene, &camera);
+    eprintln!(
+        "{case}, estimate, upright at offset 0: MAE {:.2}/255, max {:.3}, {} px > 0.25, {} > 0.5; \
+         edge pixels ({}): MAE {:.2}/255, {} > 0.25, {} > 0.5",
+        e.mae_255,
+        e.max,
+        e.pixels_over_025,
+        e.pixels_over_05,
+        e.edge.pixels,
+        e.edge.mae_255,
+        e.edge.pixels_over_025,
+        e.edge.pixels_over_05
+    );
+    outcome
+}
+
+/// The outcome in one line: MAE, max, pixels over 0.5, where it was worst.
+fn summary(case: &str, o: &glyphscope::stability::sweep::Outcome) -> String {
+    format!(
+        "{case}, estimate: MAE {:.2}/255, max {:.3}, {} pixels over 0.5, worst at {:?}",
+        o.mae_255, o.max, o.artifact_pixels, o.worst
+    )
+}
+
+/// Separate contours wound opposite ways are all filled under nonzero; the estimate
+/// turned every contour by the glyph's total orientation, so those wound against it had
+/// their fill on the left and drew inverted: empty inside, their cells' boxes filled
+/// around. Each contour is now turned by the winding around it. Like the plain squares
+/// of the other synthetic cases (no pixel over 0.5), no pixel may be off by more than
+/// 0.5.
+#[test]
+fn the_estimate_fills_contours_wound_either_way() {
+    let case = "opposite-wound-contours";
+    let outcome = estimate_on_case(case);
+    eprintln!("{}", summary(case, &outcome));
+    assert!(outcome.max.is_finite(), "{}", summary(case, &outcome));
+    assert_eq!(outcome.artifact_pixels, 0, "{}", summary(case, &outcome));
+}
+
+/// A segment 2–4 f32 steps long cutting a square's corner reached the shader with its
+/// direction rounded to almost anything, and the estimate took the side of the pixels
+/// beyond the corner from it. Segments under 10 steps are now merged into the next one:
+/// the squares draw as squares, no pixel off by more than 0.5.
+#[test]
+fn the_estimate_ignores_segments_too_short_for_f32_to_point() {
+    let case = "slanted-ulp-segments";
+    let outcome = estimate_on_case(case);
+    eprintln!("{}", summary(case, &outcome));
+    assert!(outcome.max.is_finite(), "{}", summary(case, &outcome));
+    assert_eq!(outcome.artifact_pixels, 0, "{}", summary(case, &outcome));
+}
+
 // ---- Command line ----------------------------------------------------------------------
 
 #[test]

@@ -425,6 +425,23 @@ pub fn all() -> Vec<Case> {
                 48.0,
             )
         },
+        synthetic(
+            "slanted-ulp-segments",
+            "squares whose corner is cut by a segment 2–4 f32 steps long, slanted 10°–80° \
+             off the side before it: its direction rounds to almost anything in f32",
+            slanted_ulp_segments(),
+        ),
+        synthetic(
+            "opposite-wound-contours",
+            "separate contours wound opposite ways, both filled under nonzero: squares side \
+             by side, and a counter-clockwise ring with a clockwise hole",
+            vec![
+                polygon(&rect(2.0, 2.0, 12.0, 12.0)),
+                reversed(polygon(&rect(15.0, 2.0, 21.0, 12.0))),
+                polygon(&octagon(31.0, 7.0, 6.0)),
+                reversed(polygon(&octagon(31.0, 7.0, 3.0))),
+            ],
+        ),
     ]
 }
 
@@ -563,6 +580,51 @@ fn tiny_curve_contours() -> Vec<Contour> {
     }
     segments.push(line((2.0, 14.0), (2.0, 2.0)));
     vec![Contour { segments }, polygon(&rect(10.0, 17.0, 10.1, 17.1))]
+}
+
+/// Squares 3 units across and 3 apart (beyond the estimate's ties of 1 unit, 0.001 em),
+/// counter-clockwise, each with one corner cut by a straight segment `steps` f32 steps
+/// long (2⁻¹⁹ units between 16 and 32, where the corners lie) leaving the side before it
+/// at `slant` degrees: 2, 3 and 4 steps at 10°, 45° and 80°, each at a different corner
+/// of the square so that the cut runs every way. The cut's ends are not on the f32 grid.
+fn slanted_ulp_segments() -> Vec<Contour> {
+    let step = 2f64.powi(-19);
+    let mut contours = Vec::new();
+    for (row, steps) in [2.0, 3.0, 4.0].into_iter().enumerate() {
+        for (column, slant) in [10.0f64, 45.0, 80.0].into_iter().enumerate() {
+            let corner_index = (row + column) % 4;
+            let origin = DVec2::new(16.3 + 6.0 * column as f64, 16.7 + 6.0 * row as f64);
+            let corners: Vec<DVec2> = rect(0.0, 0.0, 3.0, 3.0)
+                .into_iter()
+                .map(|(x, y)| origin + DVec2::new(x, y))
+                .collect();
+            let at = corners[corner_index];
+            let before = corners[(corner_index + 3) % 4];
+            let after = corners[(corner_index + 1) % 4];
+            // Back along the side before the corner, then across to the side after it.
+            let incoming = (at - before).normalize();
+            let outgoing = (after - at).normalize();
+            let (sin, cos) = slant.to_radians().sin_cos();
+            let cut = (incoming * cos + outgoing * sin) * steps * step;
+            // The cut leaves the side before at `from` and meets the side after at `to`:
+            // `cut` splits into its components along the two sides.
+            let from = at - incoming * cut.dot(incoming);
+            let to = from + cut;
+            let mut points = Vec::new();
+            for k in 1..=4 {
+                let corner = (corner_index + k) % 4;
+                if corner == corner_index {
+                    points.extend([from, to]);
+                } else {
+                    points.push(corners[corner]);
+                }
+            }
+            contours.push(polygon(
+                &points.iter().map(|p| (p.x, p.y)).collect::<Vec<_>>(),
+            ));
+        }
+    }
+    contours
 }
 
 /// Contours written as an SVG path of absolute `M`, `L`, `C` and `Z` commands, with

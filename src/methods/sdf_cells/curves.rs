@@ -16,7 +16,7 @@
 use glam::DVec2;
 
 use crate::camera::Camera;
-use crate::geometry::{Outline, Segment};
+use crate::geometry::{Contour, Outline, Segment};
 use crate::reference;
 use crate::scene::Scene;
 
@@ -36,27 +36,18 @@ pub struct CurveLayout {
 
 impl CurveLayout {
     /// Lays out `outline` (cubics must already be quadratics). Lines become quadratics
-    /// with the control point at their midpoint; segments of zero length are dropped
-    /// (they bound nothing); contours are turned so that the fill lies on the right of
-    /// every curve, as the seed's signed distance assumes.
+    /// with the control point at their midpoint; segments too short in f32 to have a
+    /// direction are merged into the next one ([`contour_quads`]); each contour is
+    /// turned so that the fill lies on its right, as the seed's signed distance assumes
+    /// ([`turn_fill_to_the_right`]).
     pub fn new(outline: &Outline) -> CurveLayout {
         let mut contours: Vec<Vec<Quad>> = outline
             .contours
             .iter()
-            .map(|c| c.segments.iter().filter_map(as_quad).collect::<Vec<_>>())
-            .filter(|c: &Vec<Quad>| !c.is_empty())
+            .map(contour_quads)
+            .filter(|c| !c.is_empty())
             .collect();
-        // Nonzero fill puts the inside on the left of counter-clockwise (positive area)
-        // outer contours, as CFF fonts draw them; TrueType draws them clockwise. One
-        // orientation per glyph, from its total signed area.
-        if contours.iter().map(|c| signed_area(c)).sum::<f64>() > 0.0 {
-            for contour in &mut contours {
-                contour.reverse();
-                for q in contour.iter_mut() {
-                    q.reverse();
-                }
-            }
-        }
+        turn_fill_to_the_right(&mut contours);
         let mut layout = CurveLayout::default();
         for (index, contour) in contours.iter().enumerate() {
             let last = contour[contour.len() - 1];
@@ -91,22 +82,169 @@ impl CurveLayout {
     }
 }
 
-/// A segment as a quadratic; `None` for one of zero length (in f32). Cubics are not expected
-/// here (the caller converts them) but are reduced to their endpoints' line rather than
-/// dropped if one slips through.
-fn as_quad(segment: &Segment) -> Option<Quad> {
-    let q = match *segment {
+/// Curves shorter than this many f32 steps (ulps at the magnitude of their coordinates)
+/// are merged into the next curve. Each coordinate reaches the GPU rounded by up to half
+/// a step, so the difference of two points is off by up to a step on each axis, and a
+/// chord n steps long has its direction off by up to about √2/n rad: anything at 1 or 2
+/// steps, 20° at 4, 8° at 10, 5° at 16. The estimate takes the side of a pixel from that
+/// direction (the chord's tangent line), so a short slanted segment at a corner whose
+/// direction rounds past either neighbour's puts a wedge of pixels beyond the corner on
+/// the wrong side. Below 10 steps the direction is not worth keeping, and merging moves
+/// the outline by less than 10 steps: 1/1600 px for a 1000-unit em at 1000 px/em (steps
+/// of 2⁻¹⁴ units between 512 and 1024), and at the largest size accepted (10⁶ px/em),
+/// where f32 coordinates resolve only about 1/32 px anyway, ten times that.
+const MERGED_BELOW_STEPS: f64 = 10.0;
+
+/// A segment as a quadratic. Cubics are not expected here (the caller converts them) but
+/// are reduced to their endpoints' line rather than dropped if one slips through.
+fn as_quad(segment: &Segment) -> Quad {
+    match *segment {
         Segment::Line(a, b) => [a, (a + b) * 0.5, b],
         Segment::Quad(a, b, c) => [a, b, c],
         Segment::Cubic(a, _, _, d) => {
             debug_assert!(false, "cubics are converted before layout");
             [a, (a + d) * 0.5, d]
         }
+    }
+}
+
+/// Whether the curve is too short, as the GPU sees it in f32, for its direction to mean
+/// anything: its control point and end lie within [`MERGED_BELOW_STEPS`] f32 steps of its
+/// start (a point in f32, whose direction is NaN, included).
+fn too_short_in_f32(q: &Quad) -> bool {
+    let magnitude = q
+        .iter()
+        .map(|p| p.as_vec2().abs().max_element())
+        .fold(0.0, f32::max);
+    let step = f64::from(magnitude.next_up() - magnitude);
+    let reach = q[1..].iter().map(|p| p.distance(q[0])).fold(0.0, f64::max);
+    reach < MERGED_BELOW_STEPS * step
+}
+
+/// A contour's segments as quadratics, with runs of curves too short in f32 to have a
+/// direction merged into the curve after them: that curve starts where the run started,
+/// so the chain stays closed and its winding unchanged, and the outline moves by no more
+/// than the run's length. The contour is read from its first curve long enough on its
+/// own, so that a run never wraps around past the end; a contour with no such curve
+/// merges from its first.
+fn contour_quads(contour: &Contour) -> Vec<Quad> {
+    let quads: Vec<Quad> = contour.segments.iter().map(as_quad).collect();
+    let first = quads.iter().position(|q| !too_short_in_f32(q)).unwrap_or(0);
+    let mut kept: Vec<Quad> = Vec::with_capacity(quads.len());
+    let mut run_start: Option<DVec2> = None;
+    for q in quads[first..].iter().chain(&quads[..first]) {
+        let merged = [run_start.unwrap_or(q[0]), q[1], q[2]];
+        if too_short_in_f32(&merged) {
+            run_start = Some(merged[0]);
+        } else {
+            kept.push(merged);
+            run_start = None;
+        }
+    }
+    if let (Some(start), Some(q)) = (run_start, kept.first_mut()) {
+        q[0] = start;
+    }
+    kept
+}
+
+/// Turns every contour so that the filled side is on its right, as the seed's signed
+/// distance assumes, judging each contour on its own: nonzero fill lets one glyph hold
+/// contours wound either way (two side by side, wound opposite ways, both fill), so the
+/// glyph's total orientation cannot stand for each of them. A contour's inside is the
+/// filled side when it winds the same way as the other contours around it or none do
+/// (then the winding's magnitude grows across it, inward); otherwise it is a hole, filled
+/// outside. Where contours overlap, the side whose winding has the larger magnitude is
+/// taken as the filled one.
+fn turn_fill_to_the_right(contours: &mut [Vec<Quad>]) {
+    let turn: Vec<bool> = (0..contours.len())
+        .map(|k| {
+            let area = signed_area(&contours[k]);
+            let around = winding_of_others_around(contours, k);
+            let inside_filled = f64::from(around) * area >= 0.0;
+            // Counter-clockwise (positive area, y up) has its inside on the left.
+            inside_filled == (area > 0.0)
+        })
+        .collect();
+    for (contour, turn) in contours.iter_mut().zip(turn) {
+        if turn {
+            contour.reverse();
+            for q in contour.iter_mut() {
+                q.reverse();
+            }
+        }
+    }
+}
+
+/// Points of a contour sampled to find the winding of the others around it.
+const WINDING_SAMPLES: usize = 7;
+
+/// The nonzero winding number of the contours other than `k` along contour `k`: the most
+/// common value at the midpoints of up to [`WINDING_SAMPLES`] of its curves, so that a
+/// few points lying on another contour (shared edges, touching corners) do not decide.
+fn winding_of_others_around(contours: &[Vec<Quad>], k: usize) -> i32 {
+    if contours.len() < 2 {
+        return 0;
+    }
+    let own = &contours[k];
+    let stride = own.len().div_ceil(WINDING_SAMPLES);
+    let mut seen: Vec<(i32, usize)> = Vec::new();
+    for [a, b, c] in own.iter().step_by(stride) {
+        let p = 0.25 * a + 0.5 * b + 0.25 * c;
+        let w: i32 = contours
+            .iter()
+            .enumerate()
+            .filter(|&(j, _)| j != k)
+            .flat_map(|(_, other)| other.iter())
+            .map(|q| ray_crossings(q, p))
+            .sum();
+        match seen.iter_mut().find(|(value, _)| *value == w) {
+            Some((_, count)) => *count += 1,
+            None => seen.push((w, 1)),
+        }
+    }
+    seen.iter()
+        .max_by_key(|&&(_, count)| count)
+        .map_or(0, |&(w, _)| w)
+}
+
+/// Signed crossings of the ray from `p` towards +x by the quadratic, in f64: +1 where
+/// the curve crosses upwards (the inside of a counter-clockwise contour is on its left),
+/// −1 downwards. Half-open in y (a point counts as above the ray when y > p.y), so a
+/// crossing at a join of two curves counts once. The curve is split at its y extremum
+/// into monotonic pieces, each crossing found by bisection.
+fn ray_crossings(q: &Quad, p: DVec2) -> i32 {
+    let [a, b, c] = q.map(|v| v - p);
+    if a.x.max(b.x).max(c.x) <= 0.0 {
+        return 0;
+    }
+    let at = |t: f64| a * (1.0 - t) * (1.0 - t) + b * 2.0 * t * (1.0 - t) + c * t * t;
+    let curvature = a.y - 2.0 * b.y + c.y;
+    let extremum = (a.y - b.y) / curvature;
+    let split = if curvature != 0.0 && extremum > 0.0 && extremum < 1.0 {
+        extremum
+    } else {
+        1.0
     };
-    // Zero length as the GPU sees it, in f32: a curve whose points differ only in f64
-    // would reach the shader as a point, whose tangent direction is NaN.
-    let seen = q.map(|p| p.as_vec2());
-    (seen[0] != seen[1] || seen[1] != seen[2]).then_some(q)
+    let mut w = 0;
+    for (t0, t1) in [(0.0, split), (split, 1.0)] {
+        let (above0, above1) = (at(t0).y > 0.0, at(t1).y > 0.0);
+        if t0 == t1 || above0 == above1 {
+            continue;
+        }
+        let (mut low, mut high) = (t0, t1);
+        for _ in 0..60 {
+            let mid = 0.5 * (low + high);
+            if (at(mid).y > 0.0) == above0 {
+                low = mid;
+            } else {
+                high = mid;
+            }
+        }
+        if at(0.5 * (low + high)).x > 0.0 {
+            w += if above1 { 1 } else { -1 };
+        }
+    }
+    w
 }
 
 /// Whether contours of `outline` (cubics converted already) overlap, or one crosses
@@ -120,11 +258,7 @@ pub fn overlapping_contours(outline: &Outline) -> bool {
     let Some(bounds) = outline.control_bounds() else {
         return false;
     };
-    let contours: Vec<Vec<Quad>> = outline
-        .contours
-        .iter()
-        .map(|c| c.segments.iter().filter_map(as_quad).collect())
-        .collect();
+    let contours: Vec<Vec<Quad>> = outline.contours.iter().map(contour_quads).collect();
     let signed: f64 = contours.iter().map(|c| signed_area(c)).sum();
     // An em as large as the glyph, drawn 512 pixels across.
     let extent = bounds.size().max_element().max(1e-9);
@@ -154,7 +288,6 @@ pub fn signed_area(contour: &[Quad]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::Contour;
 
     fn square(clockwise: bool) -> Outline {
         let mut p = [(0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0)]
@@ -172,19 +305,107 @@ mod tests {
         }
     }
 
-    /// Zero length is judged in f32, the precision the shader sees: a segment 1e-7 units
-    /// long at 14 units is one point there (its tangent would be NaN) and is dropped,
-    /// while one that is distinct in f32 is kept.
+    /// A 15-unit square, counter-clockwise, whose corner (15, 15) is cut by a segment
+    /// `steps` f32 steps long (2⁻²⁰ units each between 8 and 16: 23 fraction bits),
+    /// slanted 3:4 off the square's sides, between points off the f32 grid.
+    fn square_cut_by(steps: f64) -> Outline {
+        let step = 2f64.powi(-20);
+        let cut = DVec2::new(-0.6, 0.8) * steps * step;
+        let from = DVec2::new(15.0, 15.0 - cut.y - 0.3 * step);
+        let to = from + cut;
+        Outline {
+            contours: vec![Contour {
+                segments: vec![
+                    Segment::Line(DVec2::ZERO, DVec2::new(15.0, 0.0)),
+                    Segment::Line(DVec2::new(15.0, 0.0), from),
+                    Segment::Line(from, to),
+                    Segment::Line(to, DVec2::new(0.0, to.y)),
+                    Segment::Line(DVec2::new(0.0, to.y), DVec2::ZERO),
+                ],
+            }],
+        }
+    }
+
+    /// Segments under 10 f32 steps are merged into the next one, longer ones kept; the
+    /// chain stays closed and its area is the square's less the cut corner's (at most
+    /// 16² steps²), whatever is merged.
     #[test]
-    fn curves_that_are_points_in_f32_are_dropped() {
+    fn segments_under_ten_f32_steps_are_merged_into_the_next() {
+        let step = 2f64.powi(-20);
+        assert_eq!(f64::from(15f32.next_up() - 15.0), step);
+        for (steps, curves) in [(1.0, 4), (2.0, 4), (4.0, 4), (8.0, 4), (16.0, 5)] {
+            let layout = CurveLayout::new(&square_cut_by(steps));
+            assert_eq!(layout.curve_slots.len(), curves, "{steps} steps");
+            let quads: Vec<Quad> = layout.curves().map(|(_, q)| q).collect();
+            for (k, q) in quads.iter().enumerate() {
+                let next = quads[(k + 1) % quads.len()];
+                assert_eq!(q[2], next[0], "{steps} steps: closed at curve {k}");
+                assert!(q.iter().all(|p| p.is_finite()));
+            }
+            // Clockwise after layout (fill on the right).
+            let area = -signed_area(&quads);
+            assert!(
+                (area - 225.0).abs() < 16.0 * 15.0 * step,
+                "{steps} steps: {area}"
+            );
+        }
+    }
+
+    /// A segment 1e-7 units long at 14 units (0.1 f32 step) is one point in f32, where
+    /// its direction would be NaN: merged, as is a quadratic that is one point in f64.
+    #[test]
+    fn curves_that_are_points_in_f32_are_merged() {
         let start = DVec2::new(14.0, 14.0);
-        let collapsed = Segment::Line(start, start + DVec2::new(1e-7, 0.0));
-        assert_ne!(start, start + DVec2::new(1e-7, 0.0), "distinct in f64");
-        assert!(as_quad(&collapsed).is_none());
-        let short = Segment::Line(start, start + DVec2::new(1e-3, 0.0));
-        assert!(as_quad(&short).is_some());
-        let point = Segment::Quad(start, start, start);
-        assert!(as_quad(&point).is_none());
+        let collapsed = [
+            start,
+            start + DVec2::new(5e-8, 0.0),
+            start + DVec2::new(1e-7, 0.0),
+        ];
+        assert_eq!(collapsed[0].as_vec2(), collapsed[2].as_vec2());
+        assert!(too_short_in_f32(&collapsed));
+        assert!(too_short_in_f32(&[start; 3]));
+        let short = [
+            start,
+            start + DVec2::new(5e-4, 0.0),
+            start + DVec2::new(1e-3, 0.0),
+        ];
+        assert!(!too_short_in_f32(&short), "1000 steps");
+        let closed_loop = [start, start + DVec2::new(0.0, 1.0), start];
+        assert!(
+            !too_short_in_f32(&closed_loop),
+            "a loop back to its start has extent"
+        );
+    }
+
+    /// A side drawn as a chain of short segments keeps its shape: runs merge only until
+    /// the merged curve is 10 steps long. A square 1024 f32 steps across (at 15 units)
+    /// whose top runs right to left in 3-step segments: every 4 segments (12 steps) make
+    /// one curve, 85 of them, and the last 4 steps go to the left side.
+    #[test]
+    fn merging_stops_once_the_run_is_long_enough() {
+        let step = 2f64.powi(-20);
+        let (low, high) = (15.0 - 1024.0 * step, 15.0);
+        let mut segments = vec![
+            Segment::Line(DVec2::splat(low), DVec2::new(high, low)),
+            Segment::Line(DVec2::new(high, low), DVec2::splat(high)),
+        ];
+        let mut x = high;
+        while x > low {
+            let next = (x - 3.0 * step).max(low);
+            segments.push(Segment::Line(DVec2::new(x, high), DVec2::new(next, high)));
+            x = next;
+        }
+        segments.push(Segment::Line(DVec2::new(low, high), DVec2::splat(low)));
+        let layout = CurveLayout::new(&Outline {
+            contours: vec![Contour { segments }],
+        });
+        let quads: Vec<Quad> = layout.curves().map(|(_, q)| q).collect();
+        let top = quads.iter().filter(|q| q[0].y == high && q[2].y == high);
+        assert_eq!(top.count(), 85);
+        assert_eq!(quads.len(), 85 + 3);
+        let area = -signed_area(&quads);
+        let side = 1024.0 * step;
+        assert!((area - side * side).abs() <= 4.0 * step * side, "{area}");
     }
 
     #[test]
@@ -210,6 +431,86 @@ mod tests {
             assert!(signed_area(&curves) < 0.0, "clockwise={clockwise}");
             assert!((signed_area(&curves) + 100.0).abs() < 1e-12);
         }
+    }
+
+    /// A square `size` units across with its corner at (x, y), either way round.
+    fn square_at(x: f64, y: f64, size: f64, clockwise: bool) -> Contour {
+        let mut p = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+            .map(|(a, b)| DVec2::new(x + a * size, y + b * size))
+            .to_vec();
+        if clockwise {
+            p.reverse();
+        }
+        Contour {
+            segments: (0..4)
+                .map(|k| Segment::Line(p[k], p[(k + 1) % 4]))
+                .collect(),
+        }
+    }
+
+    /// Each contour is turned on its own: of two separate squares wound opposite ways
+    /// (both filled under nonzero), and a ring whose outer contour and hole are wound
+    /// either way, every filled contour ends up clockwise and every hole
+    /// counter-clockwise, whichever way the glyph's total area points.
+    #[test]
+    fn each_contour_gets_the_fill_on_its_right() {
+        for (big_clockwise, ring_clockwise) in [(false, false), (false, true), (true, false)] {
+            let outline = Outline {
+                contours: vec![
+                    square_at(0.0, 0.0, 10.0, big_clockwise),
+                    square_at(20.0, 0.0, 6.0, !big_clockwise),
+                    square_at(40.0, 0.0, 10.0, ring_clockwise),
+                    square_at(43.0, 3.0, 4.0, !ring_clockwise),
+                ],
+            };
+            let layout = CurveLayout::new(&outline);
+            let mut areas = vec![0.0; 4];
+            for (slot, q) in layout.curves() {
+                let contour = layout.slot_contour[slot as usize].unwrap() as usize;
+                areas[contour] += signed_area(&[q]);
+            }
+            let expected = [-100.0, -36.0, -100.0, 16.0];
+            for (area, expected) in areas.iter().zip(expected) {
+                assert!(
+                    (area - expected).abs() < 1e-9,
+                    "big clockwise {big_clockwise}, ring clockwise {ring_clockwise}: {areas:?}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn ray_crossings_count_each_way_once_at_joins() {
+        let q = |a: (f64, f64), b: (f64, f64), c: (f64, f64)| {
+            [DVec2::from(a), DVec2::from(b), DVec2::from(c)]
+        };
+        let p = DVec2::ZERO;
+        // Upwards right of p: +1; downwards: −1; left of p: nothing.
+        assert_eq!(ray_crossings(&q((1.0, -1.0), (2.0, 0.0), (1.0, 1.0)), p), 1);
+        assert_eq!(
+            ray_crossings(&q((1.0, 1.0), (2.0, 0.0), (1.0, -1.0)), p),
+            -1
+        );
+        assert_eq!(
+            ray_crossings(&q((-1.0, -1.0), (-2.0, 0.0), (-1.0, 1.0)), p),
+            0
+        );
+        // A parabola dipping through the ray twice, and one only touching it.
+        assert_eq!(ray_crossings(&q((1.0, 1.0), (2.0, -2.0), (3.0, 1.0)), p), 0);
+        assert_eq!(ray_crossings(&q((1.0, 1.0), (2.0, -1.0), (3.0, 1.0)), p), 0);
+        // Two lines joined on the ray, going up: one crossing between them.
+        let below = q((1.0, -1.0), (1.0, -0.5), (1.0, 0.0));
+        let above = q((1.0, 0.0), (1.0, 0.5), (1.0, 1.0));
+        assert_eq!(ray_crossings(&below, p) + ray_crossings(&above, p), 1);
+        // A crossing left of p on a curve that reaches right of it does not count.
+        assert_eq!(
+            ray_crossings(&q((-1.0, -1.0), (3.0, 0.0), (-1.0, 1.0)), p),
+            1
+        );
+        assert_eq!(
+            ray_crossings(&q((-1.0, -1.0), (0.0, 0.0), (-1.0, 1.0)), p),
+            0
+        );
     }
 
     #[test]
