@@ -175,8 +175,12 @@ pub fn margin_table(outcomes: &[Outcome]) -> String {
         "| method | cases | bound (max, MAE /255) | worst max (share) | worst MAE /255 (share) | margin rule |\n\
          |---|---|---|---|---|---|\n",
     );
-    let mut variants: Vec<&str> = outcomes.iter().map(|o| o.variant).collect();
-    variants.dedup();
+    let mut variants: Vec<&str> = Vec::new();
+    for o in outcomes {
+        if !variants.contains(&o.variant) {
+            variants.push(o.variant);
+        }
+    }
     for variant in variants {
         for limitation in [false, true] {
             let cells: Vec<&Outcome> = outcomes
