@@ -403,13 +403,17 @@ fn swept_area_x2(points: &[DVec2]) -> f64 {
         }
     };
     let half = (0.6f64).sqrt() / 2.0;
-    [(0.5 - half, 5.0 / 18.0), (0.5, 8.0 / 18.0), (0.5 + half, 5.0 / 18.0)]
-        .iter()
-        .map(|&(t, w)| {
-            let (p, d) = bezier(t);
-            w * p.perp_dot(d)
-        })
-        .sum()
+    [
+        (0.5 - half, 5.0 / 18.0),
+        (0.5, 8.0 / 18.0),
+        (0.5 + half, 5.0 / 18.0),
+    ]
+    .iter()
+    .map(|&(t, w)| {
+        let (p, d) = bezier(t);
+        w * p.perp_dot(d)
+    })
+    .sum()
 }
 
 /// Independently of any sampler: the reference's total coverage is the outline's exact
@@ -436,8 +440,8 @@ fn covered_area_is_the_exact_outline_area() {
                     Segment::Cubic(a, b, c, d) => vec![a, b, c, d],
                 };
                 area_px += swept_area_x2(&points) / 2.0 * px_per_unit * px_per_unit;
-                length_px += points.windows(2).map(|w| w[0].distance(w[1])).sum::<f64>()
-                    * px_per_unit;
+                length_px +=
+                    points.windows(2).map(|w| w[0].distance(w[1])).sum::<f64>() * px_per_unit;
             }
         }
         // TrueType winds outer contours clockwise, CFF counter-clockwise: without
@@ -445,16 +449,27 @@ fn covered_area_is_the_exact_outline_area() {
         let area_px = area_px.abs();
         let image = rasterize(&scene, &camera).unwrap();
         let (w, h) = (camera.width as usize, camera.height as usize);
-        let border = (0..w * h).filter(|&k| k % w == 0 || k % w == w - 1 || k < w || k >= w * (h - 1));
-        assert!(border.map(|k| image.data[k]).all(|v| v == 0.0), "{text}: ink clipped");
+        let border =
+            (0..w * h).filter(|&k| k % w == 0 || k % w == w - 1 || k < w || k >= w * (h - 1));
+        assert!(
+            border.map(|k| image.data[k]).all(|v| v == 0.0),
+            "{text}: ink clipped"
+        );
         let covered: f64 = image.data.iter().map(|&v| f64::from(v)).sum();
-        let bound = DEFAULT_TOLERANCE_PX * length_px + image.data.len() as f64 * f64::from(f32::EPSILON);
+        let bound =
+            DEFAULT_TOLERANCE_PX * length_px + image.data.len() as f64 * f64::from(f32::EPSILON);
         println!(
             "{text}: area {area_px:.4} px², covered {covered:.4}, off {:.2e} (bound {bound:.2e}, relative {:.1e})",
             (covered - area_px).abs(),
             (covered - area_px).abs() / area_px
         );
-        assert!(area_px > 500.0, "{text}: {area_px} px²: the glyphs are in view");
-        assert!((covered - area_px).abs() <= bound, "{text}: covered {covered}, area {area_px}, bound {bound}");
+        assert!(
+            area_px > 500.0,
+            "{text}: {area_px} px²: the glyphs are in view"
+        );
+        assert!(
+            (covered - area_px).abs() <= bound,
+            "{text}: covered {covered}, area {area_px}, bound {bound}"
+        );
     }
 }

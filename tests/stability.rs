@@ -49,7 +49,10 @@ fn limitations_show_their_numbers() {
     )
     .unwrap();
     let estimate = &outcomes[0];
-    assert_eq!(estimate.bound, None, "the estimate bounds nothing on overlaps");
+    assert_eq!(
+        estimate.bound, None,
+        "the estimate bounds nothing on overlaps"
+    );
     assert!(estimate.limitation);
     assert!(estimate.artifact_pixels > 100, "{estimate:?}");
     assert!(!estimate.breaks_claim());
@@ -122,12 +125,15 @@ fn the_ci_grid_runs_every_known_worst_camera() {
         assert!(labels.contains(&worst.variant), "{worst:?}");
         let camera = (worst.rotation_deg, DVec2::from(worst.subpixel));
         assert!(quick.cameras_for(&case).contains(&camera), "{worst:?}");
-        let on_grid = quick.rotations_for(&case).contains(&camera.0)
-            && quick.offsets.contains(&camera.1);
+        let on_grid =
+            quick.rotations_for(&case).contains(&camera.0) && quick.offsets.contains(&camera.1);
         off_grid += usize::from(!on_grid);
     }
     // Most worst cameras lie off the coarse grid: that is why they are listed.
-    assert!(off_grid > 0, "every worst camera is on the coarse grid already");
+    assert!(
+        off_grid > 0,
+        "every worst camera is on the coarse grid already"
+    );
     // Every case where a method is off at all has its worst cameras listed.
     assert!(cases::WORST_CAMERAS.len() > cases::all().len());
 }
@@ -180,7 +186,14 @@ fn every_claim_rejects_coverage_rounded_to_0_or_1_and_nan() {
         }
     }
     for (variant, broken) in variants.iter().zip(&broken_by_rounding) {
-        println!("{}: rounded coverage breaks it on {broken} cases", variant.label);
-        assert!(*broken > 0, "{}: rounded coverage keeps the claim", variant.label);
+        println!(
+            "{}: rounded coverage breaks it on {broken} cases",
+            variant.label
+        );
+        assert!(
+            *broken > 0,
+            "{}: rounded coverage keeps the claim",
+            variant.label
+        );
     }
 }

@@ -331,7 +331,10 @@ mod tests {
     #[test]
     fn the_margin_table_marks_a_bound_kept_under_its_margin_only() {
         let table = margin_table(&[outcome(0.4, Some(0.5))]);
-        assert!(table.contains("| kept |") && table.contains("(80%)"), "{table}");
+        assert!(
+            table.contains("| kept |") && table.contains("(80%)"),
+            "{table}"
+        );
         let table = margin_table(&[outcome(0.41, Some(0.5))]);
         assert!(table.contains("| over |"), "{table}");
     }

@@ -194,10 +194,7 @@ impl Outcome {
 
     /// Whether the measurement breaks the claim (a failure always does).
     pub fn breaks_claim(&self) -> bool {
-        self.failure.is_some()
-            || self
-                .bound
-                .is_some_and(|b| !b.holds(self.max, self.mae_255))
+        self.failure.is_some() || self.bound.is_some_and(|b| !b.holds(self.max, self.mae_255))
     }
 }
 
