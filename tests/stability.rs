@@ -197,3 +197,16 @@ fn every_claim_rejects_coverage_rounded_to_0_or_1_and_nan() {
         );
     }
 }
+
+/// Every claimed setting bounds something on the outlines it is meant for — the
+/// estimate, `sdf-cells`' default, on text without overlapping or touching contours —
+/// and a bound on the maximum comes with one on the mean.
+#[test]
+fn every_setting_claims_a_bound_where_it_is_meant_to_work() {
+    let ordinary = cases::by_name("latin-modern-cubics").unwrap();
+    for variant in claims::variants() {
+        let bound = variant.claim.bound(ordinary.traits);
+        let bound = bound.unwrap_or_else(|| panic!("{} claims nothing", variant.label));
+        assert!(bound.max < 1.0 && bound.mae_255 > 0.0, "{}", variant.label);
+    }
+}
