@@ -321,18 +321,19 @@ pub fn run_stability(args: &StabilityArgs) -> Result<bool, Error> {
         SweepSize::full()
     };
     let gpu = GpuContext::new()?;
-    let frames: usize = cases.iter().map(|c| size.cameras_for(c)).sum();
+    let frames: usize = cases.iter().map(|c| size.cameras_for(c).len()).sum();
     eprintln!(
         "{} cases × {} methods, {frames} frames each (cameras per case: {}, a full turn \
-         more) on {}",
+         and known worst cameras more) on {}",
         cases.len(),
         variants.len(),
-        size.cameras(),
+        size.grid_cameras(),
         gpu.adapter_name()
     );
     let outcomes =
         stability::sweep::run(&gpu, &cases, &variants, &size, |case| eprintln!("  {case}"))?;
     print!("{}", stability::long_table(&outcomes));
+    print!("\n{}", stability::margin_table(&outcomes));
     if let Some(dir) = &args.out {
         stability::write_report(dir, &outcomes)?;
     }

@@ -50,8 +50,13 @@ fn row(offset: DVec2) -> (Scene, Camera) {
     (scene, camera)
 }
 
+/// What this checks: at the cached size, with pens on whole pixels, the atlas draws
+/// the bitmaps it cached — the reference's own coverage — and storing, packing and
+/// sampling them loses nothing beyond 8 bits. It cannot say the coverage is right,
+/// since the bitmaps are the reference's: `matches_hand_worked_coverage_at_the_cached_size`
+/// does.
 #[test]
-fn exact_at_the_cached_size_on_whole_pixels() {
+fn reproduces_its_cached_bitmaps_at_the_cached_size() {
     let (scene, camera) = row(DVec2::ZERO);
     for subpixel in ["4", "1", "off"] {
         let e = error_of("atlas", &[("subpixel", subpixel)], &scene, &camera);
@@ -60,6 +65,64 @@ fn exact_at_the_cached_size_on_whole_pixels() {
         assert!(e.max < 1.2 / 255.0, "subpixel={subpixel}: {e:?}");
         assert!(e.mae_255 < 0.05, "subpixel={subpixel}: {e:?}");
     }
+}
+
+/// The box-filtered coverage of the pixel [i, i + 1] × [j, j + 1] (image pixels) by the
+/// rectangle [x0, x1] × [y0, y1]: the product of the two overlaps, in closed form.
+fn rectangle_coverage(i: u32, j: u32, (x0, x1): (f64, f64), (y0, y1): (f64, f64)) -> f64 {
+    let overlap = |k: u32, a: f64, b: f64| {
+        let k = f64::from(k);
+        ((k + 1.0).min(b) - k.max(a)).max(0.0)
+    };
+    overlap(i, x0, x1) * overlap(j, y0, y1)
+}
+
+/// Against values worked by hand, not the reference: two copies of a rectangle at one
+/// font unit a pixel, edges at quarter pixels, the second pen a quarter pixel past a
+/// whole one (a cached phase). A pixel cut by an edge at x = 2.25 is 0.75 covered, a
+/// corner pixel cut at 2.25 and 3.25 is 0.5625, one cut at 9.5 and 10.5 is 0.25.
+#[test]
+fn matches_hand_worked_coverage_at_the_cached_size() {
+    use glyphscope::geometry::Outline;
+    use glyphscope::stability::cases::{polygon, rect};
+    // 16 units per em at 16 px/em; the camera puts font y = 14 on the image's top row.
+    let (x0, y0, x1, y1) = (2.25, 3.5, 9.5, 10.75);
+    let outline = || Outline {
+        contours: vec![polygon(&rect(x0, y0, x1, y1))],
+    };
+    let second_pen = 12.25;
+    let scene = Scene::from_outlines(
+        16.0,
+        vec![
+            (outline(), DVec2::ZERO),
+            (outline(), DVec2::new(second_pen, 0.0)),
+        ],
+    );
+    let camera = Camera::new(26, 14, 16.0, DVec2::new(0.0, 14.0));
+    // Image rows run down: font y becomes 14 − y.
+    let rows = (14.0 - y1, 14.0 - y0);
+    let mut atlas = methods::create("atlas", &params(&[("subpixel", "4")])).unwrap();
+    atlas.prepare(gpu(), &scene).unwrap();
+    let image = render_image(gpu(), atlas.as_mut(), &camera).unwrap();
+    let mut checked = [0usize; 3];
+    for j in 0..camera.height {
+        for i in 0..camera.width {
+            let expected = rectangle_coverage(i, j, (x0, x1), rows)
+                + rectangle_coverage(i, j, (x0 + second_pen, x1 + second_pen), rows);
+            let drawn = f64::from(image.data[(j * camera.width + i) as usize]);
+            // 8-bit texels (within 1/510) and the half-float target's rounding.
+            assert!(
+                (drawn - expected).abs() < 1.2 / 255.0,
+                "pixel ({i}, {j}): drawn {drawn}, expected {expected}"
+            );
+            for (k, value) in [0.75, 0.5625, 0.25].into_iter().enumerate() {
+                checked[k] += usize::from(expected == value);
+            }
+        }
+    }
+    // The hand-worked pixels are among those checked: 0.75 along both copies' left
+    // edges, 0.5625 and 0.25 at corners.
+    assert!(checked.iter().all(|&n| n >= 2), "{checked:?}");
 }
 
 /// On a cached phase other than zero, and a different one along each axis, the atlas

@@ -166,7 +166,7 @@ fn every_method_draws_every_scene_within_its_claims() {
                         .iter()
                         .map(|&(k, v)| (k.into(), v.into()))
                         .collect();
-                    (params, c.claim.bound(traits), c.label)
+                    (params, c.claim.bound(traits).map(|b| b.max), c.label)
                 })
                 .collect();
             if !m.claims.iter().any(|c| c.params.is_empty()) {

@@ -376,3 +376,100 @@ fn empty_outline_scene_renders_blank() {
     assert!(scene.instances.is_empty());
     assert_eq!(rasterize(&scene, &unit_camera(4, 4)).unwrap().sum(), 0.0);
 }
+
+/// Twice the signed area a segment sweeps about the origin, ∫ B × B′ dt (Green's
+/// theorem), by 3-point Gauss–Legendre quadrature: B × B′ is a polynomial of degree 1,
+/// 3 or 5 for a line, quadratic or cubic, which 3 points integrate exactly. Written from
+/// the Bézier forms here, independently of the crate's flattening and rasterizer.
+fn swept_area_x2(points: &[DVec2]) -> f64 {
+    let bezier = |t: f64| -> (DVec2, DVec2) {
+        match *points {
+            [a, b] => (a + (b - a) * t, b - a),
+            [a, b, c] => {
+                let s = 1.0 - t;
+                (
+                    a * s * s + b * 2.0 * s * t + c * t * t,
+                    (b - a) * 2.0 * s + (c - b) * 2.0 * t,
+                )
+            }
+            [a, b, c, d] => {
+                let s = 1.0 - t;
+                (
+                    a * s * s * s + b * 3.0 * s * s * t + c * 3.0 * s * t * t + d * t * t * t,
+                    (b - a) * 3.0 * s * s + (c - b) * 6.0 * s * t + (d - c) * 3.0 * t * t,
+                )
+            }
+            _ => unreachable!("a segment has 2 to 4 points"),
+        }
+    };
+    let half = (0.6f64).sqrt() / 2.0;
+    [
+        (0.5 - half, 5.0 / 18.0),
+        (0.5, 8.0 / 18.0),
+        (0.5 + half, 5.0 / 18.0),
+    ]
+    .iter()
+    .map(|&(t, w)| {
+        let (p, d) = bezier(t);
+        w * p.perp_dot(d)
+    })
+    .sum()
+}
+
+/// Independently of any sampler: the reference's total coverage is the outline's exact
+/// area, from Green's theorem on its lines, quadratics and cubics (DejaVu's quadratics
+/// and Latin Modern's cubics, glyphs without overlaps), to within what its flattening
+/// is documented to move — at most the tolerance times the outline's length, which the
+/// control polygon bounds — plus f32 storage's rounding of each pixel.
+#[test]
+fn covered_area_is_the_exact_outline_area() {
+    use glyphscope::geometry::Segment;
+    use glyphscope::reference::DEFAULT_TOLERANCE_PX;
+    for (font, text) in [(Font::default_font(), "g&@S"), (Font::shipped(1), "Qa§g")] {
+        let scene = Scene::from_text(&font, text).unwrap();
+        let size = 40.0;
+        let camera = Camera::new(220, 80, size, DVec2::new(10.0, 60.0));
+        let px_per_unit = size / scene.units_per_em;
+        let (mut area_px, mut length_px) = (0.0, 0.0);
+        for instance in &scene.instances {
+            let outline = &scene.glyphs[instance.glyph as usize].outline;
+            for segment in outline.segments() {
+                let points = match *segment {
+                    Segment::Line(a, b) => vec![a, b],
+                    Segment::Quad(a, b, c) => vec![a, b, c],
+                    Segment::Cubic(a, b, c, d) => vec![a, b, c, d],
+                };
+                area_px += swept_area_x2(&points) / 2.0 * px_per_unit * px_per_unit;
+                length_px +=
+                    points.windows(2).map(|w| w[0].distance(w[1])).sum::<f64>() * px_per_unit;
+            }
+        }
+        // TrueType winds outer contours clockwise, CFF counter-clockwise: without
+        // overlaps the filled area is the signed sum's magnitude either way.
+        let area_px = area_px.abs();
+        let image = rasterize(&scene, &camera).unwrap();
+        let (w, h) = (camera.width as usize, camera.height as usize);
+        let border =
+            (0..w * h).filter(|&k| k % w == 0 || k % w == w - 1 || k < w || k >= w * (h - 1));
+        assert!(
+            border.map(|k| image.data[k]).all(|v| v == 0.0),
+            "{text}: ink clipped"
+        );
+        let covered: f64 = image.data.iter().map(|&v| f64::from(v)).sum();
+        let bound =
+            DEFAULT_TOLERANCE_PX * length_px + image.data.len() as f64 * f64::from(f32::EPSILON);
+        println!(
+            "{text}: area {area_px:.4} px², covered {covered:.4}, off {:.2e} (bound {bound:.2e}, relative {:.1e})",
+            (covered - area_px).abs(),
+            (covered - area_px).abs() / area_px
+        );
+        assert!(
+            area_px > 500.0,
+            "{text}: {area_px} px²: the glyphs are in view"
+        );
+        assert!(
+            (covered - area_px).abs() <= bound,
+            "{text}: covered {covered}, area {area_px}, bound {bound}"
+        );
+    }
+}

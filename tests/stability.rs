@@ -4,6 +4,10 @@
 
 mod common;
 
+use glam::DVec2;
+use glyphscope::coverage::CoverageImage;
+use glyphscope::metrics;
+use glyphscope::reference;
 use glyphscope::stability::{self, cases, claims, sweep};
 
 #[test]
@@ -18,7 +22,7 @@ fn every_method_keeps_its_claims_on_every_hard_case() {
         let case = cases.iter().find(|c| c.name == o.case).unwrap();
         assert_eq!(
             o.frames,
-            size.cameras_for(case),
+            size.cameras_for(case).len(),
             "{} × {}",
             o.case,
             o.variant
@@ -45,13 +49,16 @@ fn limitations_show_their_numbers() {
     )
     .unwrap();
     let estimate = &outcomes[0];
-    assert_eq!(estimate.bound, None, "the estimate claims no bound");
+    assert_eq!(
+        estimate.bound, None,
+        "the estimate bounds nothing on overlaps"
+    );
     assert!(estimate.limitation);
     assert!(estimate.artifact_pixels > 100, "{estimate:?}");
     assert!(!estimate.breaks_claim());
     let exact = &outcomes[1];
     assert!(exact.limitation, "overlaps are exact mode's limitation");
-    assert_eq!(exact.bound, Some(0.8));
+    assert_eq!(exact.bound.map(|b| b.max), Some(0.8));
     assert!(!exact.breaks_claim(), "{exact:?}");
 }
 
@@ -73,7 +80,7 @@ fn the_same_cameras_every_run_covering_the_grid() {
     assert_eq!(quick.rotations_for(&sun), [0.0, 45.0, 90.0, 180.0, 270.0]);
     let square = cases::by_name("vertex-on-centre-row").unwrap();
     assert_eq!(full.rotations_for(&square), full.rotations_deg);
-    assert_eq!(full.cameras_for(&sun), 16 * 15);
+    assert_eq!(full.cameras_for(&sun).len(), 16 * 15);
     // One offset in each row and column of the 4×4 grid.
     for axis in [0, 1] {
         let mut seen: Vec<f64> = quick.offsets.iter().map(|o| o[axis]).collect();
@@ -101,5 +108,105 @@ fn unknown_names_are_input_errors() {
     ] {
         assert!(matches!(err, glyphscope::Error::Input(_)), "{err}");
         assert!(err.to_string().contains("'nope'"), "{err}");
+    }
+}
+
+/// The CI grid runs the camera where the full sweep found each method worst on each
+/// case, whether or not its own coarse grid contains it: a claim checked only where a
+/// method does well claims nothing.
+#[test]
+fn the_ci_grid_runs_every_known_worst_camera() {
+    let quick = sweep::SweepSize::quick();
+    let labels: Vec<&str> = claims::variants().iter().map(|v| v.label).collect();
+    let mut off_grid = 0;
+    for worst in cases::WORST_CAMERAS {
+        let case = cases::by_name(worst.case)
+            .unwrap_or_else(|| panic!("a worst camera of no case: {worst:?}"));
+        assert!(labels.contains(&worst.variant), "{worst:?}");
+        let camera = (worst.rotation_deg, DVec2::from(worst.subpixel));
+        assert!(quick.cameras_for(&case).contains(&camera), "{worst:?}");
+        let on_grid =
+            quick.rotations_for(&case).contains(&camera.0) && quick.offsets.contains(&camera.1);
+        off_grid += usize::from(!on_grid);
+    }
+    // Most worst cameras lie off the coarse grid: that is why they are listed.
+    assert!(
+        off_grid > 0,
+        "every worst camera is on the coarse grid already"
+    );
+    // Every case where a method is off at all has its worst cameras listed.
+    assert!(cases::WORST_CAMERAS.len() > cases::all().len());
+}
+
+/// What each claim is for: coverage rounded to 0 or 1 (a method that finds which side
+/// of the edge a pixel centre lies on, and nothing more) is off by at most 0.5, so a
+/// bound on the largest error alone lets it through; the bound on the mean error must
+/// not. And a NaN anywhere breaks every claim on every case. Seen through the CI
+/// grid's cameras, on the CPU: the reference itself, rounded, is the image.
+#[test]
+fn every_claim_rejects_coverage_rounded_to_0_or_1_and_nan() {
+    let size = sweep::SweepSize::quick();
+    let variants = claims::variants();
+    let mut broken_by_rounding = vec![0; variants.len()];
+    for case in cases::all() {
+        let mut rounded: Vec<sweep::Outcome> = variants
+            .iter()
+            .map(|v| sweep::Outcome::new(&case, v))
+            .collect();
+        let mut with_nan = rounded.clone();
+        // Four cameras a case (one per offset at the first rotation) are enough here.
+        for &(rotation, offset) in size.cameras_for(&case).iter().take(4) {
+            let camera = case.camera(rotation, offset).unwrap();
+            let exact = reference::rasterize(&case.scene, &camera).unwrap();
+            let round = CoverageImage {
+                data: exact.data.iter().map(|v| v.round()).collect(),
+                ..exact.clone()
+            };
+            let mut nan = exact.clone();
+            nan.data[0] = f32::NAN;
+            for (outcome, image) in [(&mut rounded, round), (&mut with_nan, nan)] {
+                let stats = metrics::compare(&image, &exact).unwrap();
+                assert!(stats.max <= 0.5 || stats.max.is_infinite(), "{stats:?}");
+                for o in outcome.iter_mut() {
+                    o.add_frame(&stats, (rotation, offset), image.clone(), &exact);
+                }
+            }
+        }
+        for (k, o) in rounded.into_iter().enumerate() {
+            broken_by_rounding[k] += usize::from(o.finish().breaks_claim());
+        }
+        for o in with_nan {
+            let o = o.finish();
+            assert!(
+                o.bound.is_none() || o.breaks_claim(),
+                "{} × {}: NaN kept the claim",
+                o.case,
+                o.variant
+            );
+        }
+    }
+    for (variant, broken) in variants.iter().zip(&broken_by_rounding) {
+        println!(
+            "{}: rounded coverage breaks it on {broken} cases",
+            variant.label
+        );
+        assert!(
+            *broken > 0,
+            "{}: rounded coverage keeps the claim",
+            variant.label
+        );
+    }
+}
+
+/// Every claimed setting bounds something on the outlines it is meant for — the
+/// estimate, `sdf-cells`' default, on text without overlapping or touching contours —
+/// and a bound on the maximum comes with one on the mean.
+#[test]
+fn every_setting_claims_a_bound_where_it_is_meant_to_work() {
+    let ordinary = cases::by_name("latin-modern-cubics").unwrap();
+    for variant in claims::variants() {
+        let bound = variant.claim.bound(ordinary.traits);
+        let bound = bound.unwrap_or_else(|| panic!("{} claims nothing", variant.label));
+        assert!(bound.max < 1.0 && bound.mae_255 > 0.0, "{}", variant.label);
     }
 }

@@ -55,6 +55,18 @@ pub struct Case {
 /// A property of a case that a method's claim may leave out of its scope.
 pub use crate::methods::registry::Trait;
 
+/// A camera where the full sweep found a method (a variant's label) worst on a case.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WorstCamera {
+    pub case: &'static str,
+    pub variant: &'static str,
+    pub rotation_deg: f64,
+    /// Sub-pixel offset (pixels).
+    pub subpixel: (f64, f64),
+}
+
+pub use super::worst_cameras::WORST_CAMERAS;
+
 impl Case {
     /// The case's camera, turned by `rotation_deg` about the view (after the case's own
     /// matrix) and moved by `subpixel` (pixels).
@@ -103,8 +115,18 @@ pub fn all() -> Vec<Case> {
         traits: &[Trait::Overlapping],
         ..case
     };
+    let touching = |case: Case| Case {
+        traits: &[Trait::TouchingContours],
+        ..case
+    };
+    // Two edges inside one pixel.
     let subpixel_detail = |case: Case| Case {
         traits: &[Trait::SubpixelDetail],
+        ..case
+    };
+    // Whole contours, or chains of curves, inside a pixel: more than 8 edges cross it.
+    let crowded = |case: Case| Case {
+        traits: &[Trait::SubpixelDetail, Trait::CrowdedPixels],
         ..case
     };
     let default_font = Font::default_font();
@@ -224,12 +246,12 @@ pub fn all() -> Vec<Case> {
                 (2.0, 14.0),
             ])],
         ),
-        subpixel_detail(synthetic(
+        crowded(synthetic(
             "tiny-curves",
             "quadratics 1e-4 em long along an edge, and a contour 1e-4 em across",
             tiny_curve_contours(),
         )),
-        synthetic(
+        touching(synthetic(
             "touching-contours",
             "squares touching at a corner, a triangle touching a square's edge at its tip",
             vec![
@@ -238,15 +260,15 @@ pub fn all() -> Vec<Case> {
                 polygon(&[(18.0, 2.0), (26.0, 2.0), (22.0, 10.0)]),
                 polygon(&rect(18.0, 10.0, 26.0, 18.0)),
             ],
-        ),
-        synthetic(
+        )),
+        touching(synthetic(
             "shared-edge",
             "two squares sharing a whole edge, run once each way, off the pixel grid",
             vec![
                 polygon(&rect(2.0, 2.3, 10.6, 14.0)),
                 polygon(&rect(10.6, 2.3, 18.0, 14.0)),
             ],
-        ),
+        )),
         overlapping(synthetic(
             "overlapping-same-direction",
             "two squares wound the same way, overlapping",
@@ -256,7 +278,13 @@ pub fn all() -> Vec<Case> {
             ],
         )),
         Case {
-            traits: &[Trait::Overlapping, Trait::DenseOverlaps],
+            // Edges 0.05 px apart: some 20 of them cross each pixel of the border.
+            traits: &[
+                Trait::Overlapping,
+                Trait::SubpixelDetail,
+                Trait::CrowdedPixels,
+                Trait::DeepWinding,
+            ],
             ..synthetic(
                 "winding-256",
                 "256 nested squares wound the same way: the centre winds 256 times",
@@ -291,7 +319,7 @@ pub fn all() -> Vec<Case> {
             "a self-intersecting star: its centre winds twice",
             vec![pentagram()],
         )),
-        synthetic(
+        subpixel_detail(synthetic(
             "thin-stem",
             "stems 0.05 px wide, vertical and horizontal",
             vec![
@@ -299,7 +327,7 @@ pub fn all() -> Vec<Case> {
                 polygon(&rect(8.3, 2.0, 8.35, 18.0)),
                 polygon(&rect(10.0, 6.6, 22.0, 6.65)),
             ],
-        ),
+        )),
         synthetic(
             "cubic-cusp",
             "a cubic with a cusp (zero derivative inside it)",
@@ -345,7 +373,7 @@ pub fn all() -> Vec<Case> {
             "the same transposed: bars along y between curves near the x axis",
             near_tangent_vertices(true),
         ),
-        subpixel_detail(real(
+        crowded(real(
             "glyphs-2px",
             "DejaVu Sans 'Hamburg@' at 2 px/em",
             text("Hamburg@"),

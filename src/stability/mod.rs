@@ -5,11 +5,13 @@
 pub mod cases;
 pub mod claims;
 pub mod sweep;
+mod worst_cameras;
 
 use std::fmt::Write as _;
 use std::path::Path;
 
 use crate::Error;
+use crate::methods::registry::MARGIN;
 use crate::metrics;
 use cases::Case;
 use claims::Variant;
@@ -59,17 +61,21 @@ pub fn broken_claims(outcomes: &[Outcome]) -> Vec<String> {
     outcomes
         .iter()
         .filter(|o| o.breaks_claim())
-        .map(|o| match &o.failure {
-            Some(failure) => format!("{} × {}: failed: {failure}", o.case, o.variant),
-            None => format!(
-                "{} × {}: claims max error ≤ {}, measured {:.3} ({} artifact pixels; worst at {})",
+        .map(|o| match (&o.failure, o.bound) {
+            (Some(failure), _) => format!("{} × {}: failed: {failure}", o.case, o.variant),
+            (None, Some(bound)) => format!(
+                "{} × {}: claims max error ≤ {} and MAE ≤ {}/255, measured {:.3} and \
+                 {:.2}/255 ({} artifact pixels; worst at {})",
                 o.case,
                 o.variant,
-                o.bound.unwrap_or(f64::NAN),
+                bound.max,
+                bound.mae_255,
                 o.max,
+                o.mae_255,
                 o.artifact_pixels,
                 worst_location(o)
             ),
+            (None, None) => unreachable!("an outcome with no bound and no failure holds"),
         })
         .collect()
 }
@@ -90,25 +96,28 @@ fn verdict(o: &Outcome) -> &'static str {
     }
 }
 
-/// One row per (case, variant): MAE, max, artifacts, where it was worst, the claim.
+/// One row per (case, variant): MAE over the frame and over its edge pixels, max,
+/// pixels off by more than 0.25 and 0.5, where it was worst, the claim.
 pub fn long_table(outcomes: &[Outcome]) -> String {
     let mut out = String::from(
-        "| case | method | MAE /255 | max | artifact px | worst at (rotation, offset, pixel) | claim | verdict |\n\
-         |---|---|---:|---:|---:|---|---|---|\n",
+        "| case | method | MAE /255 | edge MAE /255 | max | px > 0.25 | px > 0.5 | worst at (rotation, offset, pixel) | claim (max, MAE /255) | verdict |\n\
+         |---|---|---:|---:|---:|---:|---:|---|---|---|\n",
     );
     for o in outcomes {
         let claim = match (o.limitation, o.bound) {
-            (false, Some(b)) => format!("≤ {b}"),
-            (true, Some(b)) => format!("limitation, ≤ {b}"),
+            (false, Some(b)) => format!("≤ {}, ≤ {}", b.max, b.mae_255),
+            (true, Some(b)) => format!("limitation, ≤ {}, ≤ {}", b.max, b.mae_255),
             (_, None) => "limitation".to_owned(),
         };
         writeln!(
             out,
-            "| {} | {} | {:.2} | {:.3} | {} | {} | {claim} | {} |",
+            "| {} | {} | {:.2} | {:.2} | {:.3} | {} | {} | {} | {claim} | {} |",
             o.case,
             o.variant,
             o.mae_255,
+            o.edge_mae_255,
             o.max,
+            o.pixels_over_025,
             o.artifact_pixels,
             worst_location(o),
             verdict(o)
@@ -158,9 +167,82 @@ pub fn matrix_table(outcomes: &[Outcome]) -> String {
     out
 }
 
+/// Per claim, the worst values measured on the cases it bounds (its claimed cases,
+/// then its limitations) as a share of the bound: the margin rule asks for at most
+/// [`MARGIN`]; a share over it is marked "over".
+pub fn margin_table(outcomes: &[Outcome]) -> String {
+    let mut out = String::from(
+        "| method | cases | bound (max, MAE /255) | worst max (share) | worst MAE /255 (share) | margin rule |\n\
+         |---|---|---|---|---|---|\n",
+    );
+    let mut variants: Vec<&str> = Vec::new();
+    for o in outcomes {
+        if !variants.contains(&o.variant) {
+            variants.push(o.variant);
+        }
+    }
+    for variant in variants {
+        for limitation in [false, true] {
+            let cells: Vec<&Outcome> = outcomes
+                .iter()
+                .filter(|o| o.variant == variant && o.limitation == limitation)
+                .collect();
+            let Some(bound) = cells.first().and_then(|o| o.bound) else {
+                continue;
+            };
+            let worst = |value: fn(&Outcome) -> f64| {
+                cells
+                    .iter()
+                    .map(|o| (value(o), o.case))
+                    .max_by(|a, b| a.0.total_cmp(&b.0))
+                    .expect("a bound comes from a cell")
+            };
+            let (max, max_case) = worst(|o| o.max);
+            let (mae, mae_case) = worst(|o| o.mae_255);
+            let (max_share, mae_share) = (max / bound.max, mae / bound.mae_255);
+            let kept = max_share <= MARGIN && mae_share <= MARGIN;
+            writeln!(
+                out,
+                "| {variant} | {} | {}, {} | {max:.3} {max_case} ({:.0}%) | {mae:.2} {mae_case} ({:.0}%) | {} |",
+                if limitation { "limitations" } else { "claimed" },
+                bound.max,
+                bound.mae_255,
+                100.0 * max_share,
+                100.0 * mae_share,
+                if kept { "kept" } else { "over" }
+            )
+            .expect("writing to a String");
+        }
+    }
+    out
+}
+
+/// Rust source listing, per (case, variant) with any error at all, the camera where
+/// the error was largest: `worst_cameras.rs` for the CI grid to run.
+pub fn worst_cameras_source(outcomes: &[Outcome]) -> String {
+    let mut out = String::from(
+        "//! Written by `glyphscope stability --out DIR` (the full sweep) as\n\
+         //! `DIR/worst-cameras.rs`, and pasted here: the camera where each method was worst on\n\
+         //! each case, which the CI grid runs besides its own.\n\n\
+         use super::cases::WorstCamera;\n\n\
+         pub const WORST_CAMERAS: &[WorstCamera] = &[\n",
+    );
+    for o in outcomes.iter().filter(|o| o.max > 0.0) {
+        let w = &o.worst;
+        writeln!(
+            out,
+            "    WorstCamera {{\n        case: {:?},\n        variant: {:?},\n        \
+             rotation_deg: {:?},\n        subpixel: ({:?}, {:?}),\n    }},",
+            o.case, o.variant, w.rotation_deg, w.subpixel.0, w.subpixel.1
+        )
+        .expect("writing to a String");
+    }
+    out + "];\n"
+}
+
 /// Writes, under `dir`, each (case, variant)'s worst frame and its signed error map
-/// (red: too much coverage, blue: too little, full at 0.5), the tables as Markdown and
-/// the outcomes as JSON.
+/// (red: too much coverage, blue: too little, full at 0.5), the tables (with each
+/// claim's margin) as Markdown, the outcomes as JSON, and the worst cameras as Rust.
 pub fn write_report(dir: &Path, outcomes: &[Outcome]) -> Result<(), Error> {
     let output = |path: &Path, e: &dyn std::fmt::Display| {
         Error::Output(format!("cannot write '{}': {e}", path.display()))
@@ -179,12 +261,15 @@ pub fn write_report(dir: &Path, outcomes: &[Outcome]) -> Result<(), Error> {
     }
     let markdown = format!(
         "MAE /255 (mean over frames) · max · artifact pixels (> 0.5, summed over frames); \
-         * limitation, ! broken claim\n\n{}\n{}",
+         * limitation, ! broken claim\n\n{}\n{}\n{}",
         matrix_table(outcomes),
+        margin_table(outcomes),
         long_table(outcomes)
     );
     let path = dir.join("stability.md");
     std::fs::write(&path, markdown).map_err(|e| output(&path, &e))?;
+    let path = dir.join("worst-cameras.rs");
+    std::fs::write(&path, worst_cameras_source(outcomes)).map_err(|e| output(&path, &e))?;
     let path = dir.join("stability.json");
     let json = serde_json::to_string_pretty(outcomes).expect("outcomes serialize");
     std::fs::write(&path, json + "\n").map_err(|e| output(&path, &e))?;
@@ -194,6 +279,7 @@ pub fn write_report(dir: &Path, outcomes: &[Outcome]) -> Result<(), Error> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::methods::registry::within;
     use sweep::Worst;
 
     fn outcome(max: f64, bound: Option<f64>) -> Outcome {
@@ -201,12 +287,14 @@ mod tests {
             case: "a-case",
             variant: "a-method",
             mae_255: 1.0,
+            edge_mae_255: 10.0,
             max,
+            pixels_over_025: 5,
             artifact_pixels: 3,
             frames: 8,
             worst: Worst::default(),
             limitation: bound.is_none(),
-            bound,
+            bound: bound.map(|max| within(max, 2.0)),
             failure: None,
             worst_images: None,
         }
@@ -225,6 +313,30 @@ mod tests {
             ..outcome(0.0, None)
         };
         assert!(failed.breaks_claim());
+    }
+
+    #[test]
+    fn a_claim_breaks_past_its_mean_error_too() {
+        let mae = |mae_255| Outcome {
+            mae_255,
+            ..outcome(0.1, Some(0.5))
+        };
+        assert!(!mae(2.0).breaks_claim());
+        assert!(mae(2.01).breaks_claim());
+        assert!(mae(f64::NAN).breaks_claim());
+        let broken = broken_claims(&[mae(3.0)]);
+        assert!(broken[0].contains("MAE ≤ 2/255") && broken[0].contains("3.00/255"));
+    }
+
+    #[test]
+    fn the_margin_table_marks_a_bound_kept_under_its_margin_only() {
+        let table = margin_table(&[outcome(0.4, Some(0.5))]);
+        assert!(
+            table.contains("| kept |") && table.contains("(80%)"),
+            "{table}"
+        );
+        let table = margin_table(&[outcome(0.41, Some(0.5))]);
+        assert!(table.contains("| over |"), "{table}");
     }
 
     #[test]

@@ -5,13 +5,14 @@
 use glam::DVec2;
 use serde::Serialize;
 
-use super::cases::Case;
+use super::cases::{Case, WORST_CAMERAS};
 use super::claims::Variant;
 use crate::Error;
 use crate::coverage::CoverageImage;
 use crate::gpu::GpuContext;
+use crate::methods::registry::Bound;
 use crate::methods::{self, Method, frame};
-use crate::metrics;
+use crate::metrics::{self, ErrorStats};
 use crate::reference;
 
 /// The cameras each case is seen through.
@@ -21,6 +22,9 @@ pub struct SweepSize {
     pub rotations_deg: Vec<f64>,
     /// Rotations added for the cases seen through a full turn (`Case::full_turn`).
     pub full_turn_deg: Vec<f64>,
+    /// Cameras added for named cases (case, rotation, offset): where the full sweep
+    /// found a method worst, so that a grid too coarse to contain them still runs them.
+    pub also: Vec<(&'static str, f64, DVec2)>,
 }
 
 impl SweepSize {
@@ -33,11 +37,14 @@ impl SweepSize {
                 .collect(),
             rotations_deg: vec![0.0, 1.0, 45.0, 89.9],
             full_turn_deg: every(30.0),
+            // Its grid is where every worst camera was found.
+            also: Vec::new(),
         }
     }
 
     /// The CI size: 4 offsets (one per row and column of the grid) × 0° and 45°; for a
-    /// full turn, every 90° besides.
+    /// full turn, every 90° besides; and the camera where the full sweep found each
+    /// method worst on each case ([`WORST_CAMERAS`]).
     pub fn quick() -> SweepSize {
         SweepSize {
             offsets: [(0.0, 0.0), (0.25, 0.5), (0.5, 0.75), (0.75, 0.25)]
@@ -45,11 +52,15 @@ impl SweepSize {
                 .to_vec(),
             rotations_deg: vec![0.0, 45.0],
             full_turn_deg: every(90.0),
+            also: WORST_CAMERAS
+                .iter()
+                .map(|w| (w.case, w.rotation_deg, DVec2::from(w.subpixel)))
+                .collect(),
         }
     }
 
-    /// The cameras of a case not seen through a full turn.
-    pub fn cameras(&self) -> usize {
+    /// The grid's cameras for a case not seen through a full turn.
+    pub fn grid_cameras(&self) -> usize {
         self.offsets.len() * self.rotations_deg.len()
     }
 
@@ -65,8 +76,20 @@ impl SweepSize {
         rotations
     }
 
-    pub fn cameras_for(&self, case: &Case) -> usize {
-        self.offsets.len() * self.rotations_for(case).len()
+    /// Every camera `case` is seen through, (rotation, offset): the grid, then the
+    /// cameras added for it that the grid lacks.
+    pub fn cameras_for(&self, case: &Case) -> Vec<(f64, DVec2)> {
+        let mut cameras: Vec<(f64, DVec2)> = self
+            .rotations_for(case)
+            .into_iter()
+            .flat_map(|r| self.offsets.iter().map(move |&o| (r, o)))
+            .collect();
+        for &(name, rotation, offset) in &self.also {
+            if name == case.name && !cameras.contains(&(rotation, offset)) {
+                cameras.push((rotation, offset));
+            }
+        }
+        cameras
     }
 }
 
@@ -92,8 +115,13 @@ pub struct Outcome {
     pub variant: &'static str,
     /// Mean over the frames of each frame's MAE, in 1/255.
     pub mae_255: f64,
+    /// Mean over the frames of each frame's MAE over its edge pixels (see
+    /// [`metrics::ErrorStats::edge`]), in 1/255.
+    pub edge_mae_255: f64,
     /// Largest pixel error over all frames (infinite for NaN coverage).
     pub max: f64,
+    /// Pixels off by more than 0.25, summed over the frames (all of them edge pixels).
+    pub pixels_over_025: usize,
     /// Artifacts: pixels off by more than 0.5 (nearer the wrong level), summed over
     /// the frames.
     pub artifact_pixels: usize,
@@ -101,9 +129,8 @@ pub struct Outcome {
     pub worst: Worst,
     /// Whether the case is a documented limitation of the method.
     pub limitation: bool,
-    /// The claimed bound on the largest error (on a limitation, the looser one that
-    /// still holds), if any.
-    pub bound: Option<f64>,
+    /// The claimed bound (on a limitation, the looser one that still holds), if any.
+    pub bound: Option<Bound>,
     /// A failure to prepare or draw, which breaks any claim.
     pub failure: Option<String>,
     /// The worst frame and its reference (not serialized).
@@ -112,11 +139,62 @@ pub struct Outcome {
 }
 
 impl Outcome {
+    /// `variant`'s cell on `case`, before any frame.
+    pub fn new(case: &Case, variant: &Variant) -> Outcome {
+        Outcome {
+            case: case.name,
+            variant: variant.label,
+            mae_255: 0.0,
+            edge_mae_255: 0.0,
+            max: 0.0,
+            pixels_over_025: 0,
+            artifact_pixels: 0,
+            frames: 0,
+            worst: Worst::default(),
+            limitation: variant.claim.is_limitation(case.traits),
+            bound: variant.claim.bound(case.traits),
+            failure: None,
+            worst_images: None,
+        }
+    }
+
+    /// Adds one frame: `stats` compare `image` with `reference`, seen through `camera`
+    /// (rotation, offset). The means are sums until [`Outcome::finish`].
+    pub fn add_frame(
+        &mut self,
+        stats: &ErrorStats,
+        camera: (f64, DVec2),
+        image: CoverageImage,
+        reference: &CoverageImage,
+    ) {
+        self.frames += 1;
+        self.mae_255 += stats.mae_255;
+        self.edge_mae_255 += stats.edge.mae_255;
+        self.pixels_over_025 += stats.pixels_over_025;
+        self.artifact_pixels += stats.pixels_over_05;
+        // `compare` gives an invalid pixel an infinite error, so NaN never hides here.
+        if stats.max > self.max || self.worst_images.is_none() {
+            self.max = stats.max;
+            self.worst = Worst {
+                rotation_deg: camera.0,
+                subpixel: camera.1.into(),
+                pixel: stats.worst_pixel,
+            };
+            self.worst_images = Some((image, reference.clone()));
+        }
+    }
+
+    /// The cell with its means taken over its frames.
+    pub fn finish(mut self) -> Outcome {
+        let frames = self.frames.max(1) as f64;
+        self.mae_255 /= frames;
+        self.edge_mae_255 /= frames;
+        self
+    }
+
     /// Whether the measurement breaks the claim (a failure always does).
     pub fn breaks_claim(&self) -> bool {
-        // A NaN max compares false with everything: it breaks the claim too.
-        let within = |bound: f64| self.max <= bound;
-        self.failure.is_some() || self.bound.is_some_and(|b| !within(b))
+        self.failure.is_some() || self.bound.is_some_and(|b| !b.holds(self.max, self.mae_255))
     }
 }
 
@@ -135,19 +213,7 @@ pub fn run(
         let mut cells: Vec<(Option<Box<dyn Method>>, Outcome)> = variants
             .iter()
             .map(|variant| {
-                let mut outcome = Outcome {
-                    case: case.name,
-                    variant: variant.label,
-                    mae_255: 0.0,
-                    max: 0.0,
-                    artifact_pixels: 0,
-                    frames: 0,
-                    worst: Worst::default(),
-                    limitation: variant.claim.is_limitation(case.traits),
-                    bound: variant.claim.bound(case.traits),
-                    failure: None,
-                    worst_images: None,
-                };
+                let mut outcome = Outcome::new(case, variant);
                 let method = methods::create(variant.method, &variant.params())
                     .and_then(|mut m| m.prepare(gpu, &case.scene).map(|()| m))
                     .map_err(|e| outcome.failure = Some(format!("prepare: {e}")))
@@ -155,42 +221,26 @@ pub fn run(
                 (method, outcome)
             })
             .collect();
-        for rotation_deg in size.rotations_for(case) {
-            for &subpixel in &size.offsets {
-                let camera = case.camera(rotation_deg, subpixel)?;
-                let reference = reference::rasterize(&case.scene, &camera)?;
-                for (method, outcome) in &mut cells {
-                    let Some(m) = method else { continue };
-                    let image = match frame::render_image(gpu, m.as_mut(), &camera) {
-                        Ok(image) => image,
-                        Err(e) => {
-                            outcome.failure = Some(format!(
-                                "drawing at {rotation_deg}°, offset {subpixel}: {e}"
-                            ));
-                            *method = None;
-                            continue;
-                        }
-                    };
-                    let stats = metrics::compare(&image, &reference)?;
-                    outcome.frames += 1;
-                    outcome.mae_255 += stats.mae_255;
-                    outcome.artifact_pixels += stats.pixels_over_05;
-                    if stats.max > outcome.max || outcome.worst_images.is_none() {
-                        outcome.max = stats.max;
-                        outcome.worst = Worst {
-                            rotation_deg,
-                            subpixel: subpixel.into(),
-                            pixel: stats.worst_pixel,
-                        };
-                        outcome.worst_images = Some((image, reference.clone()));
+        for (rotation_deg, subpixel) in size.cameras_for(case) {
+            let camera = case.camera(rotation_deg, subpixel)?;
+            let reference = reference::rasterize(&case.scene, &camera)?;
+            for (method, outcome) in &mut cells {
+                let Some(m) = method else { continue };
+                let image = match frame::render_image(gpu, m.as_mut(), &camera) {
+                    Ok(image) => image,
+                    Err(e) => {
+                        outcome.failure = Some(format!(
+                            "drawing at {rotation_deg}°, offset {subpixel}: {e}"
+                        ));
+                        *method = None;
+                        continue;
                     }
-                }
+                };
+                let stats = metrics::compare(&image, &reference)?;
+                outcome.add_frame(&stats, (rotation_deg, subpixel), image, &reference);
             }
         }
-        for (_, mut outcome) in cells {
-            outcome.mae_255 /= outcome.frames.max(1) as f64;
-            outcomes.push(outcome);
-        }
+        outcomes.extend(cells.into_iter().map(|(_, outcome)| outcome.finish()));
     }
     Ok(outcomes)
 }
