@@ -69,7 +69,7 @@ fn quick_bench_outputs_agree_with_render() {
         out.to_str().unwrap(),
     ]);
     let bench = glyphscope::bench::REPORTS.iter();
-    for file in bench.chain(glyphscope::bench::SCENE_PLOTS) {
+    for file in bench.chain(glyphscope::bench::SCENE_OUTPUTS) {
         let len = std::fs::metadata(out.join(file)).unwrap().len();
         assert!(len > 500, "{file}: {len} bytes");
     }
@@ -202,7 +202,7 @@ fn scaling_series_grow_and_are_reported() {
         let len = std::fs::metadata(out.join(file)).unwrap().len();
         assert!(len > 500, "{file}: {len} bytes");
     }
-    for file in glyphscope::bench::SCENE_PLOTS {
+    for file in glyphscope::bench::SCENE_OUTPUTS {
         assert!(!out.join(file).exists(), "{file}: no scene was asked for");
     }
     let json = read_json(&out.join("bench.json"));

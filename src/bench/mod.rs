@@ -20,9 +20,9 @@ use crate::Error;
 pub use run::{BenchOptions, BenchResult, run};
 
 /// The files every bench run writes into its output folder.
-pub const REPORTS: &[&str] = &["bench.md", "bench.csv", "bench.json"];
-/// The plots a run writes when it measured a standard scene.
-pub const SCENE_PLOTS: &[&str] = &["time-vs-error.svg", "tessellation-points.svg"];
+pub const REPORTS: &[&str] = &["bench.md", "bench.json"];
+/// The table and plots a run writes when it measured a standard scene.
+pub const SCENE_OUTPUTS: &[&str] = &["bench.csv", "time-vs-error.svg", "tessellation-points.svg"];
 /// What a run writes when it measured a scaling series.
 pub const SCALING_OUTPUTS: &[&str] = &[
     "scaling.csv",
@@ -31,7 +31,7 @@ pub const SCALING_OUTPUTS: &[&str] = &[
 ];
 
 /// Runs the bench and writes into `out` (created if missing) the [`REPORTS`], and the
-/// [`SCENE_PLOTS`] and [`SCALING_OUTPUTS`] where it measured scenes and scaling series:
+/// [`SCENE_OUTPUTS`] and [`SCALING_OUTPUTS`] where it measured scenes and scaling series:
 /// a plot with nothing to show is not drawn. The folder is checked before anything is
 /// measured, so a bad path fails at once.
 pub fn run_to(options: &BenchOptions, out: &Path) -> Result<BenchResult, Error> {
@@ -46,9 +46,9 @@ pub fn run_to(options: &BenchOptions, out: &Path) -> Result<BenchResult, Error> 
     let result = run(options)?;
     let write = |name: &str, text: String| std::fs::write(out.join(name), text).map_err(cannot);
     write("bench.md", report::markdown(&result))?;
-    write("bench.csv", report::csv(&result))?;
     write("bench.json", report::json(&result))?;
     if !result.cases.is_empty() {
+        write("bench.csv", report::csv(&result))?;
         plot::time_against_error(&result, &out.join("time-vs-error.svg"))?;
         plot::points_against_error(&result, &out.join("tessellation-points.svg"))?;
     }
