@@ -226,6 +226,9 @@ pub fn points_against_error(result: &BenchResult, path: &Path) -> Result<(), Err
     root.present().map_err(plot_error)
 }
 
+/// A method's figure at a scaling point (method named), if it was measured.
+type PointFigure = dyn Fn(&ScalingPoint, &str) -> Option<f64>;
+
 /// One scaling series: time per frame (left) and GPU memory (right) against its work,
 /// log–log, a line per method; the legends sit at the upper left, where little work
 /// costs little.
@@ -247,7 +250,7 @@ pub fn scaling(points: &[&ScalingPoint], adapter: &str, path: &Path) -> Result<(
     };
     let time = |p: &ScalingPoint, m: &str| p.cost(m).and_then(|c| c.frame_ms);
     let memory = |p: &ScalingPoint, m: &str| p.cost(m).map(|c| c.gpu_bytes as f64 / 1024.0);
-    let panels_of: [(&str, String, &dyn Fn(&ScalingPoint, &str) -> Option<f64>); 2] = [
+    let panels_of: [(&str, String, &PointFigure); 2] = [
         (
             "time per frame",
             format!("GPU + CPU ms per frame ({adapter})"),
