@@ -78,17 +78,23 @@ pub struct BenchArgs {
     #[arg(long)]
     pub quick: bool,
     /// Scenes to run, comma-separated (default: all): page, tiny, headlines, edge,
-    /// rotated, latin-modern, inter-900, bengali.
+    /// rotated, latin-modern, inter-900, bengali, and the scaling series glyph-count
+    /// (100 → 30 000 glyphs of the page) and px-per-em (one word at 4 → 4 096 px/em).
     #[arg(long, value_delimiter = ',')]
     pub scenes: Vec<String>,
     /// Methods to run, comma-separated (default: all): reference, winding, sdf-cells,
     /// xor-stencil, tessellation, atlas.
     #[arg(long, value_delimiter = ',')]
     pub methods: Vec<String>,
-    /// Frames timed per case, over its rounds (default 21 in 3 rounds; 3 with --quick).
+    /// Frames timed per case, over its rounds (default 21 in 3 rounds; 3 with --quick);
+    /// per point of a scaling series (default 5; 2 with --quick).
     #[arg(long)]
     pub frames: Option<usize>,
-    /// Folder for bench.md, bench.csv, bench.json and the SVG plots.
+    /// Points per scaling series, on a log scale (default 11; 3 with --quick, which
+    /// also stops the series at 3 000 glyphs and 256 px/em).
+    #[arg(long)]
+    pub scaling_points: Option<usize>,
+    /// Folder for bench.md, bench.csv, bench.json, scaling.csv and the SVG plots.
     #[arg(long, default_value = "bench-out")]
     pub out: PathBuf,
 }
@@ -101,6 +107,7 @@ pub fn run_bench(args: &BenchArgs) -> Result<(), Error> {
         scenes: args.scenes.clone(),
         methods: args.methods.clone(),
         frames: args.frames,
+        scaling_points: args.scaling_points,
     };
     crate::bench::run_to(&options, &args.out)?;
     println!("{}", args.out.join("bench.md").display());

@@ -45,6 +45,9 @@ pub struct RenderStats {
     /// GPU memory the method holds once it has drawn: its scene data and intermediate
     /// attachments (the coverage target not counted).
     pub gpu_bytes: u64,
+    /// The part of `gpu_bytes` that caches rasterized glyphs (the atlas's texture), for
+    /// methods that keep such a cache.
+    pub cache_bytes: Option<u64>,
     pub width: u32,
     pub height: u32,
     pub size_px_per_em: f64,
@@ -114,6 +117,7 @@ pub fn measure(
         cpu_prepare_ms: 0.0,
         cpu_render_ms: None,
         gpu_bytes: 0,
+        cache_bytes: None,
         width: camera.width,
         height: camera.height,
         size_px_per_em: camera.size_px_per_em,
@@ -181,6 +185,7 @@ pub fn measure(
         // After the frames: what a method allocates on its first frame (intermediate
         // attachments, meshes that depend on the camera) counts too.
         stats.gpu_bytes = method.gpu_bytes();
+        stats.cache_bytes = method.cache_bytes();
         stats.mesh = method.mesh_stats();
         image
     };

@@ -1,7 +1,8 @@
 //! `glyphscope bench` as a user runs it: `--quick` on one scene writes every output,
 //! with every method and the atlas baseline in both views and finite numbers; a case's
-//! error is the one `render --error-image --stats` gives for the same command line; bad
-//! input fails with exit code 2 before anything is measured.
+//! error is the one `render --error-image --stats` gives for the same command line; the
+//! scaling series grow their work and report every method at every point; bad input
+//! fails with exit code 2 before anything is measured.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -67,9 +68,13 @@ fn quick_bench_outputs_agree_with_render() {
         "--out",
         out.to_str().unwrap(),
     ]);
-    for file in glyphscope::bench::OUTPUTS {
+    let bench = glyphscope::bench::REPORTS.iter();
+    for file in bench.chain(glyphscope::bench::SCENE_OUTPUTS) {
         let len = std::fs::metadata(out.join(file)).unwrap().len();
         assert!(len > 500, "{file}: {len} bytes");
+    }
+    for file in glyphscope::bench::SCALING_OUTPUTS {
+        assert!(!out.join(file).exists(), "{file}: no series was asked for");
     }
     let json = read_json(&out.join("bench.json"));
     assert!(json["adapter"].as_str().unwrap().len() > 3);
@@ -176,6 +181,102 @@ fn quick_bench_outputs_agree_with_render() {
     }
 }
 
+/// The two scaling series at their quick size, three points each: the work rises from
+/// point to point, the frame's pixels with it, every method is measured at every point
+/// with finite times and memory, and the report, CSV and both plots are written.
+#[test]
+fn scaling_series_grow_and_are_reported() {
+    let out = scratch("scaling");
+    succeeds(&[
+        "bench",
+        "--quick",
+        "--scenes",
+        "glyph-count,px-per-em",
+        "--scaling-points",
+        "3",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let bench = glyphscope::bench::REPORTS.iter();
+    for file in bench.chain(glyphscope::bench::SCALING_OUTPUTS) {
+        let len = std::fs::metadata(out.join(file)).unwrap().len();
+        assert!(len > 500, "{file}: {len} bytes");
+    }
+    for file in glyphscope::bench::SCENE_OUTPUTS {
+        assert!(!out.join(file).exists(), "{file}: no scene was asked for");
+    }
+    let json = read_json(&out.join("bench.json"));
+    assert!(json["cases"].as_array().unwrap().is_empty());
+    let points = json["scaling"].as_array().unwrap();
+    let gpu_methods: Vec<&str> = registry::benched().map(|m| m.name).collect();
+    for series in ["glyph-count", "px-per-em"] {
+        let of: Vec<&Value> = points.iter().filter(|p| p["series"] == series).collect();
+        assert_eq!(of.len(), 3, "{series}");
+        let figure = |p: &Value, key: &str| number(&p[key], &format!("{series} {key}"));
+        for pair in of.windows(2) {
+            let (a, b) = (pair[0], pair[1]);
+            assert!(
+                figure(b, "work") > figure(a, "work"),
+                "{series}: work rises"
+            );
+            let pixels = |p: &Value| figure(p, "width") * figure(p, "height");
+            assert!(pixels(b) > pixels(a), "{series}: the frame grows");
+            assert!(
+                figure(b, "covered_px") > figure(a, "covered_px"),
+                "{series}: more is covered"
+            );
+        }
+        for p in &of {
+            let what = format!("{series} at {}", p["work"]);
+            let methods: Vec<&str> = p["costs"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|c| c["method"].as_str().unwrap())
+                .collect();
+            assert_eq!(methods, gpu_methods, "{what}: every GPU method, in order");
+            for cost in p["costs"].as_array().unwrap() {
+                let what = format!("{what} {}", cost["method"]);
+                for key in ["gpu_ms", "cpu_frame_ms", "frame_ms"] {
+                    assert!(number(&cost[key], &what) > 0.0, "{what} {key}");
+                }
+                let held = cost["gpu_bytes"].as_u64().unwrap();
+                assert!(held > 0, "{what}");
+                if cost["method"] == registry::baseline().name {
+                    let cache = cost["cache_bytes"].as_u64().unwrap();
+                    assert!(cache > 0 && cache < held, "{what}: its texture, within");
+                } else {
+                    assert!(cost["cache_bytes"].is_null(), "{what}: no glyph cache");
+                }
+            }
+        }
+    }
+    // The glyph-count series draws the glyphs it was asked for, give or take the few
+    // that shaping joins.
+    let first = points
+        .iter()
+        .find(|p| p["series"] == "glyph-count")
+        .unwrap();
+    let drawn = number(&first["glyphs"], "glyphs");
+    assert!((95.0..=100.0).contains(&drawn), "{drawn} glyphs for 100");
+
+    let md = std::fs::read_to_string(out.join("bench.md")).unwrap();
+    for expected in [
+        "## Scaling",
+        "### Against glyphs",
+        "### Against px/em",
+        "Slopes (time ∝ glyphs^k)",
+        "Slopes (time ∝ px/em^k)",
+        "By time (GPU + CPU per frame), the atlas is the cheapest at",
+        "By memory (GPU bytes held), the atlas is the cheapest at",
+    ] {
+        assert!(md.contains(expected), "bench.md lacks '{expected}':\n{md}");
+    }
+    assert!(!md.contains("## Summary"), "no scene, no summary");
+    let csv = std::fs::read_to_string(out.join("scaling.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 1 + 6 * gpu_methods.len());
+}
+
 #[test]
 fn bad_input_fails_cleanly_before_measuring() {
     let file = scratch("a-file");
@@ -192,6 +293,21 @@ fn bad_input_fails_cleanly_before_measuring() {
             "no method 'bounds'",
         ),
         (vec!["--frames", "0", "--out", out_dir], "at least 1"),
+        (
+            vec!["--scaling-points", "1", "--out", out_dir],
+            "--scaling-points must be from 2",
+        ),
+        (
+            vec![
+                "--scenes",
+                "px-per-em",
+                "--methods",
+                "reference",
+                "--out",
+                out_dir,
+            ],
+            "measure GPU methods",
+        ),
         (vec!["--out", file.to_str().unwrap()], "cannot write into"),
     ] {
         let mut all = vec!["bench", "--quick"];

@@ -4,11 +4,13 @@
 //! - [`scenes`]: the standard scenes, each a `render` command line;
 //! - [`sweep`]: the settings each method is measured at;
 //! - [`run`]: measuring, through the same function as `render --stats`;
+//! - [`scaling`]: how each method's cost grows with the glyphs and with the size;
 //! - [`report`] and [`plot`]: Markdown, CSV, JSON and SVG plots.
 
 pub mod plot;
 pub mod report;
 pub mod run;
+pub mod scaling;
 pub mod scenes;
 pub mod sweep;
 
@@ -17,17 +19,21 @@ use std::path::Path;
 use crate::Error;
 pub use run::{BenchOptions, BenchResult, run};
 
-/// The files a bench run writes into its output folder.
-pub const OUTPUTS: &[&str] = &[
-    "bench.md",
-    "bench.csv",
-    "bench.json",
-    "time-vs-error.svg",
-    "tessellation-points.svg",
+/// The files every bench run writes into its output folder.
+pub const REPORTS: &[&str] = &["bench.md", "bench.json"];
+/// The table and plots a run writes when it measured a standard scene.
+pub const SCENE_OUTPUTS: &[&str] = &["bench.csv", "time-vs-error.svg", "tessellation-points.svg"];
+/// What a run writes when it measured a scaling series.
+pub const SCALING_OUTPUTS: &[&str] = &[
+    "scaling.csv",
+    "scaling-glyph-count.svg",
+    "scaling-px-per-em.svg",
 ];
 
-/// Runs the bench and writes [`OUTPUTS`] into `out` (created if missing). The folder
-/// is checked before anything is measured, so a bad path fails at once.
+/// Runs the bench and writes into `out` (created if missing) the [`REPORTS`], and the
+/// [`SCENE_OUTPUTS`] and [`SCALING_OUTPUTS`] where it measured scenes and scaling series:
+/// a plot with nothing to show is not drawn. The folder is checked before anything is
+/// measured, so a bad path fails at once.
 pub fn run_to(options: &BenchOptions, out: &Path) -> Result<BenchResult, Error> {
     let cannot =
         |e: std::io::Error| Error::Output(format!("cannot write into '{}': {e}", out.display()));
@@ -40,9 +46,21 @@ pub fn run_to(options: &BenchOptions, out: &Path) -> Result<BenchResult, Error> 
     let result = run(options)?;
     let write = |name: &str, text: String| std::fs::write(out.join(name), text).map_err(cannot);
     write("bench.md", report::markdown(&result))?;
-    write("bench.csv", report::csv(&result))?;
     write("bench.json", report::json(&result))?;
-    plot::time_against_error(&result, &out.join("time-vs-error.svg"))?;
-    plot::points_against_error(&result, &out.join("tessellation-points.svg"))?;
+    if !result.cases.is_empty() {
+        write("bench.csv", report::csv(&result))?;
+        plot::time_against_error(&result, &out.join("time-vs-error.svg"))?;
+        plot::points_against_error(&result, &out.join("tessellation-points.svg"))?;
+    }
+    if !result.scaling.is_empty() {
+        write("scaling.csv", scaling::csv(&result.scaling))?;
+        for series in scaling::Series::ALL {
+            let points = scaling::series_points(&result.scaling, series);
+            if !points.is_empty() {
+                let file = format!("scaling-{}.svg", series.name());
+                plot::scaling(&points, &result.adapter, &out.join(file))?;
+            }
+        }
+    }
     Ok(result)
 }

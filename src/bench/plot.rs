@@ -1,6 +1,7 @@
 //! The bench's plots, as SVG (text is left to the viewer's fonts, so no font is
 //! embedded): GPU time against mean error per scene and view, with each method's
-//! Pareto front; and the tessellation's outline points against its error.
+//! Pareto front; the tessellation's outline points against its error; and each scaling
+//! series' time and memory against its work.
 
 use std::path::Path;
 
@@ -8,6 +9,7 @@ use plotters::coord::ranged1d::ValueFormatter;
 use plotters::prelude::*;
 
 use super::run::{BenchResult, Case, View};
+use super::scaling::ScalingPoint;
 use crate::Error;
 use crate::methods::registry;
 use crate::metrics::pareto_front;
@@ -40,10 +42,24 @@ where
     X: Ranged<ValueType = f64> + ValueFormatter<f64>,
     Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
 {
+    draw_described_axes(chart, x_desc, "mean error, 1/255")
+}
+
+/// Axes with both descriptions, and only the major grid.
+fn draw_described_axes<'a, DB, X, Y>(
+    chart: &mut ChartContext<'a, DB, Cartesian2d<X, Y>>,
+    x_desc: &str,
+    y_desc: &str,
+) -> Result<(), Error>
+where
+    DB: DrawingBackend + 'a,
+    X: Ranged<ValueType = f64> + ValueFormatter<f64>,
+    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
     chart
         .configure_mesh()
         .x_desc(x_desc)
-        .y_desc("mean error, 1/255")
+        .y_desc(y_desc)
         .x_labels(LABELS)
         .y_labels(LABELS)
         .light_line_style(WHITE)
@@ -56,9 +72,16 @@ where
 fn draw_legend<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
     chart: &mut ChartContext<'a, DB, CT>,
 ) -> Result<(), Error> {
+    draw_legend_at(chart, SeriesLabelPosition::LowerLeft)
+}
+
+fn draw_legend_at<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
+    chart: &mut ChartContext<'a, DB, CT>,
+    position: SeriesLabelPosition,
+) -> Result<(), Error> {
     chart
         .configure_series_labels()
-        .position(SeriesLabelPosition::LowerLeft)
+        .position(position)
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .draw()
@@ -200,5 +223,77 @@ pub fn points_against_error(result: &BenchResult, path: &Path) -> Result<(), Err
             .legend(move |(x, y)| Cross::new((x + 8, y), 5, c.stroke_width(2)));
     }
     draw_legend(&mut chart)?;
+    root.present().map_err(plot_error)
+}
+
+/// A method's figure at a scaling point (method named), if it was measured.
+type PointFigure = dyn Fn(&ScalingPoint, &str) -> Option<f64>;
+
+/// One scaling series: time per frame (left) and GPU memory (right) against its work,
+/// log–log, a line per method; the legends sit at the upper left, where little work
+/// costs little.
+pub fn scaling(points: &[&ScalingPoint], adapter: &str, path: &Path) -> Result<(), Error> {
+    let Some(first) = points.first() else {
+        return Ok(());
+    };
+    let series = first.series;
+    let methods: Vec<&str> = first.costs.iter().map(|c| c.method.as_str()).collect();
+    let root = SVGBackend::new(path, (1200, 480)).into_drawing_area();
+    root.fill(&WHITE).map_err(plot_error)?;
+    let panels = root.split_evenly((1, 2));
+    let x_desc: String = match series {
+        super::scaling::Series::GlyphCount => format!(
+            "glyphs drawn (the page's text, {} px/em)",
+            super::scenes::PAGE_PX_PER_EM
+        ),
+        super::scaling::Series::PxPerEm => format!("px/em (\"{}\")", super::scaling::WORD),
+    };
+    let time = |p: &ScalingPoint, m: &str| p.cost(m).and_then(|c| c.frame_ms);
+    let memory = |p: &ScalingPoint, m: &str| p.cost(m).map(|c| c.gpu_bytes as f64 / 1024.0);
+    let panels_of: [(&str, String, &PointFigure); 2] = [
+        (
+            "time per frame",
+            format!("GPU + CPU ms per frame ({adapter})"),
+            &time,
+        ),
+        ("GPU memory", "GPU memory held, kB".into(), &memory),
+    ];
+    for (area, (caption, y_desc, figure)) in panels.iter().zip(panels_of) {
+        let line = |m: &str| -> Vec<(f64, f64)> {
+            points
+                .iter()
+                .filter_map(|p| Some((p.work, figure(p, m)?)))
+                .filter(|&(_, v)| v.is_finite() && v > 0.0)
+                .collect()
+        };
+        let all: Vec<(f64, f64)> = methods.iter().flat_map(|m| line(m)).collect();
+        let mut chart = ChartBuilder::on(area)
+            .caption(
+                format!("{caption} against {}", series.work_label()),
+                ("sans-serif", 18),
+            )
+            .margin(12)
+            .x_label_area_size(36)
+            .y_label_area_size(60)
+            .build_cartesian_2d(
+                log_range(all.iter().map(|p| p.0)).log_scale(),
+                log_range(all.iter().map(|p| p.1)).log_scale(),
+            )
+            .map_err(plot_error)?;
+        draw_described_axes(&mut chart, &x_desc, &y_desc)?;
+        for &method in &methods {
+            let c = colour(method);
+            let points = line(method);
+            chart
+                .draw_series(LineSeries::new(points.iter().copied(), c.stroke_width(2)))
+                .map_err(plot_error)?;
+            chart
+                .draw_series(points.iter().map(|&p| Circle::new(p, 3, c.filled())))
+                .map_err(plot_error)?
+                .label(method)
+                .legend(move |(x, y)| Circle::new((x + 8, y), 4, c.filled()));
+        }
+        draw_legend_at(&mut chart, SeriesLabelPosition::UpperLeft)?;
+    }
     root.present().map_err(plot_error)
 }

@@ -46,6 +46,22 @@ pub fn markdown(result: &BenchResult) -> String {
     let mut md = String::new();
     let clock = result.gpu_clock.as_deref().unwrap_or("not measured");
     let _ = writeln!(md, "# glyphscope bench\n");
+    if result.cases.is_empty() {
+        let _ = writeln!(
+            md,
+            "Device: **{}**. GPU time per frame by {clock}.\n",
+            result.adapter
+        );
+    } else {
+        scene_sections(result, clock, &mut md);
+    }
+    super::scaling::markdown(&result.scaling, result.scaling_timing, &mut md);
+    md
+}
+
+/// The standard scenes' part of the report: how they were timed, the summary, and a
+/// table per scene and view.
+fn scene_sections(result: &BenchResult, clock: &str, md: &mut String) {
     let _ = writeln!(
         md,
         "Device: **{}**. GPU time per frame by {clock}: {} round{} interleaving the cases \
@@ -74,7 +90,7 @@ pub fn markdown(result: &BenchResult) -> String {
          *> 0.5*: pixels off by more than half. *Fastest at each error level* ranks by GPU \
          + CPU time per frame, among the cases with no pixel off by more than 0.5.\n"
     );
-    summary(result, &mut md);
+    summary(result, md);
     for info in &result.scenes {
         let cases = cases_of(result, info);
         if cases.is_empty() {
@@ -159,7 +175,6 @@ pub fn markdown(result: &BenchResult) -> String {
         }
         md.push('\n');
     }
-    md
 }
 
 /// One line per scene and view: the baseline's error, the most accurate method, and
@@ -277,7 +292,7 @@ pub fn json(result: &BenchResult) -> String {
 }
 
 /// Three significant digits (at least one decimal below 100).
-fn sig(v: f64) -> String {
+pub(super) fn sig(v: f64) -> String {
     if v >= 100.0 {
         format!("{v:.0}")
     } else if v >= 10.0 {
@@ -289,7 +304,7 @@ fn sig(v: f64) -> String {
     }
 }
 
-fn bytes(b: u64) -> String {
+pub(super) fn bytes(b: u64) -> String {
     match b {
         0 => "—".into(),
         b if b >= 1 << 20 => format!("{:.1} MB", b as f64 / f64::from(1 << 20)),

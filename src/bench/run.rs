@@ -4,6 +4,7 @@
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
 
+use super::scaling::{self, ScalingPoint, Series};
 use super::scenes::{self, BenchScene};
 use super::sweep;
 use crate::Error;
@@ -54,8 +55,10 @@ pub struct BenchOptions {
     /// for all.
     pub methods: Vec<String>,
     /// Timed frames per case, over all rounds, overriding the default (21, or 3 with
-    /// `quick`).
+    /// `quick`; for the scaling series, 5, or 2 with `quick`).
     pub frames: Option<usize>,
+    /// Points per scaling series, overriding the default (11, or 3 with `quick`).
+    pub scaling_points: Option<usize>,
 }
 
 /// Which view of a scene a case was measured in.
@@ -203,6 +206,10 @@ pub struct BenchResult {
     pub timing: Rounds,
     pub scenes: Vec<SceneInfo>,
     pub cases: Vec<Case>,
+    /// How each method is timed at each point of the scaling series.
+    pub scaling_timing: FrameTiming,
+    /// The scaling series' points, series after series.
+    pub scaling: Vec<ScalingPoint>,
 }
 
 /// `names` in order, each once: a name given twice is measured once.
@@ -216,20 +223,55 @@ fn distinct<T: PartialEq>(names: &[T]) -> Vec<&T> {
     once
 }
 
+/// What the options choose: the standard scenes, the scaling series and the methods.
+struct Plan {
+    scenes: Vec<BenchScene>,
+    series: Vec<Series>,
+    methods: Vec<&'static MethodInfo>,
+    scaling_points: usize,
+}
+
+impl Plan {
+    /// The methods the scaling series measure: the GPU ones (the reference has no GPU
+    /// cost to grow).
+    fn scaling_methods(&self) -> Vec<&'static MethodInfo> {
+        self.methods
+            .iter()
+            .copied()
+            .filter(|m| !m.is_reference())
+            .collect()
+    }
+}
+
 /// Checks the options, naming what is unknown.
-fn check(options: &BenchOptions) -> Result<(Vec<BenchScene>, Vec<&'static MethodInfo>), Error> {
+fn check(options: &BenchOptions) -> Result<Plan, Error> {
+    let all_names = || {
+        scenes::SCENE_NAMES
+            .iter()
+            .copied()
+            .chain(Series::ALL.map(Series::name))
+    };
     let names: Vec<&str> = if options.scenes.is_empty() {
-        scenes::SCENE_NAMES.to_vec()
+        all_names().collect()
     } else {
         distinct(&options.scenes)
             .into_iter()
             .map(String::as_str)
             .collect()
     };
-    let chosen = names
-        .into_iter()
-        .map(scenes::scene)
-        .collect::<Result<Vec<_>, _>>()?;
+    let (mut chosen, mut series) = (Vec::new(), Vec::new());
+    for name in names {
+        if let Some(one) = Series::named(name) {
+            series.push(one);
+        } else if scenes::SCENE_NAMES.contains(&name) {
+            chosen.push(scenes::scene(name)?);
+        } else {
+            return Err(Error::Input(format!(
+                "unknown scene '{name}'; choose from: {}",
+                all_names().collect::<Vec<_>>().join(", ")
+            )));
+        }
+    }
     let measurable = || std::iter::once(&registry::REFERENCE).chain(registry::benched());
     let methods = if options.methods.is_empty() {
         measurable().collect()
@@ -250,7 +292,34 @@ fn check(options: &BenchOptions) -> Result<(Vec<BenchScene>, Vec<&'static Method
     if options.frames == Some(0) {
         return Err(Error::Input("--frames must be at least 1".into()));
     }
-    Ok((chosen, methods))
+    let scaling_points = match options.scaling_points {
+        None if options.quick => scaling::QUICK_POINTS,
+        None => scaling::FULL_POINTS,
+        Some(n) if (2..=scaling::MAX_POINTS).contains(&n) => n,
+        Some(n) => {
+            return Err(Error::Input(format!(
+                "--scaling-points must be from 2 to {}, got {n}",
+                scaling::MAX_POINTS
+            )));
+        }
+    };
+    let mut plan = Plan {
+        scenes: chosen,
+        series,
+        methods,
+        scaling_points,
+    };
+    if plan.scaling_methods().is_empty() && !plan.series.is_empty() {
+        // Asked for by name, a series with nothing to measure is a mistake; by default,
+        // the reference alone simply has no scaling to show.
+        if !options.scenes.is_empty() {
+            return Err(Error::Input(
+                "the scaling series measure GPU methods, and --methods names none".into(),
+            ));
+        }
+        plan.series.clear();
+    }
+    Ok(plan)
 }
 
 /// The settings measured in `view`: every setting in the scene's own view; after
@@ -289,12 +358,23 @@ const QUICK_MOVED_CONTRAST: &str = winding::NAME;
 
 /// Runs the bench, showing progress on stderr when it is a terminal.
 pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
-    let (chosen, methods) = check(options)?;
+    let plan = check(options)?;
+    let (chosen, methods) = (&plan.scenes, &plan.methods);
     let base = if options.quick {
         QUICK_ROUNDS
     } else {
         FULL_ROUNDS
     };
+    let scaling_base = if options.quick {
+        scaling::QUICK_TIMING
+    } else {
+        scaling::FULL_TIMING
+    };
+    let scaling_timing = FrameTiming {
+        frames: options.frames.unwrap_or(scaling_base.frames),
+        ..scaling_base
+    };
+    let scaling_methods = plan.scaling_methods();
     let timing = match options.frames {
         Some(frames) => Rounds {
             per_round: FrameTiming {
@@ -312,7 +392,8 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
             .map(|m| settings_for(m, view, options.quick, 0.0).len())
             .sum()
     };
-    let total = chosen.len() * (per_view(View::Own) + per_view(View::Moved)) * timing.rounds;
+    let total = chosen.len() * (per_view(View::Own) + per_view(View::Moved)) * timing.rounds
+        + plan.series.len() * plan.scaling_points * scaling_methods.len();
     // Hidden by indicatif itself when stderr is not a terminal.
     let progress = ProgressBar::new(total as u64).with_style(
         ProgressStyle::with_template("{elapsed_precise} {wide_bar} {pos}/{len} {msg}")
@@ -325,8 +406,10 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
         timing,
         scenes: Vec::new(),
         cases: Vec::new(),
+        scaling_timing,
+        scaling: Vec::new(),
     };
-    for bench_scene in &chosen {
+    for bench_scene in chosen {
         let (_, own_camera) = bench_scene.args.build()?;
         let cache = atlas::auto_cache_size(own_camera.size_px_per_em);
         for view in [View::Own, View::Moved] {
@@ -395,6 +478,24 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
                 result.cases.push(case);
             }
         }
+    }
+    for &series in &plan.series {
+        let works = series.points(plan.scaling_points, options.quick);
+        let points = scaling::measure_series(
+            &gpu,
+            series,
+            &scaling_methods,
+            &works,
+            scaling_timing,
+            &progress,
+        )?;
+        if result.gpu_clock.is_none() {
+            result.gpu_clock = points
+                .iter()
+                .flat_map(|p| &p.costs)
+                .find_map(|c| c.gpu_clock.clone());
+        }
+        result.scaling.extend(points);
     }
     progress.finish_and_clear();
     Ok(result)

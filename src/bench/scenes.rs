@@ -13,6 +13,8 @@ use crate::view::ViewArgs;
 
 /// The standard page: 2 929 glyphs of DejaVu Sans.
 pub const PAGE_TEXT: &str = include_str!("../../tests/data/page.txt");
+/// The page's size, px/em.
+pub const PAGE_PX_PER_EM: f64 = 16.0;
 
 /// The view after caching: the camera zooms in this much about the image centre…
 pub const MOVED_ZOOM: f64 = 2.5;
@@ -60,7 +62,7 @@ pub fn scene(name: &str) -> Result<BenchScene, Error> {
                 width: Some(1920),
                 height: Some(1080),
                 origin: Some(DVec2::new(24.0, 40.0)),
-                ..page(16.0)
+                ..page(PAGE_PX_PER_EM)
             },
         ),
         "tiny" => ("the same page at 7 px/em, framed to its ink", page(7.0)),

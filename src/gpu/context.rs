@@ -125,10 +125,16 @@ impl GpuContext {
 
     /// Blocks until the GPU has finished everything submitted so far.
     pub(crate) fn wait_idle(&self) -> Result<(), Error> {
-        self.device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .map(drop)
-            .map_err(|e| Error::Gpu(format!("waiting for the GPU failed: {e}")))
+        loop {
+            match self.device.poll(wgpu::PollType::wait_indefinitely()) {
+                Ok(_) => return Ok(()),
+                // GL waits at most 2.1 s a call (glClientWaitSync takes an i32 of
+                // nanoseconds), whatever was asked; a large frame on a software GL
+                // driver (the bench's scaling series) takes longer: wait again.
+                Err(wgpu::PollError::Timeout) => continue,
+                Err(e) => return Err(Error::Gpu(format!("waiting for the GPU failed: {e}"))),
+            }
+        }
     }
 
     /// Maps a `MAP_READ` buffer whose copies have been submitted, and returns its bytes.

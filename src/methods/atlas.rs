@@ -148,7 +148,10 @@ struct Prepared {
 struct Cache {
     px_per_em: f64,
     bind_group: wgpu::BindGroup,
+    /// Everything the atlas holds: instances, entries and the texture.
     bytes: u64,
+    /// The texture alone, one byte a texel.
+    texture_bytes: u64,
 }
 
 /// `Entry` in `atlas.wgsl`.
@@ -285,12 +288,12 @@ impl Atlas {
                     wgpu::BindingResource::Sampler(&pipeline.sampler),
                 ],
             );
+            let texture_bytes = u64::from(packed.width) * u64::from(packed.height);
             Ok(Cache {
                 px_per_em,
                 bind_group,
-                bytes: prepared.instances.bytes()
-                    + entry_buffer.size()
-                    + u64::from(packed.width) * u64::from(packed.height),
+                bytes: prepared.instances.bytes() + entry_buffer.size() + texture_bytes,
+                texture_bytes,
             })
         })?;
         prepared.cache = Some(cache);
@@ -504,5 +507,12 @@ impl Method for Atlas {
             .as_ref()
             .and_then(|p| p.cache.as_ref())
             .map_or(0, |c| c.bytes)
+    }
+
+    fn cache_bytes(&self) -> Option<u64> {
+        self.prepared
+            .as_ref()
+            .and_then(|p| p.cache.as_ref())
+            .map(|c| c.texture_bytes)
     }
 }

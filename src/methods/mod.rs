@@ -37,6 +37,13 @@ pub trait Method: Send {
     /// stencil) kept from the last frame, bytes.
     fn gpu_bytes(&self) -> u64;
 
+    /// The part of [`Method::gpu_bytes`] that caches rasterized glyphs, for methods that
+    /// keep such a cache (the atlas's texture): the memory that grows with the size
+    /// glyphs are cached at rather than with the outlines.
+    fn cache_bytes(&self) -> Option<u64> {
+        None
+    }
+
     /// The overlays this method can draw (chosen with the `overlay` parameter).
     fn overlays(&self) -> &'static [Overlay] {
         &[]
