@@ -333,23 +333,14 @@ fn draw_char(out: &mut RgbImage, left: u32, top: u32, scale: u32, c: char, ink: 
 /// The outline over the blocks: curves 1.5 px wide, handles 1 px, on-curve points as
 /// discs and control points as rings, all anti-aliased by distance.
 fn draw_outline(out: &mut RgbImage, window: &Window, outline: &OutlineDrawing) {
-    for [a, b] in &outline.handles {
-        stroke(
-            out,
-            window.picture_point(*a),
-            window.picture_point(*b),
-            1.0,
-            HANDLE,
-        );
-    }
-    for [a, b] in &outline.lines {
-        stroke(
-            out,
-            window.picture_point(*a),
-            window.picture_point(*b),
-            1.5,
-            OUTLINE,
-        );
+    for (pieces, width, colour) in [
+        (&outline.handles, 1.0, HANDLE),
+        (&outline.lines, 1.5, OUTLINE),
+    ] {
+        for [a, b] in pieces {
+            let (a, b) = (window.picture_point(*a), window.picture_point(*b));
+            stroke(out, a, b, width, colour);
+        }
     }
     for p in &outline.on_curve {
         let p = window.picture_point(*p);

@@ -523,19 +523,7 @@ mod tests {
 
     #[test]
     fn overlaps_are_told_from_holes() {
-        let square = |x: f64, y: f64, clockwise: bool| {
-            let mut p = [(0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0)]
-                .map(|(a, b)| DVec2::new(a + x, b + y))
-                .to_vec();
-            if clockwise {
-                p.reverse();
-            }
-            Contour {
-                segments: (0..4)
-                    .map(|k| Segment::Line(p[k], p[(k + 1) % 4]))
-                    .collect(),
-            }
-        };
+        let square = |x: f64, y: f64, clockwise: bool| square_at(x, y, 10.0, clockwise);
         let outline = |contours| Outline { contours };
         let ring = {
             // A hole: a smaller square inside, the other way round.
