@@ -8,8 +8,8 @@ pub const WORST_CAMERAS: &[WorstCamera] = &[
     WorstCamera {
         case: "vertex-on-centre-row",
         variant: "winding",
-        rotation_deg: 0.0,
-        subpixel: (0.75, 0.75),
+        rotation_deg: 1.0,
+        subpixel: (0.0, 0.25),
     },
     WorstCamera {
         case: "vertex-on-centre-row",
@@ -44,8 +44,8 @@ pub const WORST_CAMERAS: &[WorstCamera] = &[
     WorstCamera {
         case: "horizontal-on-sample-row",
         variant: "winding",
-        rotation_deg: 89.9,
-        subpixel: (0.0, 0.25),
+        rotation_deg: 1.0,
+        subpixel: (0.0, 0.75),
     },
     WorstCamera {
         case: "horizontal-on-sample-row",
@@ -80,8 +80,8 @@ pub const WORST_CAMERAS: &[WorstCamera] = &[
     WorstCamera {
         case: "horizontal-tangent-join",
         variant: "winding",
-        rotation_deg: 1.0,
-        subpixel: (0.5, 0.5),
+        rotation_deg: 45.0,
+        subpixel: (0.0, 0.0),
     },
     WorstCamera {
         case: "horizontal-tangent-join",
@@ -117,13 +117,13 @@ pub const WORST_CAMERAS: &[WorstCamera] = &[
         case: "collinear-quadratic",
         variant: "winding",
         rotation_deg: 1.0,
-        subpixel: (0.5, 0.75),
+        subpixel: (0.0, 0.0),
     },
     WorstCamera {
         case: "collinear-quadratic",
         variant: "winding aa=rays",
-        rotation_deg: 89.9,
-        subpixel: (0.0, 0.5),
+        rotation_deg: 0.0,
+        subpixel: (0.5, 0.0),
     },
     WorstCamera {
         case: "collinear-quadratic",
@@ -296,8 +296,8 @@ pub const WORST_CAMERAS: &[WorstCamera] = &[
     WorstCamera {
         case: "tiny-curves",
         variant: "winding",
-        rotation_deg: 0.0,
-        subpixel: (0.25, 0.0),
+        rotation_deg: 1.0,
+        subpixel: (0.75, 0.0),
     },
     WorstCamera {
         case: "tiny-curves",
@@ -332,13 +332,13 @@ pub const WORST_CAMERAS: &[WorstCamera] = &[
     WorstCamera {
         case: "touching-contours",
         variant: "winding",
-        rotation_deg: 89.9,
+        rotation_deg: 45.0,
         subpixel: (0.25, 0.0),
     },
     WorstCamera {
         case: "touching-contours",
         variant: "winding aa=rays",
-        rotation_deg: 0.0,
+        rotation_deg: 89.9,
         subpixel: (0.5, 0.5),
     },
     WorstCamera {
@@ -368,8 +368,8 @@ pub const WORST_CAMERAS: &[WorstCamera] = &[
     WorstCamera {
         case: "shared-edge",
         variant: "winding",
-        rotation_deg: 89.9,
-        subpixel: (0.0, 0.5),
+        rotation_deg: 0.0,
+        subpixel: (0.0, 0.0),
     },
     WorstCamera {
         case: "shared-edge",
@@ -728,8 +728,8 @@ pub const WORST_CAMERAS: &[WorstCamera] = &[
     WorstCamera {
         case: "near-tangent-vertex-y",
         variant: "winding",
-        rotation_deg: 89.9,
-        subpixel: (0.75, 0.0),
+        rotation_deg: 1.0,
+        subpixel: (0.0, 0.25),
     },
     WorstCamera {
         case: "near-tangent-vertex-y",
@@ -764,8 +764,8 @@ pub const WORST_CAMERAS: &[WorstCamera] = &[
     WorstCamera {
         case: "near-tangent-vertex-x",
         variant: "winding",
-        rotation_deg: 89.9,
-        subpixel: (0.0, 0.75),
+        rotation_deg: 45.0,
+        subpixel: (0.25, 0.5),
     },
     WorstCamera {
         case: "near-tangent-vertex-x",
@@ -837,25 +837,25 @@ pub const WORST_CAMERAS: &[WorstCamera] = &[
         case: "glyph-100000px-edge",
         variant: "winding",
         rotation_deg: 45.0,
-        subpixel: (0.25, 0.5),
+        subpixel: (0.5, 0.5),
     },
     WorstCamera {
         case: "glyph-100000px-edge",
         variant: "winding aa=rays",
         rotation_deg: 45.0,
-        subpixel: (0.5, 0.25),
+        subpixel: (0.5, 0.5),
     },
     WorstCamera {
         case: "glyph-100000px-edge",
         variant: "sdf-cells",
         rotation_deg: 45.0,
-        subpixel: (0.25, 0.0),
+        subpixel: (0.5, 0.5),
     },
     WorstCamera {
         case: "glyph-100000px-edge",
         variant: "sdf-cells exact",
         rotation_deg: 45.0,
-        subpixel: (0.25, 0.25),
+        subpixel: (0.5, 0.5),
     },
     WorstCamera {
         case: "glyph-100000px-edge",
@@ -873,25 +873,25 @@ pub const WORST_CAMERAS: &[WorstCamera] = &[
         case: "glyph-max-size-edge",
         variant: "winding",
         rotation_deg: 45.0,
-        subpixel: (0.25, 0.25),
+        subpixel: (0.75, 0.0),
     },
     WorstCamera {
         case: "glyph-max-size-edge",
         variant: "winding aa=rays",
         rotation_deg: 45.0,
-        subpixel: (0.0, 0.0),
+        subpixel: (0.75, 0.0),
     },
     WorstCamera {
         case: "glyph-max-size-edge",
         variant: "sdf-cells",
         rotation_deg: 45.0,
-        subpixel: (0.25, 0.25),
+        subpixel: (0.75, 0.0),
     },
     WorstCamera {
         case: "glyph-max-size-edge",
         variant: "sdf-cells exact",
         rotation_deg: 45.0,
-        subpixel: (0.5, 0.5),
+        subpixel: (0.75, 0.0),
     },
     WorstCamera {
         case: "glyph-max-size-edge",
@@ -980,14 +980,14 @@ pub const WORST_CAMERAS: &[WorstCamera] = &[
     WorstCamera {
         case: "strong-skew",
         variant: "winding",
-        rotation_deg: 89.9,
-        subpixel: (0.75, 0.25),
+        rotation_deg: 1.0,
+        subpixel: (0.5, 0.75),
     },
     WorstCamera {
         case: "strong-skew",
         variant: "winding aa=rays",
         rotation_deg: 89.9,
-        subpixel: (0.25, 0.5),
+        subpixel: (0.75, 0.5),
     },
     WorstCamera {
         case: "strong-skew",
@@ -1120,5 +1120,77 @@ pub const WORST_CAMERAS: &[WorstCamera] = &[
         variant: "tessellation",
         rotation_deg: 60.0,
         subpixel: (0.0, 0.75),
+    },
+    WorstCamera {
+        case: "slanted-ulp-segments",
+        variant: "winding",
+        rotation_deg: 89.9,
+        subpixel: (0.75, 0.75),
+    },
+    WorstCamera {
+        case: "slanted-ulp-segments",
+        variant: "winding aa=rays",
+        rotation_deg: 1.0,
+        subpixel: (0.5, 0.75),
+    },
+    WorstCamera {
+        case: "slanted-ulp-segments",
+        variant: "sdf-cells",
+        rotation_deg: 89.9,
+        subpixel: (0.0, 0.75),
+    },
+    WorstCamera {
+        case: "slanted-ulp-segments",
+        variant: "sdf-cells exact",
+        rotation_deg: 1.0,
+        subpixel: (0.5, 0.75),
+    },
+    WorstCamera {
+        case: "slanted-ulp-segments",
+        variant: "xor-stencil",
+        rotation_deg: 45.0,
+        subpixel: (0.5, 0.5),
+    },
+    WorstCamera {
+        case: "slanted-ulp-segments",
+        variant: "tessellation",
+        rotation_deg: 89.9,
+        subpixel: (0.25, 0.5),
+    },
+    WorstCamera {
+        case: "opposite-wound-contours",
+        variant: "winding",
+        rotation_deg: 1.0,
+        subpixel: (0.0, 0.5),
+    },
+    WorstCamera {
+        case: "opposite-wound-contours",
+        variant: "winding aa=rays",
+        rotation_deg: 0.0,
+        subpixel: (0.5, 0.5),
+    },
+    WorstCamera {
+        case: "opposite-wound-contours",
+        variant: "sdf-cells",
+        rotation_deg: 0.0,
+        subpixel: (0.5, 0.5),
+    },
+    WorstCamera {
+        case: "opposite-wound-contours",
+        variant: "sdf-cells exact",
+        rotation_deg: 0.0,
+        subpixel: (0.5, 0.5),
+    },
+    WorstCamera {
+        case: "opposite-wound-contours",
+        variant: "xor-stencil",
+        rotation_deg: 45.0,
+        subpixel: (0.25, 0.75),
+    },
+    WorstCamera {
+        case: "opposite-wound-contours",
+        variant: "tessellation",
+        rotation_deg: 45.0,
+        subpixel: (0.25, 0.5),
     },
 ];
