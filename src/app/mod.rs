@@ -10,11 +10,13 @@
 //! - `view`: the panes laid out, steered by the pointer, and settling when at rest.
 //! - `gpu_view`: egui_wgpu paint callbacks drawing each pane's offscreen target.
 //! - `analysis`: the reference and the error figures, on a background thread.
+//! - `artifacts`: a pane's pixels off from the reference, worst first, to step through.
 //! - `sweep`: speed against error over every parameter combination, plotted.
 //! - `controls`: the side panel, the status bar and the windows.
 //! - `outline`, `font_dialog`, `headless` (offscreen frames for `glyphscope screenshots`).
 
 mod analysis;
+mod artifacts;
 mod camera_control;
 mod controls;
 mod font_dialog;
@@ -91,6 +93,8 @@ pub struct Explorer {
     sweep: Sweep,
     font_dialog: FontDialog,
     help_open: bool,
+    /// The pixels the magnifier was last centred on by "worst pixel", to step on from.
+    artifacts: Option<artifacts::Artifacts>,
     /// Each pane's heat-scale legend's own uniform and bind group.
     legends: Vec<gpu_view::SharedSurface>,
     /// Messages from screenshots and file drops; shared with the screenshot callback.
@@ -136,6 +140,7 @@ impl Explorer {
             sweep: Sweep::default(),
             font_dialog: FontDialog::default(),
             help_open: false,
+            artifacts: None,
             legends: (0..PANES).map(|_| gpu_view::PaneSurface::new()).collect(),
             status: Arc::new(Mutex::new(String::new())),
             frame_intervals: VecDeque::new(),

@@ -48,6 +48,10 @@ pub enum Action {
     Rotate(f64),
     /// Multiplies the magnifier's N by this (×2 or ÷2), about the pane's centre.
     Magnify(bool),
+    /// Centres the magnifier on the hovered pane's (else pane A's) worst pixel.
+    WorstPixel,
+    /// The next (true) or previous pixel over the threshold, by descending error.
+    StepArtifact(bool),
     ResetCamera,
     FitText,
     SetLayout(Layout),
@@ -112,6 +116,13 @@ pub const SHORTCUTS: &[Shortcut] = &[
     keyed("M / N", "magnify the pixels ×2 / ÷2", &[
         bind(&[key(Key::M)], Action::Magnify(true)),
         bind(&[key(Key::N)], Action::Magnify(false)),
+    ]),
+    keyed("W", "magnify on the worst pixel of the hovered pane (else A)", &[
+        bind(&[key(Key::W)], Action::WorstPixel),
+    ]),
+    keyed(". / ,", "next / previous pixel off by > 0.25, worst first", &[
+        bind(&[key(Key::Period)], Action::StepArtifact(true)),
+        bind(&[key(Key::Comma)], Action::StepArtifact(false)),
     ]),
     keyed("R", "reset the camera", &[bind(&[key(Key::R)], Action::ResetCamera)]),
     keyed("F", "fit the text to the pane", &[bind(&[key(Key::F)], Action::FitText)]),
@@ -200,6 +211,8 @@ impl Explorer {
                     camera.magnify_about(factor, drawn_centre, w, h);
                 }
             }
+            Action::WorstPixel => self.go_to_worst_pixel(),
+            Action::StepArtifact(forward) => self.step_artifact(forward),
             Action::ResetCamera => {
                 if let Some(scene) = self.scene.scene() {
                     camera.reset(scene);
@@ -270,7 +283,7 @@ mod tests {
     /// number past `KINDS` fails the test.
     #[test]
     fn every_action_is_bound_in_exactly_one_row() {
-        const KINDS: usize = 15;
+        const KINDS: usize = 17;
         let kind = |action: Action| match action {
             Action::Pan(_) => 0,
             Action::Zoom(_) => 1,
@@ -287,6 +300,8 @@ mod tests {
             Action::Screenshot => 12,
             Action::ToggleHelp => 13,
             Action::Magnify(_) => 14,
+            Action::WorstPixel => 15,
+            Action::StepArtifact(_) => 16,
         };
         let mut rows: [Vec<&str>; KINDS] = Default::default();
         for shortcut in SHORTCUTS {
