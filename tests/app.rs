@@ -579,10 +579,11 @@ fn the_magnifier_shows_the_panes_own_pixels_as_blocks() {
 
 /// The status bar's "worst pixel k of n: (x, y) error e", read as (k, n, (x, y), e).
 fn artifact_status(harness: &Harness<'static, Explorer>) -> (usize, usize, (u32, u32), f64) {
+    // A label's text is its node's value in AccessKit.
     let text = harness
         .get_by_label_contains("worst pixel ")
         .accesskit_node()
-        .label()
+        .value()
         .unwrap_or_default();
     let parse = || -> Option<(usize, usize, (u32, u32), f64)> {
         let rest = text.strip_prefix("worst pixel ")?;

@@ -28,6 +28,8 @@ pub struct Artifacts {
     camera: Camera,
     pixels: Vec<PixelError>,
     current: usize,
+    /// Worked out anew with the pixel shown before still among them, at `current`.
+    found_again: bool,
 }
 
 impl Explorer {
@@ -57,16 +59,25 @@ impl Explorer {
                 && a.scene_generation == generation
                 && a.camera == camera
         });
+        // Stepping goes on from the pixel shown, found again in a list worked out anew
+        // (the pane may have changed size as the status line wrapped).
+        let shown = step
+            .and(self.artifacts.as_ref())
+            .filter(|a| a.pane == pane)
+            .and_then(|a| a.pixels.get(a.current))
+            .map(|p| p.0);
         if !current {
             match self.find_artifacts(pane, &camera) {
                 Ok(pixels) => {
+                    let found = shown.and_then(|s| pixels.iter().position(|p| p.0 == s));
                     self.artifacts = Some(Artifacts {
                         pane,
                         source,
                         scene_generation: generation,
                         camera,
+                        current: found.unwrap_or(0),
+                        found_again: found.is_some(),
                         pixels,
-                        current: 0,
                     });
                 }
                 Err(message) => {
@@ -87,7 +98,8 @@ impl Explorer {
             ));
             return;
         }
-        artifacts.current = match (step, current) {
+        let continuing = current || artifacts.found_again;
+        artifacts.current = match (step, continuing) {
             (Some(true), true) => (artifacts.current + 1) % n,
             (Some(false), true) => (artifacts.current + n - 1) % n,
             _ => 0,
