@@ -632,7 +632,10 @@ fn worst_pixel_and_stepping_go_to_the_pixels_the_metrics_report() {
     let reference = glyphscope::reference::rasterize(&scene, &camera).unwrap();
     let stats = metrics::compare(&image, &reference).unwrap();
     let n = stats.pixels_over_025;
-    assert!(n >= 3, "the view needs artifacts to step through: {stats:?}");
+    assert!(
+        n >= 3,
+        "the view needs artifacts to step through: {stats:?}"
+    );
 
     harness.key_press(egui::Key::W);
     let start = Instant::now();
@@ -650,7 +653,8 @@ fn worst_pixel_and_stepping_go_to_the_pixels_the_metrics_report() {
     );
     // The pane's height is taken now: the status line may have wrapped.
     assert_eq!((window.x0, window.y0), (expected.x0, expected.y0));
-    let error_at = |(x, y): (u32, u32)| (f64::from(image.get(x, y)) - f64::from(reference.get(x, y))).abs();
+    let error_at =
+        |(x, y): (u32, u32)| (f64::from(image.get(x, y)) - f64::from(reference.get(x, y))).abs();
     let mut visited = Vec::new();
     let mut previous = f64::INFINITY;
     for k in 1..=n {
@@ -665,16 +669,26 @@ fn worst_pixel_and_stepping_go_to_the_pixels_the_metrics_report() {
             (shown_error - error).abs() <= 5e-4 + 1e-6,
             "{pixel:?}: the status says {shown_error}, the pixel is off by {error}"
         );
-        assert!(error > 0.25 && error <= previous, "{pixel:?} off by {error} after {previous}");
+        assert!(
+            error > 0.25 && error <= previous,
+            "{pixel:?} off by {error} after {previous}"
+        );
         assert!(!visited.contains(&pixel), "{pixel:?} visited twice");
-        assert_eq!(harness.state().magnified_window().map(|w| w.focus), Some(pixel));
+        assert_eq!(
+            harness.state().magnified_window().map(|w| w.focus),
+            Some(pixel)
+        );
         visited.push(pixel);
         previous = error;
     }
     assert_eq!(visited[0], stats.worst_pixel);
     harness.key_press(egui::Key::Period);
     harness.step();
-    assert_eq!(artifact_status(&harness).0, 1, "past the last comes the worst again");
+    assert_eq!(
+        artifact_status(&harness).0,
+        1,
+        "past the last comes the worst again"
+    );
     harness.key_press(egui::Key::Comma);
     harness.step();
     assert_eq!(artifact_status(&harness).2, visited[n - 1]);
@@ -703,7 +717,10 @@ fn blink_alternates_pane_a_with_the_other_rendering() {
         harness.key_press(egui::Key::B);
         let screen = settle(&mut harness);
         let worst = screen_vs_coverage(&harness, &screen, 0, expected);
-        assert!(worst <= 1.5, "press {press}: pane A should show {what}, off by {worst}");
+        assert!(
+            worst <= 1.5,
+            "press {press}: pane A should show {what}, off by {worst}"
+        );
     }
     harness.key_press(egui::Key::Num1);
     harness.step();
@@ -715,6 +732,9 @@ fn blink_alternates_pane_a_with_the_other_rendering() {
     let screen = settle(&mut harness);
     let reference = harness.state().reference_image().expect("settled");
     let worst = screen_vs_coverage(&harness, &screen, 0, &reference);
-    assert!(worst <= 1.5, "one pane: A should show the reference, off by {worst}");
+    assert!(
+        worst <= 1.5,
+        "one pane: A should show the reference, off by {worst}"
+    );
     assert!(screen_vs_coverage(&harness, &screen, 0, &own) > 50.0);
 }

@@ -128,8 +128,7 @@ impl Explorer {
             return Err("no scene".into());
         };
         match &self.settings.panes[pane].source {
-            PaneSource::Method { name, .. } if name != REFERENCE => {
-            }
+            PaneSource::Method { name, .. } if name != REFERENCE => {}
             _ => return Err("worst pixels are a GPU method's; this pane shows none".into()),
         }
         let image = {
