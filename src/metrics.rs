@@ -107,6 +107,44 @@ pub fn compare(image: &CoverageImage, reference: &CoverageImage) -> Result<Error
     Ok(stats)
 }
 
+/// A pixel's absolute error against the reference: ((x, y), error).
+pub type PixelError = ((u32, u32), f64);
+
+/// The pixels of `image` off from `reference` by more than `threshold`, largest error
+/// first (ties in reading order, so the first is [`ErrorStats::worst_pixel`]). An
+/// invalid pixel is infinitely far off, as in [`compare`].
+pub fn pixels_over(
+    image: &CoverageImage,
+    reference: &CoverageImage,
+    threshold: f64,
+) -> Result<Vec<PixelError>, Error> {
+    if (image.width, image.height) != (reference.width, reference.height) {
+        return Err(Error::Input(format!(
+            "cannot compare a {}x{} image with a {}x{} reference",
+            image.width, image.height, reference.width, reference.height
+        )));
+    }
+    let width = image.width as usize;
+    let mut over: Vec<PixelError> = image
+        .data
+        .iter()
+        .zip(&reference.data)
+        .enumerate()
+        .filter_map(|(i, (&a, &b))| {
+            let error = if is_valid(a) && is_valid(b) {
+                (f64::from(a) - f64::from(b)).abs()
+            } else {
+                f64::INFINITY
+            };
+            let pixel = ((i % width) as u32, (i / width) as u32);
+            (error > threshold).then_some((pixel, error))
+        })
+        .collect();
+    // Stable: equal errors keep their reading order.
+    over.sort_by(|a, b| b.1.total_cmp(&a.1));
+    Ok(over)
+}
+
 /// The middle value, the upper one of an even count (None for none): the one median
 /// every timing in the project quotes.
 pub fn median(values: impl IntoIterator<Item = f64>) -> Option<f64> {
@@ -192,6 +230,31 @@ mod tests {
         assert_eq!((s.pixels_over_025, s.pixels_over_05), (2, 1));
         // Errors 0, 0, 0.5, 0.6: the 99th percentile of four is the largest.
         assert!((s.p99_255 - 0.6 * 255.0).abs() < 1e-3);
+    }
+
+    #[test]
+    fn pixels_over_are_listed_worst_first_with_ties_in_reading_order() {
+        // A 3×2 image: errors 0.3, 0.1, 0.6 / 0.3, NaN, 0.25 (by hand).
+        let image = CoverageImage {
+            width: 3,
+            height: 2,
+            data: vec![0.3, 0.1, 1.0, 0.8, f32::NAN, 0.25],
+        };
+        let reference = CoverageImage {
+            width: 3,
+            height: 2,
+            data: vec![0.0, 0.0, 0.4, 0.5, 0.5, 0.0],
+        };
+        let over = pixels_over(&image, &reference, 0.25).unwrap();
+        let pixels: Vec<(u32, u32)> = over.iter().map(|p| p.0).collect();
+        // 0.25 is not over 0.25; the NaN is infinitely off.
+        assert_eq!(pixels, [(1, 1), (2, 0), (0, 0), (0, 1)]);
+        assert!(over[0].1.is_infinite());
+        assert!((over[1].1 - 0.6).abs() < 1e-6 && (over[3].1 - 0.3).abs() < 1e-6);
+        let stats = compare(&image, &reference).unwrap();
+        assert_eq!(over.len(), stats.pixels_over_025);
+        assert_eq!(over[0].0, stats.worst_pixel);
+        assert!(pixels_over(&image, &img(&[0.0; 6]), 0.25).is_err());
     }
 
     #[test]

@@ -576,3 +576,165 @@ fn the_magnifier_shows_the_panes_own_pixels_as_blocks() {
     harness.step();
     assert_eq!(harness.state().magnified_window().unwrap().factor, 4);
 }
+
+/// The status bar's "worst pixel k of n: (x, y) error e", read as (k, n, (x, y), e).
+fn artifact_status(harness: &Harness<'static, Explorer>) -> (usize, usize, (u32, u32), f64) {
+    // A label's text is its node's value in AccessKit.
+    let text = harness
+        .get_by_label_contains("worst pixel ")
+        .accesskit_node()
+        .value()
+        .unwrap_or_default();
+    let parse = || -> Option<(usize, usize, (u32, u32), f64)> {
+        let rest = text.strip_prefix("worst pixel ")?;
+        let (k, rest) = rest.split_once(" of ")?;
+        let (n, rest) = rest.split_once(": (")?;
+        let (x, rest) = rest.split_once(", ")?;
+        let (y, e) = rest.split_once(") error ")?;
+        Some((
+            k.parse().ok()?,
+            n.parse().ok()?,
+            (x.parse().ok()?, y.parse().ok()?),
+            e.parse().ok()?,
+        ))
+    };
+    parse().unwrap_or_else(|| panic!("the status bar says {text:?}"))
+}
+
+/// W centres the magnifier (×16) on the pixel `metrics::compare` finds worst over the
+/// whole ×1 pane — worked out here apart from the app: the method measured afresh as
+/// `glyphscope render` does, the CPU reference — and `.` / `,` step through every pixel
+/// off by more than 0.25, in descending error, wrapping round.
+#[test]
+fn worst_pixel_and_stepping_go_to_the_pixels_the_metrics_report() {
+    let mut settings = Settings {
+        layout: Layout::Single,
+        ..Settings::default()
+    };
+    // Small text, where a method's few badly-off pixels are.
+    settings.panes[0] = PaneSettings::method("sdf-cells");
+    settings.camera.size_px_per_em = 12.0;
+    settings.camera.origin = [16.0, 40.0];
+    let mut harness = harness(settings);
+    settle(&mut harness);
+    let app = harness.state();
+    let camera = app.camera().expect("laid out");
+    assert_eq!(app.magnified_window().map(|w| w.factor), Some(1));
+    let scene = app.scene().expect("the scene builds").clone();
+    let info = registry::find("sdf-cells").unwrap();
+    let one_frame = glyphscope::measure::FrameTiming {
+        warmup: 0,
+        frames: 1,
+    };
+    let image = glyphscope::measure::measure(Some(gpu()), &scene, &camera, info, &[], one_frame)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .image;
+    let reference = glyphscope::reference::rasterize(&scene, &camera).unwrap();
+    let stats = metrics::compare(&image, &reference).unwrap();
+    let n = stats.pixels_over_025;
+    assert!(
+        n >= 3,
+        "the view needs artifacts to step through: {stats:?}"
+    );
+
+    harness.key_press(egui::Key::W);
+    let start = Instant::now();
+    settle(&mut harness);
+    let took = start.elapsed();
+    let window = harness.state().magnified_window().expect("laid out");
+    assert_eq!(window.factor, 16);
+    assert_eq!(window.focus, stats.worst_pixel);
+    let rect = harness.state().pane_rects()[0];
+    let expected = glyphscope::magnify::Window::around(
+        rect.width() as u32,
+        rect.height() as u32,
+        16,
+        stats.worst_pixel,
+    );
+    // The pane's height is taken now: the status line may have wrapped.
+    assert_eq!((window.x0, window.y0), (expected.x0, expected.y0));
+    let error_at =
+        |(x, y): (u32, u32)| (f64::from(image.get(x, y)) - f64::from(reference.get(x, y))).abs();
+    let mut visited = Vec::new();
+    let mut previous = f64::INFINITY;
+    for k in 1..=n {
+        if k > 1 {
+            harness.key_press(egui::Key::Period);
+            harness.step();
+        }
+        let (shown_k, shown_n, pixel, shown_error) = artifact_status(&harness);
+        assert_eq!((shown_k, shown_n), (k, n));
+        let error = error_at(pixel);
+        assert!(
+            (shown_error - error).abs() <= 5e-4 + 1e-6,
+            "{pixel:?}: the status says {shown_error}, the pixel is off by {error}"
+        );
+        assert!(
+            error > 0.25 && error <= previous,
+            "{pixel:?} off by {error} after {previous}"
+        );
+        assert!(!visited.contains(&pixel), "{pixel:?} visited twice");
+        assert_eq!(
+            harness.state().magnified_window().map(|w| w.focus),
+            Some(pixel)
+        );
+        visited.push(pixel);
+        previous = error;
+    }
+    assert_eq!(visited[0], stats.worst_pixel);
+    harness.key_press(egui::Key::Period);
+    harness.step();
+    assert_eq!(
+        artifact_status(&harness).0,
+        1,
+        "past the last comes the worst again"
+    );
+    harness.key_press(egui::Key::Comma);
+    harness.step();
+    assert_eq!(artifact_status(&harness).2, visited[n - 1]);
+    eprintln!("worst pixel: {n} pixels over 0.25, found and settled in {took:?}");
+}
+
+/// B flips pane A in place to pane B's method (drawn from pane B's own read-back), B
+/// again restores it; with one pane shown it flips to the reference. `bounds` draws
+/// boxes, far from the glyphs, so a pane that did not flip cannot pass.
+#[test]
+fn blink_alternates_pane_a_with_the_other_rendering() {
+    let mut settings = Settings {
+        layout: Layout::SideBySide,
+        ..Settings::default()
+    };
+    settings.panes[0] = PaneSettings::method("winding");
+    settings.panes[1] = PaneSettings::method("bounds");
+    let mut harness = harness(settings);
+    let screen = settle(&mut harness);
+    let own = harness.state().pane_capture(0).expect("read back at rest");
+    let other = harness.state().pane_capture(1).expect("read back at rest");
+    assert!(screen_vs_coverage(&harness, &screen, 0, &own) <= 1.5);
+    // The two differ on screen by far more than the tolerance.
+    assert!(screen_vs_coverage(&harness, &screen, 0, &other) > 50.0);
+    for (press, expected, what) in [(1, &other, "pane B's bounds"), (2, &own, "its own winding")] {
+        harness.key_press(egui::Key::B);
+        let screen = settle(&mut harness);
+        let worst = screen_vs_coverage(&harness, &screen, 0, expected);
+        assert!(
+            worst <= 1.5,
+            "press {press}: pane A should show {what}, off by {worst}"
+        );
+    }
+    harness.key_press(egui::Key::Num1);
+    harness.step();
+    harness.state_mut().settings.panes[0] = PaneSettings::method("bounds");
+    let screen = settle(&mut harness);
+    let own = harness.state().pane_capture(0).expect("read back at rest");
+    assert!(screen_vs_coverage(&harness, &screen, 0, &own) <= 1.5);
+    harness.key_press(egui::Key::B);
+    let screen = settle(&mut harness);
+    let reference = harness.state().reference_image().expect("settled");
+    let worst = screen_vs_coverage(&harness, &screen, 0, &reference);
+    assert!(
+        worst <= 1.5,
+        "one pane: A should show the reference, off by {worst}"
+    );
+    assert!(screen_vs_coverage(&harness, &screen, 0, &own) > 50.0);
+}

@@ -260,7 +260,9 @@ impl Explorer {
     }
 
     pub(super) fn status_bar(&mut self, ui: &mut egui::Ui) {
-        ui.horizontal_wrapped(|ui| {
+        // One line, clipped at the right: a message that wrapped would resize the panes,
+        // and with them the camera the numbers and the worst pixels were worked out for.
+        ui.horizontal(|ui| {
             ui.label(self.inspector_text());
             ui.separator();
             let mut intervals: Vec<f64> = self.frame_intervals.iter().copied().collect();

@@ -10,11 +10,15 @@
 //! - `view`: the panes laid out, steered by the pointer, and settling when at rest.
 //! - `gpu_view`: egui_wgpu paint callbacks drawing each pane's offscreen target.
 //! - `analysis`: the reference and the error figures, on a background thread.
+//! - `artifacts`: a pane's pixels off from the reference, worst first, to step through.
+//! - `blink`: pane A flipped in place to pane B's method or the reference.
 //! - `sweep`: speed against error over every parameter combination, plotted.
 //! - `controls`: the side panel, the status bar and the windows.
 //! - `outline`, `font_dialog`, `headless` (offscreen frames for `glyphscope screenshots`).
 
 mod analysis;
+mod artifacts;
+mod blink;
 mod camera_control;
 mod controls;
 mod font_dialog;
@@ -91,6 +95,9 @@ pub struct Explorer {
     sweep: Sweep,
     font_dialog: FontDialog,
     help_open: bool,
+    /// The pixels the magnifier was last centred on by "worst pixel", to step on from.
+    artifacts: Option<artifacts::Artifacts>,
+    blink: blink::Blink,
     /// Each pane's heat-scale legend's own uniform and bind group.
     legends: Vec<gpu_view::SharedSurface>,
     /// Messages from screenshots and file drops; shared with the screenshot callback.
@@ -136,6 +143,8 @@ impl Explorer {
             sweep: Sweep::default(),
             font_dialog: FontDialog::default(),
             help_open: false,
+            artifacts: None,
+            blink: blink::Blink::default(),
             legends: (0..PANES).map(|_| gpu_view::PaneSurface::new()).collect(),
             status: Arc::new(Mutex::new(String::new())),
             frame_intervals: VecDeque::new(),
@@ -272,6 +281,7 @@ impl Explorer {
         self.take_background_results();
         self.take_dropped_files(&ctx);
         self.shortcuts(&ctx);
+        self.tick_blink(&ctx);
         self.scene.sync(&self.settings.scene);
         egui::Panel::left("controls")
             .resizable(true)

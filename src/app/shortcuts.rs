@@ -48,6 +48,14 @@ pub enum Action {
     Rotate(f64),
     /// Multiplies the magnifier's N by this (×2 or ÷2), about the pane's centre.
     Magnify(bool),
+    /// Centres the magnifier on the hovered pane's (else pane A's) worst pixel.
+    WorstPixel,
+    /// The next (true) or previous pixel over the threshold, by descending error.
+    StepArtifact(bool),
+    /// Flips pane A to pane B's method (else the reference) or back.
+    Blink,
+    /// Pane A flips on its own a few times a second, or stops.
+    ToggleAutoBlink,
     ResetCamera,
     FitText,
     SetLayout(Layout),
@@ -112,6 +120,18 @@ pub const SHORTCUTS: &[Shortcut] = &[
     keyed("M / N", "magnify the pixels ×2 / ÷2", &[
         bind(&[key(Key::M)], Action::Magnify(true)),
         bind(&[key(Key::N)], Action::Magnify(false)),
+    ]),
+    keyed("W", "magnify on the worst pixel of the hovered pane (else A)", &[
+        bind(&[key(Key::W)], Action::WorstPixel),
+    ]),
+    keyed(". / ,", "next / previous pixel off by > 0.25, worst first", &[
+        bind(&[key(Key::Period)], Action::StepArtifact(true)),
+        bind(&[key(Key::Comma)], Action::StepArtifact(false)),
+    ]),
+    // Shift+B first: B alone would match it too (shift is not required to be up).
+    keyed("B / Shift+B", "blink pane A with pane B's method (else the reference) / on its own", &[
+        bind(&[KeyboardShortcut::new(Modifiers::SHIFT, Key::B)], Action::ToggleAutoBlink),
+        bind(&[key(Key::B)], Action::Blink),
     ]),
     keyed("R", "reset the camera", &[bind(&[key(Key::R)], Action::ResetCamera)]),
     keyed("F", "fit the text to the pane", &[bind(&[key(Key::F)], Action::FitText)]),
@@ -200,6 +220,10 @@ impl Explorer {
                     camera.magnify_about(factor, drawn_centre, w, h);
                 }
             }
+            Action::WorstPixel => self.go_to_worst_pixel(),
+            Action::StepArtifact(forward) => self.step_artifact(forward),
+            Action::Blink => self.blink(),
+            Action::ToggleAutoBlink => self.toggle_auto_blink(),
             Action::ResetCamera => {
                 if let Some(scene) = self.scene.scene() {
                     camera.reset(scene);
@@ -270,7 +294,7 @@ mod tests {
     /// number past `KINDS` fails the test.
     #[test]
     fn every_action_is_bound_in_exactly_one_row() {
-        const KINDS: usize = 15;
+        const KINDS: usize = 19;
         let kind = |action: Action| match action {
             Action::Pan(_) => 0,
             Action::Zoom(_) => 1,
@@ -287,6 +311,10 @@ mod tests {
             Action::Screenshot => 12,
             Action::ToggleHelp => 13,
             Action::Magnify(_) => 14,
+            Action::WorstPixel => 15,
+            Action::StepArtifact(_) => 16,
+            Action::Blink => 17,
+            Action::ToggleAutoBlink => 18,
         };
         let mut rows: [Vec<&str>; KINDS] = Default::default();
         for shortcut in SHORTCUTS {

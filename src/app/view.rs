@@ -10,6 +10,7 @@ use glam::DVec2;
 
 use super::Explorer;
 use super::analysis::Request;
+use super::blink::BLINKING_PANE;
 use super::gpu_view::{CompositeMode, PanePaint, Source, lock};
 use super::outline;
 use super::panes::{REFERENCE, pane_letter, subtrahend_label};
@@ -85,10 +86,13 @@ impl Explorer {
             );
         }
 
-        // Methods draw first, so that a difference pane reads this frame's targets.
+        // Methods draw first, so that a difference pane, and a blinking pane showing
+        // another's target, read this frame's targets.
+        let blinking = self.blink_source().is_some();
         let mut order: Vec<usize> = (0..rects.len()).collect();
         order.sort_by_key(|&i| {
             matches!(self.settings.panes[i].source, PaneSource::Difference { .. })
+                || (blinking && i == BLINKING_PANE)
         });
         let painter = ui.painter();
         painter.rect_filled(area, 0.0, ui.visuals().extreme_bg_color);
@@ -235,6 +239,15 @@ impl Explorer {
             rect,
         };
         let waiting = "error: shown once the view rests and the reference is ready".to_string();
+        // The title says what it shows: a note would sit over the pixels compared.
+        if index == BLINKING_PANE
+            && let Some((source, _)) = self.blink_source()
+        {
+            return (
+                Some(paint(None, Some(source), None, CompositeMode::Coverage)),
+                String::new(),
+            );
+        }
         match &settings.source {
             PaneSource::Method { name, .. } if name == REFERENCE => {
                 if self.reference.image.is_none() {
@@ -393,6 +406,11 @@ impl Explorer {
             PaneOverlay::Method(name) => title += &format!(" · overlay {name}"),
             PaneOverlay::Error => title += " · error vs reference",
             PaneOverlay::None => {}
+        }
+        if index == BLINKING_PANE
+            && let Some((_, shown)) = self.blink_source()
+        {
+            title += &format!(" · blink: showing {shown}");
         }
         title
     }

@@ -1,0 +1,147 @@
+//! Going to the artifacts: a pane's pixels off from the reference, worst first, worked
+//! out over the whole ×1 pane (not only the magnified window) with the method's own
+//! frame and the CPU reference, the way `glyphscope render` measures them; the magnifier
+//! is centred on one after another.
+
+use super::Explorer;
+use super::gpu_view::lock;
+use super::panes::{REFERENCE, pane_letter};
+use super::settings::PaneSource;
+use crate::camera::Camera;
+use crate::methods::frame;
+use crate::metrics::{self, PixelError};
+use crate::reference;
+
+/// The pixels stepped through are those off by more than this (coverage): the figure
+/// the error tables count as "> 0.25".
+pub const ARTIFACT_THRESHOLD: f64 = 0.25;
+
+/// The magnification the worst pixel is shown at when the view is not magnified yet.
+const ARTIFACT_MAGNIFY: u32 = 16;
+
+/// One pane's pixels over the threshold, and the one shown.
+pub struct Artifacts {
+    pane: usize,
+    /// What they were worked out for: the pane's source, the scene, the ×1 camera.
+    source: PaneSource,
+    scene_generation: u64,
+    camera: Camera,
+    pixels: Vec<PixelError>,
+    current: usize,
+    /// Worked out anew with the pixel shown before still among them, at `current`.
+    found_again: bool,
+}
+
+impl Explorer {
+    /// Centres the magnifier on the worst pixel of the hovered pane (else pane A).
+    pub(super) fn go_to_worst_pixel(&mut self) {
+        self.step_through_artifacts(None);
+    }
+
+    /// Centres the magnifier on the next (`forward`) or previous pixel over the
+    /// threshold, in descending error, wrapping round; from the worst when the list is
+    /// not for this view.
+    pub(super) fn step_artifact(&mut self, forward: bool) {
+        self.step_through_artifacts(Some(forward));
+    }
+
+    fn step_through_artifacts(&mut self, step: Option<bool>) {
+        let pane = self.view.hovered.map_or(0, |(index, _, _)| index);
+        let Some((width, height)) = self.view.pane_size else {
+            return;
+        };
+        let camera = self.settings.camera.camera(width, height);
+        let source = self.settings.panes[pane].source.clone();
+        let generation = self.scene.generation();
+        let current = self.artifacts.as_ref().is_some_and(|a| {
+            a.pane == pane
+                && a.source == source
+                && a.scene_generation == generation
+                && a.camera == camera
+        });
+        // Stepping goes on from the pixel shown, found again in a list worked out anew
+        // (the pane may have changed size as the status line wrapped).
+        let shown = step
+            .and(self.artifacts.as_ref())
+            .filter(|a| a.pane == pane)
+            .and_then(|a| a.pixels.get(a.current))
+            .map(|p| p.0);
+        if !current {
+            match self.find_artifacts(pane, &camera) {
+                Ok(pixels) => {
+                    let found = shown.and_then(|s| pixels.iter().position(|p| p.0 == s));
+                    self.artifacts = Some(Artifacts {
+                        pane,
+                        source,
+                        scene_generation: generation,
+                        camera,
+                        current: found.unwrap_or(0),
+                        found_again: found.is_some(),
+                        pixels,
+                    });
+                }
+                Err(message) => {
+                    self.artifacts = None;
+                    self.set_status(format!("pane {}: {message}", pane_letter(pane)));
+                    return;
+                }
+            }
+        }
+        let Some(artifacts) = self.artifacts.as_mut() else {
+            return;
+        };
+        let n = artifacts.pixels.len();
+        if n == 0 {
+            self.set_status(format!(
+                "pane {}: no pixel is off by more than {ARTIFACT_THRESHOLD}",
+                pane_letter(pane)
+            ));
+            return;
+        }
+        let continuing = current || artifacts.found_again;
+        artifacts.current = match (step, continuing) {
+            (Some(true), true) => (artifacts.current + 1) % n,
+            (Some(false), true) => (artifacts.current + n - 1) % n,
+            _ => 0,
+        };
+        let ((x, y), error) = artifacts.pixels[artifacts.current];
+        let message = format!(
+            "worst pixel {} of {n}: ({x}, {y}) error {error:.3}",
+            artifacts.current + 1
+        );
+        let camera = &mut self.settings.camera;
+        if camera.magnify == 1 {
+            camera.magnify = ARTIFACT_MAGNIFY;
+        }
+        camera.focus = [f64::from(x) + 0.5, f64::from(y) + 0.5];
+        self.set_status(message);
+    }
+
+    /// Pane `pane`'s pixels over the threshold at the ×1 `camera`, worst first: its
+    /// prepared method drawn into a frame of its own and read back as `render` does
+    /// (coverage over 1 taken down to the union's 1), against the CPU reference.
+    fn find_artifacts(&self, pane: usize, camera: &Camera) -> Result<Vec<PixelError>, String> {
+        let Some((gpu, _)) = &self.gpu else {
+            return Err("no wgpu device".into());
+        };
+        let Some(scene) = self.scene.scene() else {
+            return Err("no scene".into());
+        };
+        match &self.settings.panes[pane].source {
+            PaneSource::Method { name, .. } if name != REFERENCE => {}
+            _ => return Err("worst pixels are a GPU method's; this pane shows none".into()),
+        }
+        let image = {
+            let mut surface = lock(&self.panes[pane].surface);
+            let method = surface
+                .method
+                .as_mut()
+                .ok_or("the pane's method is not ready")?;
+            frame::render_image(gpu, method.as_mut(), camera)
+                .map_err(|e| e.to_string())?
+                .clamp_to_union()
+        };
+        let reference = reference::rasterize(scene, camera).map_err(|e| e.to_string())?;
+        metrics::pixels_over(&image, &reference, ARTIFACT_THRESHOLD).map_err(|e| e.to_string())
+    }
+}
