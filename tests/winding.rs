@@ -173,6 +173,7 @@ fn a_ray_meeting_curves_along_itself_beside_a_vertex_does_not_outweigh_one_meeti
     let cam = Camera::new(87, 106, 48.0, DVec2::new(24.0, 72.0));
     let image = render(&gpu, winding(&[]).as_mut(), &sun, &cam);
     let covered = image.get(52, 57);
+    println!("sun symbol, pixel (52, 57): {covered:.3}");
     assert!(
         covered > 0.98,
         "pixel (52, 57) reads {covered}, covered wholly"
