@@ -2,7 +2,10 @@
 //! text, drawn exactly as the window draws it (egui_wgpu, paint callbacks, every pane's
 //! method) but offscreen:
 //!
-//!     cargo run --release --example explorer_frame_time
+//!     cargo run --release --example explorer_frame_time [N]
+//!
+//! With N, the panes are magnified ×N about their centre (each draws a window of a
+//! pane's pixels, N×N times fewer of them).
 //!
 //! Prints the wall time of whole frames (UI, every pane redrawn, GPU finished) in
 //! continuous mode, each pane's GPU time from its timestamps, and the time of frames in
@@ -25,6 +28,15 @@ fn main() -> Result<(), glyphscope::Error> {
     settings.scene.text = include_str!("../tests/data/page.txt").into();
     settings.camera.size_px_per_em = 16.0;
     settings.camera.origin = [8.0, 100.0];
+    let magnify: u32 = match std::env::args().nth(1) {
+        Some(n) => n.parse().map_err(|_| {
+            glyphscope::Error::Input(format!("magnification '{n}' is not a whole number"))
+        })?,
+        None => 1,
+    };
+    settings.camera.magnify = magnify;
+    // The centre of a 2×2 pane of the 1920×1080 screen, roughly: on the text.
+    settings.camera.focus = [400.0, 260.0];
     // The four methods, one per pane, at their default parameters.
     for (pane, method) in
         settings
@@ -42,7 +54,7 @@ fn main() -> Result<(), glyphscope::Error> {
     }
     let camera = app.camera().expect("laid out");
     println!(
-        "2×2 on the standard page ({} glyphs), panes {}×{} px, {}",
+        "2×2 on the standard page ({} glyphs), panes drawing {}×{} px (×{magnify}), {}",
         app.scene().map_or(0, |s| s.instances.len()),
         camera.width,
         camera.height,

@@ -468,6 +468,9 @@ fn settings_are_saved_and_restored() {
     }
     let mut harness = harness(Settings::default());
     harness.key_press(egui::Key::Num4);
+    // A new layout frames the text; the zoom then doubles the framed size.
+    harness.step();
+    let framed = harness.state().settings.camera.size_px_per_em;
     harness.key_press(egui::Key::Plus);
     harness.step();
     let mut memory = Memory::default();
@@ -475,7 +478,7 @@ fn settings_are_saved_and_restored() {
     let restored: Settings = eframe::get_value(&memory, eframe::APP_KEY).unwrap();
     assert_eq!(restored, harness.state().settings);
     assert_eq!(restored.layout, Layout::Grid);
-    assert_eq!(restored.camera.size_px_per_em, 96.0);
+    assert_eq!(restored.camera.size_px_per_em, 2.0 * framed);
 }
 
 /// The magnifier: Alt + wheel three notches over the text gives ×8 about the cursor,
@@ -737,4 +740,34 @@ fn blink_alternates_pane_a_with_the_other_rendering() {
         "one pane: A should show the reference, off by {worst}"
     );
     assert!(screen_vs_coverage(&harness, &screen, 0, &own) > 50.0);
+}
+
+/// The view frames the text by itself when the layout or the text changes: the text's
+/// ink lies inside the pane and fills it along one side.
+#[test]
+fn a_new_layout_or_text_is_framed_in_the_panes() {
+    let mut harness = harness(Settings::default());
+    settle(&mut harness);
+    let framed = |harness: &Harness<'static, Explorer>, what: &str| {
+        let app = harness.state();
+        let camera = app.camera().unwrap();
+        let ink = camera.ink_bounds(app.scene().unwrap()).unwrap();
+        let (w, h) = (f64::from(camera.width), f64::from(camera.height));
+        assert!(
+            ink.min.x >= 0.0 && ink.min.y >= 0.0 && ink.max.x <= w && ink.max.y <= h,
+            "{what}: ink {ink:?} outside the {w}×{h} pane"
+        );
+        let fill = (ink.size().x / w).max(ink.size().y / h);
+        assert!(fill > 0.8, "{what}: the ink fills {fill:.2} of the pane");
+    };
+    harness.key_press(egui::Key::Num1);
+    settle(&mut harness);
+    assert_eq!(harness.state().settings.layout, Layout::Single);
+    framed(&harness, "one pane");
+    harness.state_mut().settings.scene.text = "Hi".into();
+    settle(&mut harness);
+    framed(&harness, "new text");
+    harness.key_press(egui::Key::Num4);
+    settle(&mut harness);
+    framed(&harness, "2×2");
 }

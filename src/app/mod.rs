@@ -103,16 +103,24 @@ pub struct Explorer {
     /// Messages from screenshots and file drops; shared with the screenshot callback.
     status: Arc<Mutex<String>>,
     frame_intervals: VecDeque<f64>,
+    framing: view::Framing,
 }
 
 impl Explorer {
     /// The app inside eframe: settings from the last run, eframe's wgpu device.
     pub fn new(cc: &eframe::CreationContext<'_>) -> Explorer {
-        let settings = cc
+        let saved = cc
             .storage
-            .and_then(|s| eframe::get_value::<Settings>(s, eframe::APP_KEY))
-            .unwrap_or_default();
-        Explorer::with_render_state(&cc.egui_ctx, cc.wgpu_render_state.as_ref(), settings)
+            .and_then(|s| eframe::get_value::<Settings>(s, eframe::APP_KEY));
+        // A first start (somewhere to keep settings, none kept yet) frames the text.
+        let first_start = cc.storage.is_some() && saved.is_none();
+        let mut app = Explorer::with_render_state(
+            &cc.egui_ctx,
+            cc.wgpu_render_state.as_ref(),
+            saved.unwrap_or_default(),
+        );
+        app.framing.pending = first_start;
+        app
     }
 
     /// The app on any egui context and wgpu render state (eframe's, a test harness's, or
@@ -148,6 +156,7 @@ impl Explorer {
             legends: (0..PANES).map(|_| gpu_view::PaneSurface::new()).collect(),
             status: Arc::new(Mutex::new(String::new())),
             frame_intervals: VecDeque::new(),
+            framing: view::Framing::default(),
         }
     }
 

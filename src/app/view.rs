@@ -14,7 +14,7 @@ use super::blink::BLINKING_PANE;
 use super::gpu_view::{CompositeMode, PanePaint, Source, lock};
 use super::outline;
 use super::panes::{REFERENCE, pane_letter, subtrahend_label};
-use super::settings::{PaneOverlay, PaneSource};
+use super::settings::{Layout, PaneOverlay, PaneSource};
 use crate::camera::Camera;
 use crate::gpu::shaders::COST_SCALE_CURVES;
 use crate::magnify::{GRID_FROM, VALUES_FROM, Window};
@@ -26,6 +26,15 @@ const GAP: f32 = 2.0;
 const WHEEL_ZOOM_PER_POINT: f64 = 0.004;
 /// Seconds the view must stay still before the reference and the errors are worked out.
 const REST_SECONDS: f64 = 0.25;
+
+/// When the view fits the text to the panes by itself: on a first start, and when the
+/// layout or the text changes — the text once its field is left, not at each key.
+#[derive(Default)]
+pub struct Framing {
+    pub pending: bool,
+    layout: Option<Layout>,
+    text: Option<String>,
+}
 
 /// What the view shows; when it stops changing, the view is at rest.
 #[derive(Clone, Debug, PartialEq)]
@@ -65,6 +74,7 @@ impl Explorer {
         let ppp = ui.ctx().pixels_per_point();
         let ((width, height), rects) = pane_rects(area, ppp, self.settings.layout.grid());
 
+        self.frame_text(ui, (width, height));
         self.steer(ui, area, &rects, ppp, (width, height));
         self.view.rects = rects.clone();
         let (camera, window) = self.settings.camera.pane_camera(width, height);
@@ -108,6 +118,29 @@ impl Explorer {
         }
         for (index, rect) in rects.iter().enumerate() {
             self.decorate(ui, index, *rect, &camera, ppp);
+        }
+    }
+
+    /// Fits the text to a `pane` of pixels when [`Framing`] says so.
+    fn frame_text(&mut self, ui: &egui::Ui, pane: (u32, u32)) {
+        let framing = &mut self.framing;
+        let layout = self.settings.layout;
+        if framing.layout.replace(layout).is_some_and(|l| l != layout) {
+            framing.pending = true;
+        }
+        let text = &self.settings.scene.text;
+        if !ui.ctx().egui_wants_keyboard_input() && framing.text.as_ref() != Some(text) {
+            if framing.text.replace(text.clone()).is_some() {
+                framing.pending = true;
+            }
+        }
+        if framing.pending
+            && self.scene.is_built_for(&self.settings.scene)
+            && let Some(scene) = self.scene.scene()
+        {
+            let size = DVec2::new(f64::from(pane.0), f64::from(pane.1));
+            self.settings.camera.fit(scene, size);
+            self.framing.pending = false;
         }
     }
 
