@@ -129,10 +129,11 @@ impl Explorer {
             framing.pending = true;
         }
         let text = &self.settings.scene.text;
-        if !ui.ctx().egui_wants_keyboard_input() && framing.text.as_ref() != Some(text) {
-            if framing.text.replace(text.clone()).is_some() {
-                framing.pending = true;
-            }
+        if !ui.ctx().egui_wants_keyboard_input()
+            && framing.text.as_ref() != Some(text)
+            && framing.text.replace(text.clone()).is_some()
+        {
+            framing.pending = true;
         }
         if framing.pending
             && self.scene.is_built_for(&self.settings.scene)
