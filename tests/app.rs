@@ -738,3 +738,46 @@ fn blink_alternates_pane_a_with_the_other_rendering() {
     );
     assert!(screen_vs_coverage(&harness, &screen, 0, &own) > 50.0);
 }
+
+/// The display mode and stem darkening change the picture, never the error figures:
+/// those stay linear coverage against the reference.
+#[test]
+fn display_modes_change_the_picture_but_not_the_error_figures() {
+    use glyphscope::app::display::DisplayMode;
+    let shown_with = |display: DisplayMode, stem_darkening: bool| {
+        let mut harness = harness(Settings {
+            display,
+            stem_darkening,
+            // Small enough that FreeType's curve darkens (0.14 px an edge at 12 ppem).
+            camera: glyphscope::app::settings::CameraSettings {
+                size_px_per_em: 12.0,
+                ..Default::default()
+            },
+            ..Settings::default()
+        });
+        let screen = settle(&mut harness);
+        let error = harness.state().pane_error(0).expect("measured at rest");
+        (screen, error)
+    };
+    let (linear_screen, linear_error) = shown_with(DisplayMode::Linear, false);
+    for (display, stem_darkening) in [
+        (DisplayMode::Srgb, false),
+        (DisplayMode::Gamma, false),
+        (DisplayMode::Linear, true),
+    ] {
+        let (screen, error) = shown_with(display, stem_darkening);
+        assert_eq!(
+            error, linear_error,
+            "{display:?}, darkening {stem_darkening}"
+        );
+        let changed = linear_screen
+            .pixels()
+            .zip(screen.pixels())
+            .filter(|(a, b)| a != b)
+            .count();
+        assert!(
+            changed > 1000,
+            "{display:?}, darkening {stem_darkening}: {changed} pixels changed"
+        );
+    }
+}

@@ -4,6 +4,9 @@
 
 use serde::{Deserialize, Serialize};
 
+/// The compositor's WGSL, whose `display_color` a test runs against this module's.
+pub use super::gpu_view::composite_wgsl;
+
 /// How coverage weights the text colour over the background.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum DisplayMode {
