@@ -740,32 +740,31 @@ fn blink_alternates_pane_a_with_the_other_rendering() {
 }
 
 /// The display mode and stem darkening change the picture, never the error figures:
-/// those stay linear coverage against the reference.
+/// those stay linear coverage against the reference. One harness throughout, so the
+/// panes keep their size.
 #[test]
 fn display_modes_change_the_picture_but_not_the_error_figures() {
     use glyphscope::app::display::DisplayMode;
-    let shown_with = |display: DisplayMode, stem_darkening: bool| {
-        let mut harness = harness(Settings {
-            display,
-            stem_darkening,
-            // Small enough that FreeType's curve darkens (0.14 px an edge at 12 ppem).
-            camera: glyphscope::app::settings::CameraSettings {
-                size_px_per_em: 12.0,
-                ..Default::default()
-            },
-            ..Settings::default()
-        });
-        let screen = settle(&mut harness);
-        let error = harness.state().pane_error(0).expect("measured at rest");
-        (screen, error)
-    };
-    let (linear_screen, linear_error) = shown_with(DisplayMode::Linear, false);
+    let mut harness = harness(Settings {
+        // Small enough that FreeType's curve darkens (0.14 px an edge at 12 ppem).
+        camera: glyphscope::app::settings::CameraSettings {
+            size_px_per_em: 12.0,
+            ..Default::default()
+        },
+        ..Settings::default()
+    });
+    let linear_screen = settle(&mut harness);
+    let linear_error = harness.state().pane_error(0).expect("measured at rest");
     for (display, stem_darkening) in [
         (DisplayMode::Srgb, false),
         (DisplayMode::Gamma, false),
         (DisplayMode::Linear, true),
     ] {
-        let (screen, error) = shown_with(display, stem_darkening);
+        let settings = &mut harness.state_mut().settings;
+        settings.display = display;
+        settings.stem_darkening = stem_darkening;
+        let screen = settle(&mut harness);
+        let error = harness.state().pane_error(0).expect("measured at rest");
         assert_eq!(
             error, linear_error,
             "{display:?}, darkening {stem_darkening}"

@@ -246,7 +246,9 @@ impl Explorer {
             ui.color_edit_button_srgb(&mut settings.text_color);
             ui.label("background");
             ui.color_edit_button_srgb(&mut settings.background);
+            // A fixed width: a label-sized box would resize the panel and so the panes.
             egui::ComboBox::from_id_salt("display mode")
+                .width(100.0)
                 .selected_text(settings.display.label())
                 .show_ui(ui, |ui| {
                     for mode in DisplayMode::ALL {

@@ -29,8 +29,8 @@ impl DisplayMode {
     pub fn label(self) -> &'static str {
         match self {
             DisplayMode::Linear => "linear",
-            DisplayMode::Srgb => "sRGB blend",
-            DisplayMode::Gamma => "gamma-corrected",
+            DisplayMode::Srgb => "sRGB",
+            DisplayMode::Gamma => "gamma",
         }
     }
 
