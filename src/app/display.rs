@@ -170,9 +170,7 @@ mod tests {
         );
         assert!((light - srgb_encode(0.287_174_6)).abs() < 1e-5, "{light}");
         // Naive sRGB blending of black and white is the coverage itself.
-        assert_eq!(
-            display_color(0.25, white, black, DisplayMode::Srgb, 0.0),
-            [0.25; 3]
-        );
+        let naive = display_color(0.25, white, black, DisplayMode::Srgb, 0.0);
+        assert!(naive.iter().all(|v| (v - 0.25).abs() < 1e-6), "{naive:?}");
     }
 }
