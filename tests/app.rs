@@ -771,3 +771,45 @@ fn a_new_layout_or_text_is_framed_in_the_panes() {
     settle(&mut harness);
     framed(&harness, "2×2");
 }
+
+/// The display mode and stem darkening change the picture, never the error figures:
+/// those stay linear coverage against the reference. One harness throughout, so the
+/// panes keep their size.
+#[test]
+fn display_modes_change_the_picture_but_not_the_error_figures() {
+    use glyphscope::app::display::DisplayMode;
+    let mut harness = harness(Settings {
+        // Small enough that FreeType's curve darkens (0.14 px an edge at 12 ppem).
+        camera: glyphscope::app::settings::CameraSettings {
+            size_px_per_em: 12.0,
+            ..Default::default()
+        },
+        ..Settings::default()
+    });
+    let linear_screen = settle(&mut harness);
+    let linear_error = harness.state().pane_error(0).expect("measured at rest");
+    for (display, stem_darkening) in [
+        (DisplayMode::Srgb, false),
+        (DisplayMode::Gamma, false),
+        (DisplayMode::Linear, true),
+    ] {
+        let settings = &mut harness.state_mut().settings;
+        settings.display = display;
+        settings.stem_darkening = stem_darkening;
+        let screen = settle(&mut harness);
+        let error = harness.state().pane_error(0).expect("measured at rest");
+        assert_eq!(
+            error, linear_error,
+            "{display:?}, darkening {stem_darkening}"
+        );
+        let changed = linear_screen
+            .pixels()
+            .zip(screen.pixels())
+            .filter(|(a, b)| a != b)
+            .count();
+        assert!(
+            changed > 1000,
+            "{display:?}, darkening {stem_darkening}: {changed} pixels changed"
+        );
+    }
+}

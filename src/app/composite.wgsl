@@ -19,6 +19,9 @@ struct Composite {
     difference_scale: f32,
     // Framebuffer pixels per texel side: the magnifier draws each texel as a block.
     block: f32,
+    // Mode 0 only: `DisplayMode::shader_index`, and the stem darkening in pixels per edge.
+    display: u32,
+    edge_darkening: f32,
 }
 
 @group(0) @binding(0) var<uniform> composite: Composite;
@@ -40,6 +43,33 @@ fn srgb_encode(linear: vec3<f32>) -> vec3<f32> {
 fn srgb_decode(encoded: vec3<f32>) -> vec3<f32> {
     let c = clamp(encoded, vec3<f32>(0.0), vec3<f32>(1.0));
     return select(pow((c + 0.055) / 1.055, vec3<f32>(2.4)), c / 12.92, c <= vec3<f32>(0.04045));
+}
+
+fn luminance(rgb: vec3<f32>) -> f32 {
+    return dot(rgb, vec3<f32>(0.2126, 0.7152, 0.0722));
+}
+
+// What a pixel of `coverage` shows, sRGB-encoded; `display::display_color` in Rust is its
+// mirror and documents each mode. Display only: error figures never see this.
+fn display_color(coverage: f32, text: vec3<f32>, background: vec3<f32>, display: u32, edge_darkening: f32) -> vec3<f32> {
+    var c = clamp(coverage, 0.0, 1.0);
+    if c > 0.0 {
+        c = min(c + edge_darkening, 1.0);
+    }
+    if display == 1u {
+        return mix(srgb_encode(background), srgb_encode(text), c);
+    }
+    var weight = c;
+    if display == 2u {
+        let lb = luminance(background);
+        let lt = luminance(text);
+        if abs(lt - lb) >= 1e-6 {
+            let g = 1.8; // display::PERCEPTUAL_GAMMA
+            let blended = pow(mix(pow(lb, 1.0 / g), pow(lt, 1.0 / g), c), g);
+            weight = (blended - lb) / (lt - lb);
+        }
+    }
+    return srgb_encode(mix(background, text, weight));
 }
 
 // `value` holds what the pixel should read as stored bytes (/255); an sRGB framebuffer
@@ -69,7 +99,5 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
         let e = clamp((clamp(a.a, 0.0, 1.0) - clamp(b.a, 0.0, 1.0)) / composite.difference_scale, -1.0, 1.0);
         return as_stored(vec3<f32>(max(e, 0.0), 0.0, max(-e, 0.0)));
     }
-    // Coverage blends text over background in linear light.
-    let linear = mix(composite.background.rgb, composite.text.rgb, clamp(a.a, 0.0, 1.0));
-    return as_stored(srgb_encode(linear));
+    return as_stored(display_color(a.a, composite.text.rgb, composite.background.rgb, composite.display, composite.edge_darkening));
 }

@@ -5,6 +5,7 @@ use eframe::egui;
 
 use super::Explorer;
 use super::camera_control::{MAX_SIZE_PX_PER_EM, MAX_TILT_DEG, MIN_SIZE_PX_PER_EM};
+use super::display::DisplayMode;
 use super::panes::{REFERENCE, pane_controls, pane_letter};
 use super::settings::{FontChoice, Layout, PaneSource};
 use super::shortcuts::{Action, SHORTCUTS, key_name};
@@ -245,6 +246,19 @@ impl Explorer {
             ui.color_edit_button_srgb(&mut settings.text_color);
             ui.label("background");
             ui.color_edit_button_srgb(&mut settings.background);
+            // A fixed width: a label-sized box would resize the panel and so the panes.
+            egui::ComboBox::from_id_salt("display mode")
+                .width(100.0)
+                .selected_text(settings.display.label())
+                .show_ui(ui, |ui| {
+                    for mode in DisplayMode::ALL {
+                        ui.selectable_value(&mut settings.display, mode, mode.label());
+                    }
+                })
+                .response
+                .on_hover_text("how coverage is shown; error figures stay linear coverage");
+            ui.checkbox(&mut settings.stem_darkening, "darken")
+                .on_hover_text("FreeType's CFF stem darkening, approximated at display time");
         });
         ui.add(
             egui::Slider::new(&mut settings.difference_scale, 0.01..=1.0)

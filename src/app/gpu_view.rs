@@ -11,6 +11,7 @@ use std::sync::{Arc, Mutex, MutexGuard};
 use eframe::egui;
 use egui_wgpu::wgpu;
 
+use super::display::DisplayMode;
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
 use crate::gpu::timing::{Timestamps, intervals_ms};
@@ -44,6 +45,10 @@ struct CompositeUniform {
     difference_scale: f32,
     // Framebuffer pixels per texel side: the magnifier's N.
     block: f32,
+    display: u32,
+    edge_darkening: f32,
+    // WGSL rounds the struct up to its 16-byte alignment.
+    padding: [f32; 2],
 }
 
 /// The pipeline that draws panes, for egui's framebuffer format.
@@ -286,6 +291,10 @@ pub struct PanePaint {
     pub text: egui::Rgba,
     pub background: egui::Rgba,
     pub difference_scale: f32,
+    /// How coverage is shown (`CompositeMode::Coverage` only).
+    pub display: DisplayMode,
+    /// Stem darkening per edge in pixels, 0 for none (`CompositeMode::Coverage` only).
+    pub edge_darkening: f32,
     /// Each texel drawn as a block of this many pixels a side (the magnifier).
     pub block: u32,
     /// The pane, in points.
@@ -335,6 +344,9 @@ impl egui_wgpu::CallbackTrait for PanePaint {
             srgb_target: u32::from(self.compositor.srgb_target),
             difference_scale: self.difference_scale,
             block: self.block as f32,
+            display: self.display.shader_index(),
+            edge_darkening: self.edge_darkening,
+            padding: [0.0; 2],
         };
         let buffer = surface.uniform.get_or_insert_with(|| {
             gpu.device.create_buffer(&wgpu::BufferDescriptor {

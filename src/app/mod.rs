@@ -9,6 +9,7 @@
 //! - `panes`: the method catalog, each pane's prepared method, the pane controls.
 //! - `view`: the panes laid out, steered by the pointer, and settling when at rest.
 //! - `gpu_view`: egui_wgpu paint callbacks drawing each pane's offscreen target.
+//! - `display`: what a pane shows of a coverage value (blending, stem darkening).
 //! - `analysis`: the reference and the error figures, on a background thread.
 //! - `artifacts`: a pane's pixels off from the reference, worst first, to step through.
 //! - `blink`: pane A flipped in place to pane B's method or the reference.
@@ -21,6 +22,7 @@ mod artifacts;
 mod blink;
 mod camera_control;
 mod controls;
+pub mod display;
 mod font_dialog;
 mod gpu_view;
 pub mod headless;

@@ -132,7 +132,7 @@ fn one_glyph(pane: PaneSettings) -> Settings {
 
 /// Runs the explorer with `settings` until its numbers are in (and, if asked, a sweep has
 /// run), and returns the last frame.
-fn photograph(
+pub fn photograph(
     screen: &mut Headless,
     settings: Settings,
     sweep: bool,

@@ -11,6 +11,7 @@ use glam::DVec2;
 use super::Explorer;
 use super::analysis::Request;
 use super::blink::BLINKING_PANE;
+use super::display::{DisplayMode, freetype_edge_darkening};
 use super::gpu_view::{CompositeMode, PanePaint, Source, lock};
 use super::outline;
 use super::panes::{REFERENCE, pane_letter, subtrahend_label};
@@ -257,6 +258,11 @@ impl Explorer {
     ) -> (Option<PanePaint>, String) {
         let settings = &self.settings.panes[index];
         let pane = &self.panes[index];
+        let edge_darkening = if self.settings.stem_darkening {
+            freetype_edge_darkening(camera.size_px_per_em as f32)
+        } else {
+            0.0
+        };
         let paint = |camera: Option<Camera>, first, second, mode| PanePaint {
             gpu: self.gpu.as_ref().expect("checked by the caller").0.clone(),
             compositor: self.gpu.as_ref().expect("checked by the caller").1.clone(),
@@ -269,6 +275,8 @@ impl Explorer {
             text: color(self.settings.text_color).into(),
             background: color(self.settings.background).into(),
             difference_scale: self.settings.difference_scale,
+            display: self.settings.display,
+            edge_darkening,
             block: self.view.window.map_or(1, |w| w.factor),
             rect,
         };
@@ -534,6 +542,8 @@ impl Explorer {
                 text: egui::Rgba::WHITE,
                 background: egui::Rgba::BLACK,
                 difference_scale: 1.0,
+                display: DisplayMode::Linear,
+                edge_darkening: 0.0,
                 block: 1,
                 rect: bar,
             };
