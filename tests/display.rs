@@ -1,6 +1,9 @@
 //! The compositor's `display_color` (composite.wgsl) against its CPU mirror
 //! (`glyphscope::app::display::display_color`) on a ramp of coverage, for every mode.
 
+mod common;
+
+use common::run_probe;
 use glyphscope::app::display::{
     DisplayMode, composite_wgsl, display_color, freetype_edge_darkening,
 };
@@ -8,7 +11,6 @@ use glyphscope::gpu::GpuContext;
 
 /// Inputs: coverage, then text rgb, background rgb, mode, darkening; output rgb.
 fn shader_display_color(gpu: &GpuContext, inputs: &[[f32; 12]]) -> Vec<[f32; 4]> {
-    use wgpu::util::DeviceExt;
     let probe = "
 struct ProbeInput { a: vec4<f32>, b: vec4<f32>, c: vec4<f32> }
 @group(1) @binding(0) var<storage, read> probe_inputs: array<ProbeInput>;
@@ -22,64 +24,17 @@ fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
     }
 }
 ";
-    let device = &gpu.device;
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("display_color probe"),
-        source: wgpu::ShaderSource::Wgsl(format!("{}\n{probe}", composite_wgsl()).into()),
-    });
-    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-        label: Some("display_color probe"),
-        layout: None,
-        module: &module,
-        entry_point: Some("probe"),
-        compilation_options: Default::default(),
-        cache: None,
-    });
-    let input = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-        label: Some("probe inputs"),
-        contents: bytemuck::cast_slice(inputs),
-        usage: wgpu::BufferUsages::STORAGE,
-    });
-    let size = (inputs.len() * 16) as u64;
-    let output = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("probe outputs"),
-        size,
-        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
-        mapped_at_creation: false,
-    });
-    let readback = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("probe readback"),
-        size,
-        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
-    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: Some("probe"),
-        layout: &pipeline.get_bind_group_layout(1),
-        entries: &[
-            wgpu::BindGroupEntry {
-                binding: 0,
-                resource: input.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 1,
-                resource: output.as_entire_binding(),
-            },
-        ],
-    });
-    let mut encoder = device.create_command_encoder(&Default::default());
-    {
-        let mut pass = encoder.begin_compute_pass(&Default::default());
-        pass.set_pipeline(&pipeline);
-        pass.set_bind_group(1, &bind_group, &[]);
-        pass.dispatch_workgroups(inputs.len().div_ceil(64) as u32, 1, 1);
-    }
-    encoder.copy_buffer_to_buffer(&output, 0, &readback, 0, size);
-    gpu.queue.submit([encoder.finish()]);
-    readback.map_async(wgpu::MapMode::Read, .., |mapped| mapped.unwrap());
-    device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
-    let view = readback.get_mapped_range(..).unwrap();
-    bytemuck::cast_slice::<u8, [f32; 4]>(&view).to_vec()
+    run_probe(
+        gpu,
+        format!("{}\n{probe}", composite_wgsl()),
+        (1, 0),
+        bytemuck::cast_slice(inputs),
+        inputs.len(),
+        16,
+    )
+    .chunks_exact(4)
+    .map(|c| [c[0], c[1], c[2], c[3]])
+    .collect()
 }
 
 /// Every mode, with and without darkening, light on dark, dark on light and coloured,

@@ -515,7 +515,6 @@ fn curve_counts_past_what_half_floats_hold_are_flagged() {
 /// winding.wgsl's `combine_rays` on the GPU, for each (x coverage, y coverage, x sight,
 /// y sight): the shader's own function, run by a compute entry point appended to it.
 fn combine_rays(gpu: &GpuContext, inputs: &[[f32; 4]]) -> Vec<f32> {
-    use wgpu::util::DeviceExt;
     let probe = "
 @group(0) @binding(8) var<storage, read> probe_inputs: array<vec4<f32>>;
 @group(0) @binding(9) var<storage, read_write> probe_outputs: array<f32>;
@@ -528,64 +527,14 @@ fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
 }
 ";
     let shader = methods::registry::find("winding").unwrap().shader.unwrap();
-    let device = &gpu.device;
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("combine_rays probe"),
-        source: wgpu::ShaderSource::Wgsl(format!("{}\n{probe}", shader.source()).into()),
-    });
-    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-        label: Some("combine_rays probe"),
-        layout: None,
-        module: &module,
-        entry_point: Some("probe"),
-        compilation_options: Default::default(),
-        cache: None,
-    });
-    let input = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-        label: Some("probe inputs"),
-        contents: bytemuck::cast_slice(inputs),
-        usage: wgpu::BufferUsages::STORAGE,
-    });
-    let size = (inputs.len() * 4) as u64;
-    let output = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("probe outputs"),
-        size,
-        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
-        mapped_at_creation: false,
-    });
-    let readback = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("probe readback"),
-        size,
-        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
-    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: Some("probe"),
-        layout: &pipeline.get_bind_group_layout(0),
-        entries: &[
-            wgpu::BindGroupEntry {
-                binding: 8,
-                resource: input.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 9,
-                resource: output.as_entire_binding(),
-            },
-        ],
-    });
-    let mut encoder = device.create_command_encoder(&Default::default());
-    {
-        let mut pass = encoder.begin_compute_pass(&Default::default());
-        pass.set_pipeline(&pipeline);
-        pass.set_bind_group(0, &bind_group, &[]);
-        pass.dispatch_workgroups(inputs.len().div_ceil(64) as u32, 1, 1);
-    }
-    encoder.copy_buffer_to_buffer(&output, 0, &readback, 0, size);
-    gpu.queue.submit([encoder.finish()]);
-    readback.map_async(wgpu::MapMode::Read, .., |mapped| mapped.unwrap());
-    device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
-    let view = readback.get_mapped_range(..).unwrap();
-    bytemuck::cast_slice::<u8, f32>(&view).to_vec()
+    run_probe(
+        gpu,
+        format!("{}\n{probe}", shader.source()),
+        (0, 8),
+        bytemuck::cast_slice(inputs),
+        inputs.len(),
+        4,
+    )
 }
 
 /// The two rays' blend is continuous where the weights' total falls to 0 (both rays

@@ -85,3 +85,79 @@ pub fn cameras(base: Camera) -> Vec<(&'static str, Camera)> {
         ),
     ]
 }
+
+/// Runs a WGSL function on the GPU for tests that hold a shader to its CPU mirror:
+/// `source` is the shader with a compute entry point `probe` (workgroup size 64)
+/// appended, reading one input per invocation from the storage buffer at
+/// (`group`, `binding`) and writing `output_bytes` per input to (`group`, `binding` + 1).
+/// Returns the outputs as f32s, in order.
+pub fn run_probe(
+    gpu: &GpuContext,
+    source: String,
+    (group, binding): (u32, u32),
+    inputs: &[u8],
+    count: usize,
+    output_bytes: u64,
+) -> Vec<f32> {
+    use wgpu::util::DeviceExt;
+    let device = &gpu.device;
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("probe"),
+        source: wgpu::ShaderSource::Wgsl(source.into()),
+    });
+    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+        label: Some("probe"),
+        layout: None,
+        module: &module,
+        entry_point: Some("probe"),
+        compilation_options: Default::default(),
+        cache: None,
+    });
+    let input = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("probe inputs"),
+        contents: inputs,
+        usage: wgpu::BufferUsages::STORAGE,
+    });
+    let size = count as u64 * output_bytes;
+    let output = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("probe outputs"),
+        size,
+        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+        mapped_at_creation: false,
+    });
+    let readback = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("probe readback"),
+        size,
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("probe"),
+        layout: &pipeline.get_bind_group_layout(group),
+        entries: &[
+            wgpu::BindGroupEntry {
+                binding,
+                resource: input.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: binding + 1,
+                resource: output.as_entire_binding(),
+            },
+        ],
+    });
+    let mut encoder = device.create_command_encoder(&Default::default());
+    {
+        let mut pass = encoder.begin_compute_pass(&Default::default());
+        pass.set_pipeline(&pipeline);
+        pass.set_bind_group(group, &bind_group, &[]);
+        pass.dispatch_workgroups(count.div_ceil(64) as u32, 1, 1);
+    }
+    encoder.copy_buffer_to_buffer(&output, 0, &readback, 0, size);
+    gpu.queue.submit([encoder.finish()]);
+    readback.map_async(wgpu::MapMode::Read, .., |mapped| mapped.unwrap());
+    device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
+    let view = readback.get_mapped_range(..).unwrap();
+    view.chunks_exact(4)
+        .map(|b| f32::from_ne_bytes(b.try_into().expect("four bytes")))
+        .collect()
+}
