@@ -12,7 +12,8 @@ use serde::Serialize;
 
 use crate::Error;
 use crate::coverage::CoverageImage;
-use crate::geometry::Rect;
+use crate::geometry::{Rect, distance_to_segment};
+
 use crate::metrics::ErrorStats;
 use crate::outline::OutlineDrawing;
 
@@ -386,16 +387,6 @@ fn paint_by_distance(
             }
         }
     }
-}
-
-fn distance_to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
-    let d = b - a;
-    let t = if d.length_squared() > 0.0 {
-        ((p - a).dot(d) / d.length_squared()).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p - (a + d * t)).length()
 }
 
 fn mix(under: Rgb<u8>, over: Rgb<u8>, alpha: f64) -> Rgb<u8> {

@@ -5,7 +5,9 @@
 
 mod quadratic;
 
-pub use quadratic::{DEFAULT_QUAD_TOLERANCE_EM, cubic_to_quadratics, max_distance_to_cubic};
+pub use quadratic::{
+    DEFAULT_QUAD_TOLERANCE_EM, cubic_to_quadratics, distance_to_segment, max_distance_to_cubic,
+};
 
 use glam::{DMat3, DVec2, DVec3};
 
