@@ -119,6 +119,14 @@ pub fn run_bench(args: &BenchArgs) -> Result<(), Error> {
 pub struct RenderArgs {
     #[command(flatten)]
     pub view: ViewArgs,
+    /// A named view instead of the view options: a hard case of `glyphscope stability`
+    /// (unturned, at sub-pixel offset 0) or a bench scene (page, tiny, headlines, …),
+    /// the views the explorer's Cases menu loads.
+    #[arg(long, conflicts_with_all = [
+        "font", "text", "glyph_id", "size", "width", "height", "origin", "matrix",
+        "world_offset", "tilt", "variation",
+    ])]
+    pub case: Option<String>,
     /// The method that draws it; one of the registry's (see `--help`).
     #[arg(long, help = method_help())]
     pub method: String,
@@ -165,6 +173,7 @@ impl RenderArgs {
     pub fn of(view: ViewArgs) -> RenderArgs {
         RenderArgs {
             view,
+            case: None,
             method: registry::REFERENCE.name.into(),
             params: Vec::new(),
             out: PathBuf::new(),
@@ -209,7 +218,10 @@ pub struct Rendered {
 pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
     let method = registry::find(&args.method)?;
     let start = Instant::now();
-    let (scene, camera) = args.view.build()?;
+    let (scene, camera) = match &args.case {
+        Some(name) => crate::named_views::build(name)?,
+        None => args.view.build()?,
+    };
     let scene_ms = ms_since(start);
     let gpu = if method.is_reference() {
         None

@@ -21,7 +21,7 @@ pub struct ViewArgs {
     /// Text to shape; '\n' (or a literal backslash-n) starts a new line.
     #[arg(
         long,
-        required_unless_present = "glyph_id",
+        required_unless_present_any = ["glyph_id", "case"],
         conflicts_with = "glyph_id"
     )]
     pub text: Option<String>,
@@ -29,8 +29,8 @@ pub struct ViewArgs {
     #[arg(long)]
     pub glyph_id: Option<u32>,
     /// Size in pixels per em.
-    #[arg(long, allow_negative_numbers = true)]
-    pub size: f64,
+    #[arg(long, allow_negative_numbers = true, required_unless_present = "case")]
+    pub size: Option<f64>,
     /// Image width; by default the ink box plus a margin.
     #[arg(long)]
     pub width: Option<u32>,
@@ -66,7 +66,7 @@ impl ViewArgs {
             font: None,
             text: Some(text.to_owned()),
             glyph_id: None,
-            size,
+            size: Some(size),
             width: None,
             height: None,
             origin: None,
@@ -84,7 +84,14 @@ impl ViewArgs {
 
     /// Builds the scene and the camera that look at it, checking every input.
     pub fn build(&self) -> Result<(Scene, Camera), Error> {
-        let size = self.size;
+        self.build_with(self.font()?)
+    }
+
+    /// [`ViewArgs::build`] with `font` already loaded (at the `--variation` instance).
+    pub fn build_with(&self, font: Font) -> Result<(Scene, Camera), Error> {
+        let size = self
+            .size
+            .ok_or_else(|| Error::Input("give --size".into()))?;
         if !size.is_finite() || size <= 0.0 {
             return Err(Error::Input(format!(
                 "--size must be a positive number of px/em, got {size}"
@@ -95,7 +102,6 @@ impl ViewArgs {
                 "--size {size} is over the limit of {MAX_SIZE_PX_PER_EM}"
             )));
         }
-        let font = self.font()?;
         let scene = match (&self.text, self.glyph_id) {
             (Some(text), _) => Scene::from_text(&font, text)?,
             (None, Some(id)) => Scene::from_glyph_id(&font, id)?,
@@ -145,7 +151,9 @@ impl ViewArgs {
         if let Some(text) = &self.text {
             out.extend(["--text".into(), text.clone()]);
         }
-        out.extend(["--size".into(), self.size.to_string()]);
+        if let Some(size) = self.size {
+            out.extend(["--size".into(), size.to_string()]);
+        }
         let pair = |v: DVec2| format!("{},{}", v.x, v.y);
         if let (Some(w), Some(h)) = (self.width, self.height) {
             out.extend([

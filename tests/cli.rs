@@ -702,3 +702,82 @@ fn headless_render_probes_no_display() {
         );
     }
 }
+
+/// `--case` draws a named view: a bench scene's picture is byte for byte the one its own
+/// command line draws, and a hard case's frame has the case's size; mixing `--case` with
+/// view options, or an unknown name, fails cleanly.
+#[test]
+fn render_case_draws_a_named_view_and_refuses_mixing() {
+    let by_case = scratch("case-headlines.png");
+    run_ok(&[
+        "render",
+        "--case",
+        "headlines",
+        "--method",
+        "reference",
+        "--out",
+        by_case.to_str().unwrap(),
+    ]);
+    let by_args = scratch("args-headlines.png");
+    let line = glyphscope::bench::scenes::scene("headlines")
+        .unwrap()
+        .args
+        .command_line();
+    let mut args = vec!["render"];
+    args.extend(line.iter().map(String::as_str));
+    args.extend(["--method", "reference", "--out", by_args.to_str().unwrap()]);
+    run_ok(&args);
+    let (a, b) = (
+        image::open(&by_case).unwrap(),
+        image::open(&by_args).unwrap(),
+    );
+    assert_eq!(
+        a.as_bytes(),
+        b.as_bytes(),
+        "--case headlines and its command line differ"
+    );
+
+    let skew = scratch("case-skew.png");
+    run_ok(&[
+        "render",
+        "--case",
+        "strong-skew",
+        "--method",
+        "reference",
+        "--out",
+        skew.to_str().unwrap(),
+    ]);
+    let (_, camera) = glyphscope::named_views::build("strong-skew").unwrap();
+    let png = image::open(&skew).unwrap();
+    assert_eq!((png.width(), png.height()), (camera.width, camera.height));
+
+    fails(
+        "case-unknown",
+        &["--case", "nope", "--method", "reference"],
+        "unknown case",
+    );
+    fails(
+        "case-and-text",
+        &[
+            "--case",
+            "strong-skew",
+            "--text",
+            "hi",
+            "--method",
+            "reference",
+        ],
+        "cannot be used with",
+    );
+    fails(
+        "case-and-size",
+        &[
+            "--case",
+            "strong-skew",
+            "--size",
+            "12",
+            "--method",
+            "reference",
+        ],
+        "cannot be used with",
+    );
+}

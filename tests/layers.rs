@@ -26,8 +26,9 @@ const LAYERS: &[(&str, u32)] = &[
     ("measure", 7),
     ("stability", 8),
     ("bench", 8),
-    ("cli", 9),
-    ("app", 10),
+    ("named_views", 9),
+    ("cli", 10),
+    ("app", 11),
 ];
 
 fn layer(module: &str) -> Option<u32> {

@@ -128,7 +128,7 @@ pub fn moved_args(args: &ViewArgs, camera: &Camera) -> ViewArgs {
     let origin = centre + MOVED_ZOOM * (flip * rotation * flip) * (camera.origin - centre);
     let m = rotation * camera.matrix;
     ViewArgs {
-        size: camera.size_px_per_em * MOVED_ZOOM,
+        size: Some(camera.size_px_per_em * MOVED_ZOOM),
         width: Some(camera.width),
         height: Some(camera.height),
         origin: Some(origin),
