@@ -179,7 +179,7 @@ fn the_method_picker_switches_the_pane_and_greys_what_is_missing() {
         ..Settings::default()
     });
     harness.run_ok();
-    harness.get_by_value("winding").click();
+    harness.get_by_value("sdf-cells").click();
     harness.run_ok();
     harness.get_by_label("bounds").click();
     harness.run_ok();
@@ -818,4 +818,199 @@ fn display_modes_change_the_picture_but_not_the_error_figures() {
             "{display:?}, darkening {stem_darkening}: {changed} pixels changed"
         );
     }
+}
+
+/// The largest difference between a pane's read-back `shown` (the pixels of `window`)
+/// and the frame `image` whose pixel (`offset` + pane pixel) each is, and how many pixels
+/// the two share; NaN fails.
+fn pane_vs_frame(
+    shown: &CoverageImage,
+    window: glyphscope::magnify::Window,
+    offset: (i64, i64),
+    image: &CoverageImage,
+) -> (usize, f32) {
+    let mut compared = 0;
+    let mut worst = 0.0f32;
+    for j in 0..shown.height {
+        for i in 0..shown.width {
+            let x = i64::from(window.x0 + i) + offset.0;
+            let y = i64::from(window.y0 + j) + offset.1;
+            if x < 0 || y < 0 || x >= i64::from(image.width) || y >= i64::from(image.height) {
+                continue;
+            }
+            let d = (shown.get(i, j) - image.get(x as u32, y as u32)).abs();
+            assert!(!d.is_nan(), "NaN at ({x}, {y})");
+            worst = worst.max(d);
+            compared += 1;
+        }
+    }
+    (compared, worst)
+}
+
+/// The Cases menu loads a named view so that each pane pixel is the pixel `glyphscope
+/// render --case NAME` draws there (skew, a 1e6 px world offset, rotation with tilt), and
+/// magnifies pane A on its worst pixel (×32, values written, outline on): the pixel
+/// whose error is the largest `render` reports, when the pane sees the whole frame.
+#[test]
+fn a_case_from_the_menu_reproduces_render_and_opens_on_its_worst_pixel() {
+    // sdf-cells: a method with real errors on these views, so the worst pixel is one.
+    let mut settings = Settings::default();
+    settings.panes[0] = PaneSettings::method("sdf-cells");
+    let mut harness = harness(settings);
+    settle(&mut harness);
+    for name in ["strong-skew", "world-offset-1e6", "rotated"] {
+        // The menu opens on the next frame; the item is scrolled to as a user would.
+        harness.get_by_label("Cases").click();
+        harness.step();
+        harness.step();
+        harness.get_by_label(name).scroll_to_me();
+        for _ in 0..10 {
+            harness.step();
+        }
+        harness.get_by_label(name).click();
+        // Settled: placed, magnified on the worst pixel, its numbers in.
+        settle(&mut harness);
+        let app = harness.state();
+        assert_eq!(app.settings.scene.case.as_deref(), Some(name));
+        let window = app.magnified_window().expect("laid out");
+        assert_eq!(
+            window.factor, 32,
+            "{name}: magnified enough to write the values"
+        );
+        assert!(
+            app.settings.panes[..2].iter().all(|p| p.outline),
+            "{name}: outline on"
+        );
+        let offset = app
+            .settings
+            .camera
+            .case_frame
+            .expect("a case's frame")
+            .offset;
+        let (ox, oy) = (offset[0] as i64, offset[1] as i64);
+        let shown = app.pane_capture(0).expect("read back at rest");
+
+        let rendered = glyphscope::cli::render(&glyphscope::cli::RenderArgs {
+            case: Some(name.into()),
+            method: "sdf-cells".into(),
+            error_image: Some(PathBuf::from("unused")),
+            ..glyphscope::cli::RenderArgs::of(glyphscope::view::ViewArgs::text("-", 1.0))
+        })
+        .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let (image, reference) = (&rendered.image, rendered.reference.as_ref().unwrap());
+        let (compared, worst) = pane_vs_frame(&shown, window, (ox, oy), image);
+        assert!(compared > 100, "{name}: only {compared} pixels in common");
+        assert!(
+            worst <= 1e-3,
+            "{name}: the pane is off from render's image by {worst} (over {compared} pixels)"
+        );
+        let pane = app.pane_rects()[0];
+        let sees_whole_frame = ox <= 0
+            && oy <= 0
+            && i64::from(image.width) - ox <= pane.width() as i64
+            && i64::from(image.height) - oy <= pane.height() as i64;
+        let stats = rendered.stats.error.expect("compared with the reference");
+        let (fx, fy) = window.focus;
+        let (x, y) = ((i64::from(fx) + ox) as u32, (i64::from(fy) + oy) as u32);
+        let at_focus = (image.get(x, y) - reference.get(x, y)).abs();
+        eprintln!(
+            "{name}: {compared} pixels within {worst:e} of render's; focus error {at_focus:.4}, \
+             render's max {:.4}",
+            stats.max
+        );
+        if sees_whole_frame {
+            assert!(
+                (f64::from(at_focus) - stats.max).abs() <= 1e-3,
+                "{name}: the magnifier is on a pixel off by {at_focus}, render's worst is {}",
+                stats.max
+            );
+        }
+        // The whole pane at ×1, too.
+        harness.state_mut().settings.camera.magnify = 1;
+        settle(&mut harness);
+        let app = harness.state();
+        let window = app.magnified_window().expect("laid out");
+        let shown = app.pane_capture(0).expect("read back at rest");
+        let (compared, worst) = pane_vs_frame(&shown, window, (ox, oy), image);
+        eprintln!("{name} at ×1: {compared} pixels within {worst:e} of render's");
+        let frame_pixels = (image.width * image.height) as usize;
+        let enough = if sees_whole_frame {
+            frame_pixels
+        } else {
+            100_000
+        };
+        assert!(
+            compared >= enough && worst <= 1e-3,
+            "{name} at ×1: {compared} pixels in common, off by {worst}"
+        );
+    }
+}
+
+/// A first start opens side by side, a method beside the reference, on the text at
+/// 12 px/em magnified ×8 on pane A's worst pixel — an artifact, not empty space.
+#[test]
+fn a_first_start_opens_magnified_on_an_artifact() {
+    let mut harness = harness(Settings::default());
+    harness.state_mut().open_as_on_a_first_start();
+    settle(&mut harness);
+    let app = harness.state();
+    assert_eq!(app.settings.layout, Layout::SideBySide);
+    assert!(matches!(&app.settings.panes[1].source,
+        PaneSource::Method { name, .. } if name == REFERENCE.name));
+    assert_eq!(app.settings.camera.size_px_per_em, 12.0);
+    let window = app.magnified_window().expect("laid out");
+    assert_eq!(window.factor, 8);
+    let (k, n, pixel, error) = artifact_status(&harness);
+    assert_eq!((k, pixel), (1, window.focus));
+    assert!(
+        n > 0 && error > 0.25,
+        "{n} pixels over 0.25, the worst off by {error}"
+    );
+    // The pane shows ink there: the text's edge, not background.
+    let shown = app.pane_capture(0).expect("read back at rest");
+    let inked = shown.data.iter().filter(|&&c| c > 0.0 && c < 1.0).count();
+    assert!(inked > 20, "{inked} edge pixels in the magnified window");
+}
+
+/// Shift+B blinks pane A on its own, a few times a second (the harness's clock moves
+/// 0.25 s a frame): over 3 s both renderings come up, each more than once; Shift+B
+/// again stops it, on A's own method.
+#[test]
+fn shift_b_blinks_pane_a_on_its_own_and_stops() {
+    let mut settings = Settings {
+        layout: Layout::SideBySide,
+        ..Settings::default()
+    };
+    settings.panes[0] = PaneSettings::method("winding");
+    settings.panes[1] = PaneSettings::method("bounds");
+    let mut harness = harness(settings);
+    settle(&mut harness);
+    let own = harness.state().pane_capture(0).expect("read back at rest");
+    let other = harness.state().pane_capture(1).expect("read back at rest");
+    let shows = |harness: &mut Harness<'static, Explorer>| {
+        harness.step();
+        let screen = harness.render().expect("the harness draws with wgpu");
+        let to_own = screen_vs_coverage(harness, &screen, 0, &own);
+        let to_other = screen_vs_coverage(harness, &screen, 0, &other);
+        match (to_own <= 1.5, to_other <= 1.5) {
+            (true, false) => "own",
+            (false, true) => "other",
+            _ => panic!("pane A shows neither rendering ({to_own}, {to_other} off)"),
+        }
+    };
+    harness.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::B);
+    let seen: Vec<&str> = (0..12).map(|_| shows(&mut harness)).collect();
+    let flips = seen.windows(2).filter(|w| w[0] != w[1]).count();
+    assert!(
+        seen.iter().filter(|s| **s == "own").count() >= 2
+            && seen.iter().filter(|s| **s == "other").count() >= 2
+            && flips >= 4,
+        "blinking on its own showed {seen:?}"
+    );
+    harness.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::B);
+    let after: Vec<&str> = (0..6).map(|_| shows(&mut harness)).collect();
+    assert!(
+        after.iter().all(|s| *s == "own"),
+        "stopped, it showed {after:?}"
+    );
 }

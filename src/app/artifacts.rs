@@ -27,6 +27,8 @@ pub struct Artifacts {
     scene_generation: u64,
     camera: Camera,
     pixels: Vec<PixelError>,
+    /// The worst pixel, over the threshold or not.
+    worst: PixelError,
     current: usize,
     /// Worked out anew with the pixel shown before still among them, at `current`.
     found_again: bool,
@@ -35,18 +37,39 @@ pub struct Artifacts {
 impl Explorer {
     /// Centres the magnifier on the worst pixel of the hovered pane (else pane A).
     pub(super) fn go_to_worst_pixel(&mut self) {
-        self.step_through_artifacts(None);
+        self.step_through_artifacts(None, self.hovered_pane());
+    }
+
+    /// Once the view has settled after `worst_pixel_pending` was set (a case loaded,
+    /// the first start): the magnifier on the worst pixel of the first visible pane
+    /// that shows a GPU method.
+    pub(super) fn go_to_worst_pixel_when_settled(&mut self) {
+        if !self.worst_pixel_pending || !self.view_settled() {
+            return;
+        }
+        self.worst_pixel_pending = false;
+        let gpu_pane = (0..self.settings.layout.panes()).find(|&i| {
+            matches!(&self.settings.panes[i].source,
+                PaneSource::Method { name, .. } if name != REFERENCE)
+        });
+        match gpu_pane {
+            Some(pane) => self.step_through_artifacts(None, pane),
+            None => self.set_status("no pane shows a GPU method to find the worst pixel of".into()),
+        }
     }
 
     /// Centres the magnifier on the next (`forward`) or previous pixel over the
     /// threshold, in descending error, wrapping round; from the worst when the list is
     /// not for this view.
     pub(super) fn step_artifact(&mut self, forward: bool) {
-        self.step_through_artifacts(Some(forward));
+        self.step_through_artifacts(Some(forward), self.hovered_pane());
     }
 
-    fn step_through_artifacts(&mut self, step: Option<bool>) {
-        let pane = self.view.hovered.map_or(0, |(index, _, _)| index);
+    fn hovered_pane(&self) -> usize {
+        self.view.hovered.map_or(0, |(index, _, _)| index)
+    }
+
+    fn step_through_artifacts(&mut self, step: Option<bool>, pane: usize) {
         let Some((width, height)) = self.view.pane_size else {
             return;
         };
@@ -68,13 +91,14 @@ impl Explorer {
             .map(|p| p.0);
         if !current {
             match self.find_artifacts(pane, &camera) {
-                Ok(pixels) => {
+                Ok((pixels, worst)) => {
                     let found = shown.and_then(|s| pixels.iter().position(|p| p.0 == s));
                     self.artifacts = Some(Artifacts {
                         pane,
                         source,
                         scene_generation: generation,
                         camera,
+                        worst,
                         current: found.unwrap_or(0),
                         found_again: found.is_some(),
                         pixels,
@@ -92,10 +116,20 @@ impl Explorer {
         };
         let n = artifacts.pixels.len();
         if n == 0 {
-            self.set_status(format!(
-                "pane {}: no pixel is off by more than {ARTIFACT_THRESHOLD}",
-                pane_letter(pane)
-            ));
+            // Nothing to step through; going to the worst still shows the worst there is.
+            let ((x, y), error) = artifacts.worst;
+            if step.is_some() || error == 0.0 {
+                self.set_status(format!(
+                    "pane {}: no pixel is off by more than {ARTIFACT_THRESHOLD}",
+                    pane_letter(pane)
+                ));
+            } else {
+                self.magnify_on((x, y));
+                self.set_status(format!(
+                    "worst pixel ({x}, {y}) error {error:.3}; none is off by more than \
+                     {ARTIFACT_THRESHOLD}"
+                ));
+            }
             return;
         }
         let continuing = current || artifacts.found_again;
@@ -109,18 +143,28 @@ impl Explorer {
             "worst pixel {} of {n}: ({x}, {y}) error {error:.3}",
             artifacts.current + 1
         );
+        self.magnify_on((x, y));
+        self.set_status(message);
+    }
+
+    /// Centres the magnifier on pixel (`x`, `y`), magnifying if it is not yet.
+    fn magnify_on(&mut self, (x, y): (u32, u32)) {
         let camera = &mut self.settings.camera;
         if camera.magnify == 1 {
             camera.magnify = ARTIFACT_MAGNIFY;
         }
         camera.focus = [f64::from(x) + 0.5, f64::from(y) + 0.5];
-        self.set_status(message);
     }
 
-    /// Pane `pane`'s pixels over the threshold at the ×1 `camera`, worst first: its
-    /// prepared method drawn into a frame of its own and read back as `render` does
-    /// (coverage over 1 taken down to the union's 1), against the CPU reference.
-    fn find_artifacts(&self, pane: usize, camera: &Camera) -> Result<Vec<PixelError>, String> {
+    /// Pane `pane`'s pixels over the threshold at the ×1 `camera`, worst first, and its
+    /// worst pixel: its prepared method drawn into a frame of its own and read back as
+    /// `render` does (coverage over 1 taken down to the union's 1), against the CPU
+    /// reference.
+    fn find_artifacts(
+        &self,
+        pane: usize,
+        camera: &Camera,
+    ) -> Result<(Vec<PixelError>, PixelError), String> {
         let Some((gpu, _)) = &self.gpu else {
             return Err("no wgpu device".into());
         };
@@ -142,6 +186,9 @@ impl Explorer {
                 .clamp_to_union()
         };
         let reference = reference::rasterize(scene, camera).map_err(|e| e.to_string())?;
-        metrics::pixels_over(&image, &reference, ARTIFACT_THRESHOLD).map_err(|e| e.to_string())
+        let over = metrics::pixels_over(&image, &reference, ARTIFACT_THRESHOLD)
+            .map_err(|e| e.to_string())?;
+        let stats = metrics::compare(&image, &reference).map_err(|e| e.to_string())?;
+        Ok((over, (stats.worst_pixel, stats.max)))
     }
 }

@@ -4,8 +4,8 @@
 
 use glam::{DMat2, DVec2};
 
-use super::settings::CameraSettings;
-use crate::camera::Camera;
+use super::settings::{CameraSettings, CaseFrame};
+use crate::camera::{Camera, Crop};
 use crate::geometry::project;
 use crate::magnify::{MAX_FACTOR, Window};
 use crate::scene::Scene;
@@ -36,7 +36,48 @@ impl CameraSettings {
         );
         camera.matrix = self.matrix();
         camera.tilt_deg = self.tilt_deg;
+        camera.world_offset = DVec2::from_array(self.world_offset);
+        camera.crop = self.case_frame.map(|f| Crop {
+            offset: DVec2::from_array(f.offset),
+            frame_width: f.width,
+            frame_height: f.height,
+        });
         camera
+    }
+
+    /// The settings that show `frame` (a named view's camera) in a `width`×`height`
+    /// pane, each pane pixel one of the frame's, the frame centred by whole pixels;
+    /// None when its matrix is not a rotation after a skew (as every named view's is).
+    pub fn of_frame(frame: &Camera, width: u32, height: u32) -> Option<CameraSettings> {
+        // [a b; c d] = R(θ)·[1 k; 0 1]: the first column is R's, of length 1.
+        let m = frame.matrix;
+        let first = m.x_axis;
+        let rotation_deg = first.y.atan2(first.x).to_degrees();
+        let (sin, cos) = rotation_deg.to_radians().sin_cos();
+        let unturned = Camera::matrix_from_rows(cos, sin, -sin, cos) * m.y_axis;
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * (1.0 + b.abs());
+        if !close(first.length(), 1.0) || !close(unturned.y, 1.0) {
+            return None;
+        }
+        let offset = ((DVec2::new(f64::from(frame.width), f64::from(frame.height))
+            - DVec2::new(f64::from(width), f64::from(height)))
+            / 2.0)
+            .floor();
+        let settings = CameraSettings {
+            size_px_per_em: frame.size_px_per_em,
+            origin: (frame.origin - offset).to_array(),
+            rotation_deg,
+            skew: unturned.x,
+            tilt_deg: frame.tilt_deg,
+            world_offset: frame.world_offset.to_array(),
+            case_frame: Some(CaseFrame {
+                width: frame.width,
+                height: frame.height,
+                offset: offset.to_array(),
+            }),
+            ..CameraSettings::default()
+        };
+        Some(settings)
     }
 
     /// The camera a pane of `width`×`height` pixels draws, and the window of its ×1
@@ -127,8 +168,8 @@ impl CameraSettings {
         self.keeping(anchor, units_per_em, |c| c.skew = skew);
     }
 
-    /// Back to no rotation, skew or tilt, the size kept, the text's top-left corner at
-    /// the margin.
+    /// Back to no rotation, skew, tilt or world offset (and out of a named view's
+    /// frame), the size kept, the text's top-left corner at the margin.
     pub fn reset(&mut self, scene: &Scene) {
         *self = CameraSettings {
             size_px_per_em: self.size_px_per_em,
@@ -220,5 +261,51 @@ mod tests {
         assert_eq!(c.size_px_per_em, MAX_SIZE_PX_PER_EM);
         c.zoom(1e-12, DVec2::ZERO, 1000.0);
         assert_eq!(c.size_px_per_em, MIN_SIZE_PX_PER_EM);
+    }
+
+    /// Every named view placed in a pane: each pane pixel sees what the frame's pixel
+    /// `offset` further on sees — under skew, rotation, tilt and a 1e6 px world offset —
+    /// magnified too; and the frame is centred by whole pixels.
+    #[test]
+    fn a_named_view_in_a_pane_keeps_its_frame_pixels() {
+        for view in crate::named_views::all() {
+            let (scene, frame) = crate::named_views::build(view.name).unwrap();
+            for (w, h) in [(431, 617), (frame.width, frame.height), (40, 30)] {
+                let c = CameraSettings::of_frame(&frame, w, h)
+                    .unwrap_or_else(|| panic!("{}: not a rotation after a skew", view.name));
+                let offset = DVec2::from_array(c.case_frame.unwrap().offset);
+                assert_eq!(offset, offset.floor(), "{}", view.name);
+                assert!((offset.x - (f64::from(frame.width) - f64::from(w)) / 2.0).abs() < 1.0);
+                let mut magnified = c;
+                magnified.magnify = 8;
+                magnified.focus = [f64::from(w) / 3.0, f64::from(h) / 2.0];
+                let (window_camera, window) = magnified.pane_camera(w, h);
+                let shift = DVec2::new(f64::from(window.x0), f64::from(window.y0));
+                for instance in scene.instances.iter().take(50) {
+                    let upem = scene.units_per_em;
+                    let in_frame = frame.glyph_to_image(upem, instance.position);
+                    let in_pane = c.camera(w, h).glyph_to_image(upem, instance.position);
+                    let in_window = window_camera.glyph_to_image(upem, instance.position);
+                    for p in [
+                        DVec2::ZERO,
+                        DVec2::new(500.0, -300.0),
+                        DVec2::new(-40.0, 700.0),
+                    ] {
+                        let expected = project(&in_frame, p) - offset;
+                        let tolerance = 1e-9 * (1.0 + frame.world_offset.length());
+                        for (got, what) in [
+                            (project(&in_pane, p), "pane"),
+                            (project(&in_window, p) + shift, "window"),
+                        ] {
+                            assert!(
+                                (got - expected).length() <= tolerance,
+                                "{} in a {w}×{h} {what}: {got} against {expected}",
+                                view.name
+                            );
+                        }
+                    }
+                }
+            }
+        }
     }
 }

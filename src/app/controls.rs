@@ -14,7 +14,10 @@ use crate::magnify::MAX_FACTOR;
 
 impl Explorer {
     pub(super) fn controls(&mut self, ui: &mut egui::Ui) {
-        ui.heading("Scene");
+        ui.horizontal(|ui| {
+            ui.heading("Scene");
+            self.cases_menu(ui);
+        });
         self.scene_controls(ui);
         ui.separator();
         ui.heading("Camera");
@@ -67,6 +70,7 @@ impl Explorer {
     }
 
     fn scene_controls(&mut self, ui: &mut egui::Ui) {
+        self.case_controls(ui);
         let scene = &mut self.settings.scene;
         ui.horizontal(|ui| {
             let label = ui.label("font");

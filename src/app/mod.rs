@@ -11,6 +11,7 @@
 //! - `gpu_view`: egui_wgpu paint callbacks drawing each pane's offscreen target.
 //! - `display`: what a pane shows of a coverage value (blending, stem darkening).
 //! - `analysis`: the reference and the error figures, on a background thread.
+//! - `cases`: the Cases menu, loading each named hard case and bench scene.
 //! - `artifacts`: a pane's pixels off from the reference, worst first, to step through.
 //! - `blink`: pane A flipped in place to pane B's method or the reference.
 //! - `sweep`: speed against error over every parameter combination, plotted.
@@ -21,6 +22,7 @@ mod analysis;
 mod artifacts;
 mod blink;
 mod camera_control;
+mod cases;
 mod controls;
 pub mod display;
 mod font_dialog;
@@ -100,6 +102,9 @@ pub struct Explorer {
     /// The pixels the magnifier was last centred on by "worst pixel", to step on from.
     artifacts: Option<artifacts::Artifacts>,
     blink: blink::Blink,
+    cases: cases::Cases,
+    /// Go to the worst pixel once the view settles (see `go_to_worst_pixel_when_settled`).
+    worst_pixel_pending: bool,
     /// Each pane's heat-scale legend's own uniform and bind group.
     legends: Vec<gpu_view::SharedSurface>,
     /// Messages from screenshots and file drops; shared with the screenshot callback.
@@ -114,15 +119,24 @@ impl Explorer {
         let saved = cc
             .storage
             .and_then(|s| eframe::get_value::<Settings>(s, eframe::APP_KEY));
-        // A first start (somewhere to keep settings, none kept yet) frames the text.
+        // A first start (somewhere to keep settings, none kept yet) opens on an artifact.
         let first_start = cc.storage.is_some() && saved.is_none();
         let mut app = Explorer::with_render_state(
             &cc.egui_ctx,
             cc.wgpu_render_state.as_ref(),
             saved.unwrap_or_default(),
         );
-        app.framing.pending = first_start;
+        if first_start {
+            app.open_as_on_a_first_start();
+        }
         app
+    }
+
+    /// What a first start shows: the default side-by-side (a method beside the
+    /// reference) with the text small, magnified on pane A's worst pixel
+    /// ([`view::OPENING`]).
+    pub fn open_as_on_a_first_start(&mut self) {
+        self.framing.opening = true;
     }
 
     /// The app on any egui context and wgpu render state (eframe's, a test harness's, or
@@ -155,6 +169,8 @@ impl Explorer {
             help_open: false,
             artifacts: None,
             blink: blink::Blink::default(),
+            cases: cases::Cases::default(),
+            worst_pixel_pending: false,
             legends: (0..PANES).map(|_| gpu_view::PaneSurface::new()).collect(),
             status: Arc::new(Mutex::new(String::new())),
             frame_intervals: VecDeque::new(),
@@ -218,9 +234,19 @@ impl Explorer {
             .flatten()
     }
 
+    /// Whether the view is at rest: the reference and every pane's numbers worked out
+    /// for it, and nothing it is still to do by itself (framing the text, placing a
+    /// case, going to the worst pixel).
+    pub fn settled(&self) -> bool {
+        let placing = self.framing.pending || self.framing.opening;
+        self.view_settled()
+            && !(placing && self.scene.scene().is_some())
+            && !self.worst_pixel_pending
+    }
+
     /// Whether the reference and every pane's numbers are worked out for this view, and
     /// the view is what the settings say (nothing changed since it was laid out).
-    pub fn settled(&self) -> bool {
+    fn view_settled(&self) -> bool {
         let up_to_date = self.scene.is_built_for(&self.settings.scene)
             && self.view.camera.is_some_and(|c| {
                 self.view
@@ -293,6 +319,7 @@ impl Explorer {
         self.take_dropped_files(&ctx);
         self.shortcuts(&ctx);
         self.tick_blink(&ctx);
+        self.leave_case_on_scene_change();
         self.scene.sync(&self.settings.scene);
         egui::Panel::left("controls")
             .resizable(true)
@@ -306,6 +333,7 @@ impl Explorer {
             .show(ui, |ui| self.view(ui));
         self.windows(&ctx);
         self.settle(&ctx);
+        self.go_to_worst_pixel_when_settled();
         if self.settings.continuous {
             ctx.request_repaint();
         }

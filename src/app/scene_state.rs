@@ -5,7 +5,9 @@
 use std::sync::Arc;
 
 use super::settings::{FontChoice, SceneSettings};
+use crate::camera::Camera;
 use crate::font::{Font, SHIPPED_FONTS, axis_tag};
+use crate::named_views;
 use crate::scene::Scene;
 
 /// The scene built from [`SceneSettings`], rebuilt only when they change.
@@ -14,6 +16,8 @@ pub struct SceneState {
     built_for: Option<SceneSettings>,
     font: Option<(FontChoice, Result<Font, String>)>,
     scene: Option<Result<Arc<Scene>, String>>,
+    /// A named view's own camera, when the scene is one.
+    case_camera: Option<Camera>,
     generation: u64,
 }
 
@@ -32,8 +36,22 @@ impl SceneState {
             };
             self.font = Some((wanted.font.clone(), font));
         }
+        self.case_camera = None;
+        if let Some(name) = &wanted.case {
+            let built = named_views::build(name).map_err(|e| e.to_string());
+            self.scene = Some(built.map(|(scene, camera)| {
+                self.case_camera = Some(camera);
+                Arc::new(scene)
+            }));
+            return;
+        }
         let font = self.font.as_ref().expect("set above").1.clone();
         self.scene = Some(font.and_then(|font| build_scene(&font, wanted)));
+    }
+
+    /// The camera of the named view the scene is, if it is one.
+    pub fn case_camera(&self) -> Option<&Camera> {
+        self.case_camera.as_ref()
     }
 
     pub fn is_built_for(&self, wanted: &SceneSettings) -> bool {

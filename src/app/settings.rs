@@ -43,10 +43,13 @@ impl Default for Settings {
             scene: SceneSettings::default(),
             camera: CameraSettings::default(),
             layout: Layout::SideBySide,
+            // Pane A is a method with visible artifacts at small sizes (the first start
+            // opens on one), beside the reference; then the near-exact winding, and A's
+            // signed difference from the reference.
             panes: [
-                PaneSettings::method("winding"),
-                PaneSettings::method(registry::REFERENCE.name),
                 PaneSettings::method("sdf-cells"),
+                PaneSettings::method(registry::REFERENCE.name),
+                PaneSettings::method("winding"),
                 PaneSettings {
                     source: PaneSource::Difference {
                         first: 0,
@@ -77,6 +80,9 @@ pub struct SceneSettings {
     /// Glyph mode: one glyph, by character or `#id`, instead of the text.
     pub glyph_mode: bool,
     pub glyph: String,
+    /// A named view (a hard case or a bench scene, `crate::named_views`) shown instead
+    /// of the font, text and glyph above.
+    pub case: Option<String>,
 }
 
 impl Default for SceneSettings {
@@ -87,6 +93,7 @@ impl Default for SceneSettings {
             variations: Vec::new(),
             glyph_mode: false,
             glyph: "g".into(),
+            case: None,
         }
     }
 }
@@ -130,6 +137,22 @@ pub struct CameraSettings {
     pub magnify: u32,
     /// The pane pixel (at ×1) the magnified window is centred on.
     pub focus: [f64; 2],
+    /// Added to both the scene's and the view's world position, pixels: a named view's
+    /// far-from-the-origin placement.
+    pub world_offset: [f64; 2],
+    /// The frame of a named view the pane is a window of, if one is loaded.
+    pub case_frame: Option<CaseFrame>,
+}
+
+/// A named view's frame, which the pane shows a window of: its size (the tilt turns
+/// about the frame's centre, at a focal length set by its larger side) and the frame
+/// pixel at the pane's (0, 0). With it, each pane pixel is the pixel `glyphscope render
+/// --case` draws there.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CaseFrame {
+    pub width: u32,
+    pub height: u32,
+    pub offset: [f64; 2],
 }
 
 impl Default for CameraSettings {
@@ -142,6 +165,8 @@ impl Default for CameraSettings {
             tilt_deg: 0.0,
             magnify: 1,
             focus: [0.0, 0.0],
+            world_offset: [0.0, 0.0],
+            case_frame: None,
         }
     }
 }
@@ -261,6 +286,18 @@ pub(super) fn sanitize(settings: &mut Settings) {
     c.magnify = c.magnify.clamp(1, crate::magnify::MAX_FACTOR);
     if !c.focus.iter().all(|v| v.is_finite()) {
         c.focus = [0.0, 0.0];
+    }
+    if !c.world_offset.iter().all(|v| v.is_finite()) {
+        c.world_offset = [0.0, 0.0];
+    }
+    let side = 1..=crate::camera::MAX_IMAGE_SIDE;
+    if c.case_frame.is_some_and(|f| {
+        let usable = side.contains(&f.width)
+            && side.contains(&f.height)
+            && f.offset.iter().all(|v| v.is_finite());
+        !usable
+    }) {
+        c.case_frame = None;
     }
 }
 

@@ -28,14 +28,21 @@ const WHEEL_ZOOM_PER_POINT: f64 = 0.004;
 /// Seconds the view must stay still before the reference and the errors are worked out.
 const REST_SECONDS: f64 = 0.25;
 
-/// When the view fits the text to the panes by itself: on a first start, and when the
-/// layout or the text changes — the text once its field is left, not at each key.
+/// When the view fits the text to the panes by itself: when the layout or the text
+/// changes — the text once its field is left, not at each key — and on a first start,
+/// which opens on small text magnified on an artifact instead (see [`OPENING`]).
 #[derive(Default)]
 pub struct Framing {
     pub pending: bool,
+    /// The first start's opening view is still to be placed.
+    pub opening: bool,
     layout: Option<Layout>,
     text: Option<String>,
 }
+
+/// The first start's view: the text at a size where methods differ visibly
+/// (px/em), its top-left at the margin, magnified (×N) on pane A's worst pixel.
+pub const OPENING: (f64, u32) = (12.0, 8);
 
 /// What the view shows; when it stops changing, the view is at rest.
 #[derive(Clone, Debug, PartialEq)]
@@ -122,7 +129,8 @@ impl Explorer {
         }
     }
 
-    /// Fits the text to a `pane` of pixels when [`Framing`] says so.
+    /// Fits the text (or places a loaded case) in a `pane` of pixels when [`Framing`]
+    /// says so.
     fn frame_text(&mut self, ui: &egui::Ui, pane: (u32, u32)) {
         let framing = &mut self.framing;
         let layout = self.settings.layout;
@@ -136,12 +144,20 @@ impl Explorer {
         {
             framing.pending = true;
         }
-        if framing.pending
+        if (framing.pending || framing.opening)
             && self.scene.is_built_for(&self.settings.scene)
-            && let Some(scene) = self.scene.scene()
+            && let Some(scene) = self.scene.scene().cloned()
         {
-            let size = DVec2::new(f64::from(pane.0), f64::from(pane.1));
-            self.settings.camera.fit(scene, size);
+            if std::mem::take(&mut self.framing.opening) {
+                let camera = &mut self.settings.camera;
+                camera.size_px_per_em = OPENING.0;
+                camera.reset(&scene);
+                camera.magnify = OPENING.1;
+                self.worst_pixel_pending = true;
+            } else if !self.place_case(pane) {
+                let size = DVec2::new(f64::from(pane.0), f64::from(pane.1));
+                self.settings.camera.fit(&scene, size);
+            }
             self.framing.pending = false;
         }
     }
