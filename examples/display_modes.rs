@@ -1,10 +1,11 @@
 //! The same 10 px text in each display mode, stacked top to bottom (linear, sRGB blend,
-//! gamma-corrected, linear with stem darkening), written to screenshots/display-modes.png.
+//! gamma-corrected, linear with FreeType's stem darkening, linear with HarfBuzz GPU's),
+//! written to screenshots/display-modes.png.
 //! Run: `cargo run --release --example display_modes`.
 
-use glyphscope::app::display::DisplayMode;
+use glyphscope::app::display::{Darkening, DisplayMode};
 use glyphscope::app::headless::Headless;
-use glyphscope::app::screenshots::photograph;
+use glyphscope::app::screenshots::{Then, photograph};
 use glyphscope::app::settings::{Layout, PaneSettings, Settings};
 
 const WIDTH: u32 = 900;
@@ -25,16 +26,17 @@ fn main() {
 fn run() -> Result<(), Box<dyn std::error::Error>> {
     let mut screen = Headless::new(WIDTH, HEIGHT)?;
     let mut strips = Vec::new();
-    for (display, stem_darkening) in [
-        (DisplayMode::Linear, false),
-        (DisplayMode::Srgb, false),
-        (DisplayMode::Gamma, false),
-        (DisplayMode::Linear, true),
+    for (display, darkening) in [
+        (DisplayMode::Linear, Darkening::Off),
+        (DisplayMode::Srgb, Darkening::Off),
+        (DisplayMode::Gamma, Darkening::Off),
+        (DisplayMode::Linear, Darkening::FreeType),
+        (DisplayMode::Linear, Darkening::HarfBuzzGpu),
     ] {
         let mut settings = Settings {
             layout: Layout::Single,
             display,
-            stem_darkening,
+            darkening,
             ..Settings::default()
         };
         settings.panes[0] = PaneSettings::method("reference");
@@ -42,7 +44,7 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         settings.camera.size_px_per_em = 10.0;
         // Below the pane's title and notes.
         settings.camera.origin = [12.0, 70.0];
-        let shot = photograph(&mut screen, settings, false)?;
+        let shot = photograph(&mut screen, settings, Then::Settle)?;
         // The text's line in the pane (right of the side panel), each pixel drawn 3×3.
         let line = image::imageops::crop_imm(&shot, PANE_LEFT, LINE_TOP, STRIP.0, STRIP.1);
         let (w, h) = (STRIP.0 * ZOOM, STRIP.1 * ZOOM);

@@ -252,11 +252,7 @@ fn write_values(
     } else {
         Rgb([255, 255, 255])
     };
-    let mut lines = vec![short_number(f64::from(value), false)];
-    if let Some(r) = reference {
-        lines.push(short_number(f64::from(value) - f64::from(r), true));
-    }
-    for (k, line) in lines.iter().enumerate() {
+    for (k, line) in block_labels(value, reference).iter().enumerate() {
         let top = y0 + scale + k as u32 * 6 * scale + k as u32 * scale;
         let mut left = x0 + 1 + scale / 2;
         for c in line.chars() {
@@ -264,6 +260,16 @@ fn write_values(
             left += 4 * scale;
         }
     }
+}
+
+/// What a magnified block writes about its pixel: its coverage, then its signed error
+/// against `reference` when there is one (the explorer writes the same).
+pub fn block_labels(value: f32, reference: Option<f32>) -> Vec<String> {
+    let mut lines = vec![short_number(f64::from(value), false)];
+    if let Some(r) = reference {
+        lines.push(short_number(f64::from(value) - f64::from(r), true));
+    }
+    lines
 }
 
 /// At most four characters: ".53", "1.00", "-.05", "+.12", "nan", "inf"; a leading

@@ -783,7 +783,7 @@ fn a_new_layout_or_text_is_framed_in_the_panes() {
 /// panes keep their size.
 #[test]
 fn display_modes_change_the_picture_but_not_the_error_figures() {
-    use glyphscope::app::display::DisplayMode;
+    use glyphscope::app::display::{Darkening, DisplayMode};
     let mut harness = harness(Settings {
         // Small enough that FreeType's curve darkens (0.14 px an edge at 12 ppem).
         camera: glyphscope::app::settings::CameraSettings {
@@ -794,20 +794,18 @@ fn display_modes_change_the_picture_but_not_the_error_figures() {
     });
     let linear_screen = settle(&mut harness);
     let linear_error = harness.state().pane_error(0).expect("measured at rest");
-    for (display, stem_darkening) in [
-        (DisplayMode::Srgb, false),
-        (DisplayMode::Gamma, false),
-        (DisplayMode::Linear, true),
+    for (display, darkening) in [
+        (DisplayMode::Srgb, Darkening::Off),
+        (DisplayMode::Gamma, Darkening::Off),
+        (DisplayMode::Linear, Darkening::FreeType),
+        (DisplayMode::Linear, Darkening::HarfBuzzGpu),
     ] {
         let settings = &mut harness.state_mut().settings;
         settings.display = display;
-        settings.stem_darkening = stem_darkening;
+        settings.darkening = darkening;
         let screen = settle(&mut harness);
         let error = harness.state().pane_error(0).expect("measured at rest");
-        assert_eq!(
-            error, linear_error,
-            "{display:?}, darkening {stem_darkening}"
-        );
+        assert_eq!(error, linear_error, "{display:?}, {darkening:?}");
         let changed = linear_screen
             .pixels()
             .zip(screen.pixels())
@@ -815,9 +813,25 @@ fn display_modes_change_the_picture_but_not_the_error_figures() {
             .count();
         assert!(
             changed > 1000,
-            "{display:?}, darkening {stem_darkening}: {changed} pixels changed"
+            "{display:?}, {darkening:?}: {changed} pixels changed"
         );
     }
+}
+
+/// Every text egui painted in the last frame.
+fn painted_texts(harness: &Harness<'static, Explorer>) -> Vec<String> {
+    fn collect(shape: &egui::Shape, out: &mut Vec<String>) {
+        match shape {
+            egui::Shape::Text(text) => out.push(text.galley.text().to_owned()),
+            egui::Shape::Vec(shapes) => shapes.iter().for_each(|s| collect(s, out)),
+            _ => {}
+        }
+    }
+    let mut out = Vec::new();
+    for clipped in &harness.output().shapes {
+        collect(&clipped.shape, &mut out);
+    }
+    out
 }
 
 /// The largest difference between a pane's read-back `shown` (the pixels of `window`)
@@ -853,9 +867,14 @@ fn pane_vs_frame(
 /// whose error is the largest `render` reports, when the pane sees the whole frame.
 #[test]
 fn a_case_from_the_menu_reproduces_render_and_opens_on_its_worst_pixel() {
-    // sdf-cells: a method with real errors on these views, so the worst pixel is one.
+    // sdf-cells: a method with real errors on these views, so the worst pixel is one;
+    // pane B its error overlay, which writes each pixel's error under its coverage.
     let mut settings = Settings::default();
     settings.panes[0] = PaneSettings::method("sdf-cells");
+    settings.panes[1] = PaneSettings {
+        overlay: PaneOverlay::Error,
+        ..PaneSettings::method("sdf-cells")
+    };
     let mut harness = harness(settings);
     settle(&mut harness);
     for name in ["strong-skew", "world-offset-1e6", "rotated"] {
@@ -925,6 +944,18 @@ fn a_case_from_the_menu_reproduces_render_and_opens_on_its_worst_pixel() {
                 stats.max
             );
         }
+        // The focus pixel's error, as render's numbers give it, is written on the screen
+        // (within the 5e-4 the two renderings may differ by, which may round either way).
+        let written = painted_texts(&harness);
+        let error = image.get(x, y) - reference.get(x, y);
+        let labels: Vec<String> = [-5e-4, 0.0, 5e-4]
+            .iter()
+            .map(|d| glyphscope::magnify::block_labels(0.0, Some(-(error + d)))[1].clone())
+            .collect();
+        assert!(
+            labels.iter().any(|l| written.contains(l)),
+            "{name}: none of {labels:?} is written over the panes"
+        );
         // The whole pane at ×1, too.
         harness.state_mut().settings.camera.magnify = 1;
         settle(&mut harness);

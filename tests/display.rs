@@ -5,11 +5,12 @@ mod common;
 
 use common::run_probe;
 use glyphscope::app::display::{
-    DisplayMode, composite_wgsl, display_color, freetype_edge_darkening,
+    CoverageAdjust, Darkening, DisplayMode, composite_wgsl, display_color,
 };
 use glyphscope::gpu::GpuContext;
 
-/// Inputs: coverage, then text rgb, background rgb, mode, darkening; output rgb.
+/// Inputs: coverage, then text rgb, background rgb, mode, edge darkening, exponent;
+/// output rgb.
 fn shader_display_color(gpu: &GpuContext, inputs: &[[f32; 12]]) -> Vec<[f32; 4]> {
     let probe = "
 struct ProbeInput { a: vec4<f32>, b: vec4<f32>, c: vec4<f32> }
@@ -19,7 +20,7 @@ struct ProbeInput { a: vec4<f32>, b: vec4<f32>, c: vec4<f32> }
 fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
     if id.x < arrayLength(&probe_inputs) {
         let v = probe_inputs[id.x];
-        let rgb = display_color(v.a.x, v.a.yzw, v.b.xyz, u32(v.b.w), v.c.x);
+        let rgb = display_color(v.a.x, v.a.yzw, v.b.xyz, u32(v.b.w), v.c.x, v.c.y);
         probe_outputs[id.x] = vec4<f32>(rgb, 0.0);
     }
 }
@@ -37,7 +38,8 @@ fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
     .collect()
 }
 
-/// Every mode, with and without darkening, light on dark, dark on light and coloured,
+/// Every mode, under each darkening (at 10 ppem, where both act), light on dark, dark on
+/// light and coloured,
 /// over coverage 0..=1 in 1/64 steps: the shader within 1e-4 of the mirror (f32 `pow`
 /// on the GPU may differ by a few ulps; a wrong formula moves values by 1e-2 or more).
 #[test]
@@ -50,22 +52,25 @@ fn the_shader_shows_coverage_as_its_cpu_mirror_does() {
     ];
     let mut cases = Vec::new();
     for mode in DisplayMode::ALL {
-        for darkening in [0.0, freetype_edge_darkening(10.0)] {
+        for darkening in Darkening::ALL {
             for (text, background) in colours {
+                let adjust = darkening.adjust(10.0, text);
                 for k in 0..=64 {
-                    cases.push((k as f32 / 64.0, text, background, mode, darkening));
+                    cases.push((k as f32 / 64.0, text, background, mode, adjust));
                 }
             }
         }
     }
     let inputs: Vec<[f32; 12]> = cases
         .iter()
-        .map(|&(c, t, b, mode, d)| {
-            let index = mode.shader_index() as f32;
-            [
-                c, t[0], t[1], t[2], b[0], b[1], b[2], index, d, 0.0, 0.0, 0.0,
-            ]
-        })
+        .map(
+            |&(c, t, b, mode, d): &(f32, _, _, DisplayMode, CoverageAdjust)| {
+                let index = mode.shader_index() as f32;
+                [
+                    c, t[0], t[1], t[2], b[0], b[1], b[2], index, d.edge_px, d.exponent, 0.0, 0.0,
+                ]
+            },
+        )
         .collect();
     let shown = shader_display_color(&gpu, &inputs);
     for (case, got) in cases.iter().zip(&shown) {

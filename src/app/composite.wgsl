@@ -19,9 +19,11 @@ struct Composite {
     difference_scale: f32,
     // Framebuffer pixels per texel side: the magnifier draws each texel as a block.
     block: f32,
-    // Mode 0 only: `DisplayMode::shader_index`, and the stem darkening in pixels per edge.
+    // Mode 0 only: `DisplayMode::shader_index`, and the stem darkening
+    // (`display::CoverageAdjust`): pixels added per edge, then the exponent.
     display: u32,
     edge_darkening: f32,
+    darkening_exponent: f32,
 }
 
 @group(0) @binding(0) var<uniform> composite: Composite;
@@ -51,10 +53,10 @@ fn luminance(rgb: vec3<f32>) -> f32 {
 
 // What a pixel of `coverage` shows, sRGB-encoded; `display::display_color` in Rust is its
 // mirror and documents each mode. Display only: error figures never see this.
-fn display_color(coverage: f32, text: vec3<f32>, background: vec3<f32>, display: u32, edge_darkening: f32) -> vec3<f32> {
+fn display_color(coverage: f32, text: vec3<f32>, background: vec3<f32>, display: u32, edge_darkening: f32, darkening_exponent: f32) -> vec3<f32> {
     var c = clamp(coverage, 0.0, 1.0);
-    if c > 0.0 {
-        c = min(c + edge_darkening, 1.0);
+    if c > 0.0 && c < 1.0 {
+        c = pow(min(c + edge_darkening, 1.0), darkening_exponent);
     }
     if display == 1u {
         return mix(srgb_encode(background), srgb_encode(text), c);
@@ -99,5 +101,5 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
         let e = clamp((clamp(a.a, 0.0, 1.0) - clamp(b.a, 0.0, 1.0)) / composite.difference_scale, -1.0, 1.0);
         return as_stored(vec3<f32>(max(e, 0.0), 0.0, max(-e, 0.0)));
     }
-    return as_stored(display_color(a.a, composite.text.rgb, composite.background.rgb, composite.display, composite.edge_darkening));
+    return as_stored(display_color(a.a, composite.text.rgb, composite.background.rgb, composite.display, composite.edge_darkening, composite.darkening_exponent));
 }

@@ -5,7 +5,7 @@ use eframe::egui;
 
 use super::Explorer;
 use super::camera_control::{MAX_SIZE_PX_PER_EM, MAX_TILT_DEG, MIN_SIZE_PX_PER_EM};
-use super::display::DisplayMode;
+use super::display::{Darkening, DisplayMode};
 use super::panes::{REFERENCE, pane_controls, pane_letter};
 use super::settings::{FontChoice, Layout, PaneSource};
 use super::shortcuts::{Action, SHORTCUTS, key_name};
@@ -261,8 +261,19 @@ impl Explorer {
                 })
                 .response
                 .on_hover_text("how coverage is shown; error figures stay linear coverage");
-            ui.checkbox(&mut settings.stem_darkening, "darken")
-                .on_hover_text("FreeType's CFF stem darkening, approximated at display time");
+            egui::ComboBox::from_id_salt("darkening")
+                .width(74.0)
+                .selected_text(settings.darkening.short_label())
+                .show_ui(ui, |ui| {
+                    for darkening in Darkening::ALL {
+                        ui.selectable_value(&mut settings.darkening, darkening, darkening.label());
+                    }
+                })
+                .response
+                .on_hover_text(
+                    "stem darkening at display time: FreeType's CFF curve (approximated) or \
+                     HarfBuzz's GPU formula; error figures stay linear coverage",
+                );
         });
         ui.add(
             egui::Slider::new(&mut settings.difference_scale, 0.01..=1.0)

@@ -11,7 +11,7 @@ use std::sync::{Arc, Mutex, MutexGuard};
 use eframe::egui;
 use egui_wgpu::wgpu;
 
-use super::display::DisplayMode;
+use super::display::{CoverageAdjust, DisplayMode};
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
 use crate::gpu::timing::{Timestamps, intervals_ms};
@@ -47,8 +47,9 @@ struct CompositeUniform {
     block: f32,
     display: u32,
     edge_darkening: f32,
+    darkening_exponent: f32,
     // WGSL rounds the struct up to its 16-byte alignment.
-    padding: [f32; 2],
+    padding: f32,
 }
 
 /// The pipeline that draws panes, for egui's framebuffer format.
@@ -293,8 +294,8 @@ pub struct PanePaint {
     pub difference_scale: f32,
     /// How coverage is shown (`CompositeMode::Coverage` only).
     pub display: DisplayMode,
-    /// Stem darkening per edge in pixels, 0 for none (`CompositeMode::Coverage` only).
-    pub edge_darkening: f32,
+    /// Stem darkening (`CompositeMode::Coverage` only).
+    pub darkening: CoverageAdjust,
     /// Each texel drawn as a block of this many pixels a side (the magnifier).
     pub block: u32,
     /// The pane, in points.
@@ -345,8 +346,9 @@ impl egui_wgpu::CallbackTrait for PanePaint {
             difference_scale: self.difference_scale,
             block: self.block as f32,
             display: self.display.shader_index(),
-            edge_darkening: self.edge_darkening,
-            padding: [0.0; 2],
+            edge_darkening: self.darkening.edge_px,
+            darkening_exponent: self.darkening.exponent,
+            padding: 0.0,
         };
         let buffer = surface.uniform.get_or_insert_with(|| {
             gpu.device.create_buffer(&wgpu::BufferDescriptor {

@@ -1,5 +1,6 @@
 //! `glyphscope screenshots`: the README's pictures of the explorer, made headlessly by
-//! the real app — the methods side by side, each debug overlay, the speed-vs-error plot.
+//! the real app — what a first start shows, a case under the magnifier, the methods side
+//! by side, each debug overlay, the speed-vs-error plot.
 
 use std::path::Path;
 use std::time::{Duration, Instant};
@@ -25,9 +26,9 @@ pub fn write_all(dir: &Path) -> Result<Vec<String>, Error> {
     let mut screen = Headless::new(WIDTH, HEIGHT)?;
     let catalog = Catalog::discover();
     let mut written = Vec::new();
-    let mut save = |name: String, settings: Settings, sweep: bool| -> Result<(), Error> {
+    let mut save = |name: String, settings: Settings, then: Then| -> Result<(), Error> {
         let path = dir.join(&name);
-        let image = photograph(&mut screen, settings, sweep)?;
+        let image = photograph(&mut screen, settings, then)?;
         image
             .save(&path)
             .map_err(|e| Error::Output(format!("cannot write '{}': {e}", path.display())))?;
@@ -36,9 +37,19 @@ pub fn write_all(dir: &Path) -> Result<Vec<String>, Error> {
         Ok(())
     };
     save(
+        "app-first-start.png".into(),
+        Settings::default(),
+        Then::OpenAsOnAFirstStart,
+    )?;
+    save(
+        "app-microscope.png".into(),
+        microscope(),
+        Then::LoadCase(MICROSCOPE_CASE),
+    )?;
+    save(
         "app-methods.png".into(),
         methods_side_by_side(&catalog),
-        false,
+        Then::Settle,
     )?;
     for overlay in Overlay::ALL {
         let Some(method) = catalog
@@ -52,7 +63,7 @@ pub fn write_all(dir: &Path) -> Result<Vec<String>, Error> {
         save(
             format!("app-overlay-{}.png", overlay.name()),
             one_glyph(pane),
-            false,
+            Then::Settle,
         )?;
     }
     if let Some(method) = catalog.gpu_methods().find(|m| !is_diagnostic(m.name)) {
@@ -63,16 +74,48 @@ pub fn write_all(dir: &Path) -> Result<Vec<String>, Error> {
         settings.camera.origin = [16.0, 90.0];
         // Good methods err by little: a fine scale shows where.
         settings.difference_scale = 0.02;
-        save("app-overlay-error.png".into(), settings, false)?;
+        save("app-overlay-error.png".into(), settings, Then::Settle)?;
         let mut pane = PaneSettings::method(method.name);
         pane.outline = true;
-        save("app-overlay-outline.png".into(), one_glyph(pane), false)?;
+        save(
+            "app-overlay-outline.png".into(),
+            one_glyph(pane),
+            Then::Settle,
+        )?;
     }
     let mut settings = methods_side_by_side(&catalog);
     settings.layout = Layout::Single;
     settings.camera.size_px_per_em = 24.0;
-    save("app-sweep.png".into(), settings, true)?;
+    save("app-sweep.png".into(), settings, Then::Sweep)?;
     Ok(written)
+}
+
+/// What a screenshot waits for once the explorer has its settings.
+#[derive(Clone, Copy, Debug)]
+pub enum Then {
+    /// The view at rest, its numbers in.
+    Settle,
+    /// Then a speed-vs-error sweep run to its end.
+    Sweep,
+    /// What a first start shows (at rest, on the worst pixel).
+    OpenAsOnAFirstStart,
+    /// A case loaded from the Cases menu (at rest, on its worst pixel).
+    LoadCase(&'static str),
+}
+
+/// The case the README's first picture shows.
+const MICROSCOPE_CASE: &str = "strong-skew";
+
+/// sdf-cells beside its own error against the reference, for a loaded case: coverage
+/// and error written in each magnified pixel, the exact outline over both.
+fn microscope() -> Settings {
+    let mut settings = Settings::default();
+    settings.panes[0] = PaneSettings::method("sdf-cells");
+    settings.panes[1] = PaneSettings {
+        overlay: PaneOverlay::Error,
+        ..PaneSettings::method("sdf-cells")
+    };
+    settings
 }
 
 /// Whether `name` is a diagnostic (a check of the GPU path, not a way to draw text).
@@ -130,14 +173,20 @@ fn one_glyph(pane: PaneSettings) -> Settings {
     settings
 }
 
-/// Runs the explorer with `settings` until its numbers are in (and, if asked, a sweep has
-/// run), and returns the last frame.
+/// Runs the explorer with `settings`, does what `then` says, waits until its numbers are
+/// in, and returns the last frame.
 pub fn photograph(
     screen: &mut Headless,
     settings: Settings,
-    sweep: bool,
+    then: Then,
 ) -> Result<image::RgbaImage, Error> {
     let mut app: Explorer = screen.explorer(settings);
+    match then {
+        Then::OpenAsOnAFirstStart => app.open_as_on_a_first_start(),
+        Then::LoadCase(name) => app.load_case(name),
+        Then::Settle | Then::Sweep => {}
+    }
+    let sweep = matches!(then, Then::Sweep);
     let start = Instant::now();
     let mut frames = 0;
     let mut sweep_started = false;

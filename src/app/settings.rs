@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use serde::{Deserialize, Serialize};
 
 use super::camera_control::{MAX_SIZE_PX_PER_EM, MAX_TILT_DEG, MIN_SIZE_PX_PER_EM};
-use super::display::DisplayMode;
+use super::display::{Darkening, DisplayMode};
 use crate::font::SHIPPED_FONTS;
 use crate::methods::registry;
 
@@ -29,8 +29,9 @@ pub struct Settings {
     pub background: [u8; 3],
     /// How panes show coverage; display only, the error figures never change with it.
     pub display: DisplayMode,
-    /// FreeType's stem darkening, approximated at display time (`display::display_color`).
-    pub stem_darkening: bool,
+    /// Stem darkening at display time, by FreeType's or HarfBuzz's GPU rule
+    /// (`display::display_color`).
+    pub darkening: Darkening,
     /// Full intensity of the signed error and difference pictures, in coverage.
     pub difference_scale: f32,
     /// Draw every frame (for live GPU time) rather than only when something changed.
@@ -61,7 +62,7 @@ impl Default for Settings {
             text_color: [255, 255, 255],
             background: [0, 0, 0],
             display: DisplayMode::Linear,
-            stem_darkening: false,
+            darkening: Darkening::Off,
             difference_scale: 0.5,
             continuous: false,
         }

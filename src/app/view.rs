@@ -11,14 +11,14 @@ use glam::DVec2;
 use super::Explorer;
 use super::analysis::Request;
 use super::blink::BLINKING_PANE;
-use super::display::{DisplayMode, freetype_edge_darkening};
+use super::display::{CoverageAdjust, DisplayMode};
 use super::gpu_view::{CompositeMode, PanePaint, Source, lock};
 use super::outline;
 use super::panes::{REFERENCE, pane_letter, subtrahend_label};
 use super::settings::{Layout, PaneOverlay, PaneSource};
 use crate::camera::Camera;
 use crate::gpu::shaders::COST_SCALE_CURVES;
-use crate::magnify::{GRID_FROM, VALUES_FROM, Window};
+use crate::magnify::{GRID_FROM, VALUES_FROM, Window, block_labels};
 use crate::methods::Overlay;
 
 /// Space between panes, points.
@@ -274,11 +274,11 @@ impl Explorer {
     ) -> (Option<PanePaint>, String) {
         let settings = &self.settings.panes[index];
         let pane = &self.panes[index];
-        let edge_darkening = if self.settings.stem_darkening {
-            freetype_edge_darkening(camera.size_px_per_em as f32)
-        } else {
-            0.0
-        };
+        let text_srgb = self.settings.text_color.map(|c| f32::from(c) / 255.0);
+        let darkening = self
+            .settings
+            .darkening
+            .adjust(camera.size_px_per_em as f32, text_srgb);
         let paint = |camera: Option<Camera>, first, second, mode| PanePaint {
             gpu: self.gpu.as_ref().expect("checked by the caller").0.clone(),
             compositor: self.gpu.as_ref().expect("checked by the caller").1.clone(),
@@ -292,7 +292,7 @@ impl Explorer {
             background: color(self.settings.background).into(),
             difference_scale: self.settings.difference_scale,
             display: self.settings.display,
-            edge_darkening,
+            darkening,
             block: self.view.window.map_or(1, |w| w.factor),
             rect,
         };
@@ -399,7 +399,12 @@ impl Explorer {
             && let Some((captured, image)) = &self.panes[index].capture
             && Some(*captured) == self.view.camera
         {
-            paint_values(&painter, rect, block, ppp, image);
+            // The error overlay writes each pixel's error under its coverage.
+            let reference = (settings.overlay == PaneOverlay::Error)
+                .then(|| self.reference_image())
+                .flatten()
+                .filter(|r| (r.width, r.height) == (image.width, image.height));
+            paint_values(&painter, rect, block, ppp, image, reference.as_deref());
         }
         if settings.outline
             && let Some(scene) = self.scene.scene()
@@ -559,7 +564,7 @@ impl Explorer {
                 background: egui::Rgba::BLACK,
                 difference_scale: 1.0,
                 display: DisplayMode::Linear,
-                edge_darkening: 0.0,
+                darkening: CoverageAdjust::NONE,
                 block: 1,
                 rect: bar,
             };
@@ -717,32 +722,38 @@ fn paint_grid(painter: &egui::Painter, rect: egui::Rect, block: u32, ppp: f32) {
     }
 }
 
-/// Each block's coverage, as read back, written in it.
+/// Each block's coverage, as read back, written in it (`magnify::block_labels`, as
+/// `render --magnify` writes them), and its error against `reference` under it.
 fn paint_values(
     painter: &egui::Painter,
     rect: egui::Rect,
     block: u32,
     ppp: f32,
     image: &crate::coverage::CoverageImage,
+    reference: Option<&crate::coverage::CoverageImage>,
 ) {
     let step = block as f32 / ppp;
-    let font = egui::FontId::monospace((step / 4.0).clamp(6.0, 14.0));
+    let size = (step / 4.0).clamp(6.0, 14.0);
+    let font = egui::FontId::monospace(size);
     for y in 0..image.height {
         for x in 0..image.width {
-            let v = image.get(x, y);
             let min = rect.min + egui::vec2(x as f32, y as f32) * step;
             if min.x >= rect.max.x || min.y >= rect.max.y {
                 continue;
             }
-            // White on a black shadow: legible over any text and background colour.
-            for (offset, ink) in [(3.0, egui::Color32::BLACK), (2.0, egui::Color32::WHITE)] {
-                painter.text(
-                    min + egui::vec2(offset, offset),
-                    egui::Align2::LEFT_TOP,
-                    format!("{v:.2}"),
-                    font.clone(),
-                    ink,
-                );
+            let labels = block_labels(image.get(x, y), reference.map(|r| r.get(x, y)));
+            for (line, label) in labels.into_iter().enumerate() {
+                let at = min + egui::vec2(0.0, line as f32 * size * 1.2);
+                // White on a black shadow: legible over any text and background colour.
+                for (offset, ink) in [(3.0, egui::Color32::BLACK), (2.0, egui::Color32::WHITE)] {
+                    painter.text(
+                        at + egui::vec2(offset, offset),
+                        egui::Align2::LEFT_TOP,
+                        label.clone(),
+                        font.clone(),
+                        ink,
+                    );
+                }
             }
         }
     }
