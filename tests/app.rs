@@ -563,12 +563,20 @@ fn the_magnifier_shows_the_panes_own_pixels_as_blocks() {
         }
     }
     assert!(inked > 20, "the window shows the text: {inked} pixels");
-    // Each block is its pixel, inside the grid lines, clear of the label and legend.
+    // Each block is its pixel, clear of the label and legend; its first row and column
+    // are the grid: grey (110) at 60% over it.
     let mut worst = 0.0f32;
     for j in (y0 / 8 + 1)..(y1 / 8).min(window.rows) {
         for i in 0..(w / 8).min(window.cols) {
-            let expected = shown(magnified.get(i, j));
-            for (dx, dy) in [(2, 2), (5, 6), (7, 3)] {
+            let inside = shown(magnified.get(i, j));
+            let grid = 0.4 * inside + 0.6 * 110.0;
+            for (dx, dy, expected) in [
+                (2, 2, inside),
+                (5, 6, inside),
+                (7, 3, inside),
+                (4, 0, grid),
+                (0, 5, grid),
+            ] {
                 let p = screen.get_pixel(
                     rect.min.x as u32 + i * 8 + dx,
                     rect.min.y as u32 + j * 8 + dy,
@@ -580,7 +588,7 @@ fn the_magnifier_shows_the_panes_own_pixels_as_blocks() {
             }
         }
     }
-    assert!(worst <= 1.5, "a block is off its pixel by {worst}");
+    assert!(worst <= 1.5, "a block or its grid is off by {worst}");
     harness.key_press(egui::Key::N);
     harness.step();
     assert_eq!(harness.state().magnified_window().unwrap().factor, 4);
@@ -704,11 +712,14 @@ fn worst_pixel_and_stepping_go_to_the_pixels_the_metrics_report() {
     eprintln!("worst pixel: {n} pixels over 0.25, found and settled in {took:?}");
 }
 
-/// B flips pane A in place to pane B's method (drawn from pane B's own read-back), B
-/// again restores it; with one pane shown it flips to the reference. `bounds` draws
-/// boxes, far from the glyphs, so a pane that did not flip cannot pass.
-#[test]
-fn blink_alternates_pane_a_with_the_other_rendering() {
+/// Side by side, winding beside `bounds` (boxes, far from the glyphs' shapes, so a pane
+/// showing the wrong one cannot pass), at rest: the screen and both panes' read-backs.
+fn winding_beside_bounds() -> (
+    Harness<'static, Explorer>,
+    image::RgbaImage,
+    std::sync::Arc<CoverageImage>,
+    std::sync::Arc<CoverageImage>,
+) {
     let mut settings = Settings {
         layout: Layout::SideBySide,
         ..Settings::default()
@@ -719,6 +730,14 @@ fn blink_alternates_pane_a_with_the_other_rendering() {
     let screen = settle(&mut harness);
     let own = harness.state().pane_capture(0).expect("read back at rest");
     let other = harness.state().pane_capture(1).expect("read back at rest");
+    (harness, screen, own, other)
+}
+
+/// B flips pane A in place to pane B's method (drawn from pane B's own read-back), B
+/// again restores it; with one pane shown it flips to the reference.
+#[test]
+fn blink_alternates_pane_a_with_the_other_rendering() {
+    let (mut harness, screen, own, other) = winding_beside_bounds();
     assert!(screen_vs_coverage(&harness, &screen, 0, &own) <= 1.5);
     // The two differ on screen by far more than the tolerance.
     assert!(screen_vs_coverage(&harness, &screen, 0, &other) > 50.0);
@@ -1008,16 +1027,7 @@ fn a_first_start_opens_magnified_on_an_artifact() {
 /// again stops it, on A's own method.
 #[test]
 fn shift_b_blinks_pane_a_on_its_own_and_stops() {
-    let mut settings = Settings {
-        layout: Layout::SideBySide,
-        ..Settings::default()
-    };
-    settings.panes[0] = PaneSettings::method("winding");
-    settings.panes[1] = PaneSettings::method("bounds");
-    let mut harness = harness(settings);
-    settle(&mut harness);
-    let own = harness.state().pane_capture(0).expect("read back at rest");
-    let other = harness.state().pane_capture(1).expect("read back at rest");
+    let (mut harness, _, own, other) = winding_beside_bounds();
     let shows = |harness: &mut Harness<'static, Explorer>| {
         harness.step();
         let screen = harness.render().expect("the harness draws with wgpu");

@@ -24,6 +24,8 @@ struct Composite {
     display: u32,
     edge_darkening: f32,
     darkening_exponent: f32,
+    // 1: the magnifier's pixel grid is drawn (from `magnify::GRID_FROM`).
+    grid: u32,
 }
 
 @group(0) @binding(0) var<uniform> composite: Composite;
@@ -83,6 +85,16 @@ fn as_stored(value: vec3<f32>) -> vec4<f32> {
     return vec4<f32>(clamp(value, vec3<f32>(0.0), vec3<f32>(1.0)), 1.0);
 }
 
+// The grid over magnified pixels: each block's first row and column in grey at 60%
+// (stored values). Drawn here, not as egui lines, which cost llvmpipe ~20 ms a frame.
+fn with_grid(stored: vec3<f32>, local: vec2<f32>) -> vec3<f32> {
+    let within = local - floor(local / composite.block) * composite.block;
+    if composite.grid == 1u && min(within.x, within.y) < 1.0 {
+        return mix(stored, vec3<f32>(110.0 / 255.0), 0.6);
+    }
+    return stored;
+}
+
 @fragment
 fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     let local = position.xy - composite.origin;
@@ -91,15 +103,17 @@ fn fs_main(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
     }
     let texel = vec2<i32>(floor(local / composite.block));
     let a = textureLoad(first, texel, 0);
+    var shown: vec3<f32>;
     if composite.mode == 1u {
         // Overlay pictures are written as display values, as the CLI saves them.
-        return as_stored(a.rgb);
-    }
-    if composite.mode == 2u {
+        shown = a.rgb;
+    } else if composite.mode == 2u {
         // The colours of `metrics::error_image`: red where `first` covers more.
         let b = textureLoad(second, texel, 0);
         let e = clamp((clamp(a.a, 0.0, 1.0) - clamp(b.a, 0.0, 1.0)) / composite.difference_scale, -1.0, 1.0);
-        return as_stored(vec3<f32>(max(e, 0.0), 0.0, max(-e, 0.0)));
+        shown = vec3<f32>(max(e, 0.0), 0.0, max(-e, 0.0));
+    } else {
+        shown = display_color(a.a, composite.text.rgb, composite.background.rgb, composite.display, composite.edge_darkening, composite.darkening_exponent);
     }
-    return as_stored(display_color(a.a, composite.text.rgb, composite.background.rgb, composite.display, composite.edge_darkening, composite.darkening_exponent));
+    return as_stored(with_grid(shown, local));
 }

@@ -133,14 +133,23 @@ impl Explorer {
             .labelled_by(toggle.id);
         });
         let label = ui.label("text");
-        ui.add_enabled(
-            !scene.glyph_mode,
-            egui::TextEdit::multiline(&mut scene.text)
-                .desired_rows(4)
-                .desired_width(f32::INFINITY)
-                .id_salt("text"),
-        )
-        .labelled_by(label.id);
+        // Four lines tall (a TextEdit's rows and its 2 + 2 px margin) whatever the text's
+        // length, so the controls below stay put.
+        let rows = 4;
+        let height = ui.text_style_height(&egui::TextStyle::Body) * rows as f32 + 4.0;
+        egui::ScrollArea::vertical()
+            .id_salt("text scroll")
+            .max_height(height)
+            .show(ui, |ui| {
+                ui.add_enabled(
+                    !scene.glyph_mode,
+                    egui::TextEdit::multiline(&mut scene.text)
+                        .desired_rows(rows)
+                        .desired_width(f32::INFINITY)
+                        .id_salt("text"),
+                )
+                .labelled_by(label.id);
+            });
         if let Some(problem) = self.scene.problem() {
             ui.colored_label(ui.visuals().error_fg_color, problem);
         } else if let Some(scene) = self.scene.scene() {
@@ -250,30 +259,25 @@ impl Explorer {
             ui.color_edit_button_srgb(&mut settings.text_color);
             ui.label("background");
             ui.color_edit_button_srgb(&mut settings.background);
-            // A fixed width: a label-sized box would resize the panel and so the panes.
-            egui::ComboBox::from_id_salt("display mode")
-                .width(100.0)
-                .selected_text(settings.display.label())
-                .show_ui(ui, |ui| {
-                    for mode in DisplayMode::ALL {
-                        ui.selectable_value(&mut settings.display, mode, mode.label());
-                    }
-                })
-                .response
-                .on_hover_text("how coverage is shown; error figures stay linear coverage");
-            egui::ComboBox::from_id_salt("darkening")
-                .width(74.0)
-                .selected_text(settings.darkening.short_label())
-                .show_ui(ui, |ui| {
-                    for darkening in Darkening::ALL {
-                        ui.selectable_value(&mut settings.darkening, darkening, darkening.label());
-                    }
-                })
-                .response
-                .on_hover_text(
-                    "stem darkening at display time: FreeType's CFF curve (approximated) or \
-                     HarfBuzz's GPU formula; error figures stay linear coverage",
-                );
+            fixed_width_choice(
+                ui,
+                ("display mode", 80.0),
+                &mut settings.display,
+                &DisplayMode::ALL,
+                |m| (m.label(), m.label()),
+            )
+            .on_hover_text("how coverage is shown; error figures stay linear coverage");
+            fixed_width_choice(
+                ui,
+                ("darkening", 84.0),
+                &mut settings.darkening,
+                &Darkening::ALL,
+                |d| (d.short_label(), d.label()),
+            )
+            .on_hover_text(
+                "stem darkening at display time: FreeType's CFF curve (approximated) or \
+                 HarfBuzz's GPU formula; error figures stay linear coverage",
+            );
         });
         ui.add(
             egui::Slider::new(&mut settings.difference_scale, 0.01..=1.0)
@@ -292,6 +296,17 @@ impl Explorer {
         // One line, clipped at the right: a message that wrapped would resize the panes,
         // and with them the camera the numbers and the worst pixels were worked out for.
         ui.horizontal(|ui| {
+            // The message first (the worst pixel, a case, a screenshot): what was just
+            // asked for is what the clipping must not hide.
+            let status = self
+                .status
+                .lock()
+                .unwrap_or_else(|p| p.into_inner())
+                .clone();
+            if !status.is_empty() {
+                ui.label(status);
+                ui.separator();
+            }
             ui.label(self.inspector_text());
             ui.separator();
             let mut intervals: Vec<f64> = self.frame_intervals.iter().copied().collect();
@@ -307,15 +322,6 @@ impl Explorer {
             }
             if self.analysis.busy() {
                 ui.spinner();
-            }
-            let status = self
-                .status
-                .lock()
-                .unwrap_or_else(|p| p.into_inner())
-                .clone();
-            if !status.is_empty() {
-                ui.separator();
-                ui.label(status);
             }
             if let Some((gpu, _)) = &self.gpu {
                 ui.separator();
@@ -422,4 +428,25 @@ impl Explorer {
             };
         }
     }
+}
+
+/// A combo box choosing `value` among `all`, `labels` giving each its (shown when
+/// chosen, listed) names. A fixed width: a label-sized box would resize the panel and so
+/// the panes.
+fn fixed_width_choice<T: Copy + PartialEq>(
+    ui: &mut egui::Ui,
+    (id, width): (&str, f32),
+    value: &mut T,
+    all: &[T],
+    labels: impl Fn(T) -> (&'static str, &'static str),
+) -> egui::Response {
+    egui::ComboBox::from_id_salt(id)
+        .width(width)
+        .selected_text(labels(*value).0)
+        .show_ui(ui, |ui| {
+            for &choice in all {
+                ui.selectable_value(value, choice, labels(choice).1);
+            }
+        })
+        .response
 }

@@ -16,6 +16,7 @@ use crate::camera::Camera;
 use crate::coverage::CoverageImage;
 use crate::gpu::timing::{Timestamps, intervals_ms};
 use crate::gpu::{CoverageTarget, GpuContext};
+use crate::magnify::GRID_FROM;
 use crate::methods::Method;
 use crate::methods::frame::ms_since;
 
@@ -48,8 +49,7 @@ struct CompositeUniform {
     display: u32,
     edge_darkening: f32,
     darkening_exponent: f32,
-    // WGSL rounds the struct up to its 16-byte alignment.
-    padding: f32,
+    grid: u32,
 }
 
 /// The pipeline that draws panes, for egui's framebuffer format.
@@ -348,7 +348,7 @@ impl egui_wgpu::CallbackTrait for PanePaint {
             display: self.display.shader_index(),
             edge_darkening: self.darkening.edge_px,
             darkening_exponent: self.darkening.exponent,
-            padding: 0.0,
+            grid: u32::from(self.block >= GRID_FROM),
         };
         let buffer = surface.uniform.get_or_insert_with(|| {
             gpu.device.create_buffer(&wgpu::BufferDescriptor {

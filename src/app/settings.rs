@@ -11,8 +11,14 @@ use super::display::{Darkening, DisplayMode};
 use crate::font::SHIPPED_FONTS;
 use crate::methods::registry;
 
-/// Shown at first start: a pangram and the classic type-proofing word.
-pub const DEFAULT_TEXT: &str = "Hamburgefonstiv\nThe quick brown fox jumps over the lazy dog.";
+/// Shown at first start: the classic type-proofing word, pangrams, figures and
+/// punctuation — six lines, enough to fill the first start's magnified panes.
+pub const DEFAULT_TEXT: &str = "Hamburgefonstiv\n\
+    The quick brown fox jumps over the lazy dog.\n\
+    Sphinx of black quartz, judge my vow!\n\
+    Pack my box with five dozen liquor jugs.\n\
+    0123456789 (a+b)/c = 3.5% {x|y} @&$#\n\
+    Waltz, nymph, for quick jigs vex Bud.";
 
 /// Panes there are room for; the layout shows the first 1, 2 or 4.
 pub const PANES: usize = 4;

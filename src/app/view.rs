@@ -18,7 +18,7 @@ use super::panes::{REFERENCE, pane_letter, subtrahend_label};
 use super::settings::{Layout, PaneOverlay, PaneSource};
 use crate::camera::Camera;
 use crate::gpu::shaders::COST_SCALE_CURVES;
-use crate::magnify::{GRID_FROM, VALUES_FROM, Window, block_labels};
+use crate::magnify::{VALUES_FROM, Window, block_labels};
 use crate::methods::Overlay;
 
 /// Space between panes, points.
@@ -392,9 +392,6 @@ impl Explorer {
         let painter = ui.painter_at(rect);
         let mut notes: Vec<String> = Vec::new();
         let block = self.view.window.map_or(1, |w| w.factor);
-        if block >= GRID_FROM {
-            paint_grid(&painter, rect, block, ppp);
-        }
         if block >= VALUES_FROM
             && let Some((captured, image)) = &self.panes[index].capture
             && Some(*captured) == self.view.camera
@@ -703,22 +700,6 @@ impl Explorer {
             pane_generations,
         });
         self.view.analysed = Some(key);
-    }
-}
-
-/// One line between each two blocks of a magnified pane.
-fn paint_grid(painter: &egui::Painter, rect: egui::Rect, block: u32, ppp: f32) {
-    let step = block as f32 / ppp;
-    let stroke = egui::Stroke::new(1.0 / ppp, egui::Color32::from_gray(110).gamma_multiply(0.6));
-    let mut x = rect.min.x;
-    while x <= rect.max.x {
-        painter.vline(x, rect.y_range(), stroke);
-        x += step;
-    }
-    let mut y = rect.min.y;
-    while y <= rect.max.y {
-        painter.hline(rect.x_range(), y, stroke);
-        y += step;
     }
 }
 
