@@ -19,17 +19,15 @@ pub struct ViewArgs {
     #[arg(long)]
     pub font: Option<PathBuf>,
     /// Text to shape; '\n' (or a literal backslash-n) starts a new line.
-    #[arg(
-        long,
-        required_unless_present_any = ["glyph_id", "case"],
-        conflicts_with = "glyph_id"
-    )]
+    // Not required here: `render --case` names a view instead, and `build` says what is
+    // missing.
+    #[arg(long, conflicts_with = "glyph_id")]
     pub text: Option<String>,
     /// One glyph by its id in the font.
     #[arg(long)]
     pub glyph_id: Option<u32>,
-    /// Size in pixels per em.
-    #[arg(long, allow_negative_numbers = true, required_unless_present = "case")]
+    /// Size in pixels per em (required).
+    #[arg(long, allow_negative_numbers = true)]
     pub size: Option<f64>,
     /// Image width; by default the ink box plus a margin.
     #[arg(long)]

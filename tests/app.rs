@@ -804,7 +804,7 @@ fn a_new_layout_or_text_is_framed_in_the_panes() {
 fn display_modes_change_the_picture_but_not_the_error_figures() {
     use glyphscope::app::display::{Darkening, DisplayMode};
     let mut harness = harness(Settings {
-        // Small enough that FreeType's curve darkens (0.14 px an edge at 12 ppem).
+        // Small enough that both darkenings act (FreeType's: 0.15 px an edge at 12 ppem).
         camera: glyphscope::app::settings::CameraSettings {
             size_px_per_em: 12.0,
             ..Default::default()
@@ -837,11 +837,11 @@ fn display_modes_change_the_picture_but_not_the_error_figures() {
     }
 }
 
-/// Every text egui painted in the last frame.
-fn painted_texts(harness: &Harness<'static, Explorer>) -> Vec<String> {
-    fn collect(shape: &egui::Shape, out: &mut Vec<String>) {
+/// Every text egui painted in the last frame, and where (its top-left corner, points).
+fn painted_texts(harness: &Harness<'static, Explorer>) -> Vec<(egui::Pos2, String)> {
+    fn collect(shape: &egui::Shape, out: &mut Vec<(egui::Pos2, String)>) {
         match shape {
-            egui::Shape::Text(text) => out.push(text.galley.text().to_owned()),
+            egui::Shape::Text(text) => out.push((text.pos, text.galley.text().to_owned())),
             egui::Shape::Vec(shapes) => shapes.iter().for_each(|s| collect(s, out)),
             _ => {}
         }
@@ -942,14 +942,19 @@ fn a_case_from_the_menu_reproduces_render_and_opens_on_its_worst_pixel() {
             worst <= 1e-3,
             "{name}: the pane is off from render's image by {worst} (over {compared} pixels)"
         );
-        let pane = app.pane_rects()[0];
+        let (pane_w, pane_h) = app.pane_pixels().expect("laid out");
         let sees_whole_frame = ox <= 0
             && oy <= 0
-            && i64::from(image.width) - ox <= pane.width() as i64
-            && i64::from(image.height) - oy <= pane.height() as i64;
+            && i64::from(image.width) - ox <= i64::from(pane_w)
+            && i64::from(image.height) - oy <= i64::from(pane_h);
         let stats = rendered.stats.error.expect("compared with the reference");
         let (fx, fy) = window.focus;
-        let (x, y) = ((i64::from(fx) + ox) as u32, (i64::from(fy) + oy) as u32);
+        let (x, y) = (i64::from(fx) + ox, i64::from(fy) + oy);
+        assert!(
+            (0..i64::from(image.width)).contains(&x) && (0..i64::from(image.height)).contains(&y),
+            "{name}: the focus ({x}, {y}) is outside render's frame"
+        );
+        let (x, y) = (x as u32, y as u32);
         let at_focus = (image.get(x, y) - reference.get(x, y)).abs();
         eprintln!(
             "{name}: {compared} pixels within {worst:e} of render's; focus error {at_focus:.4}, \
@@ -963,9 +968,20 @@ fn a_case_from_the_menu_reproduces_render_and_opens_on_its_worst_pixel() {
                 stats.max
             );
         }
-        // The focus pixel's error, as render's numbers give it, is written on the screen
-        // (within the 5e-4 the two renderings may differ by, which may round either way).
-        let written = painted_texts(&harness);
+        // The focus pixel's error, as render's numbers give it, is written in its block in
+        // pane B (within the 5e-4 the two renderings may differ by, which may round either
+        // way).
+        let step = window.factor as f32 / harness.ctx.pixels_per_point();
+        let block = egui::Rect::from_min_size(
+            app.pane_rects()[1].min
+                + egui::vec2((fx - window.x0) as f32, (fy - window.y0) as f32) * step,
+            egui::vec2(step, step),
+        );
+        let written: Vec<String> = painted_texts(&harness)
+            .into_iter()
+            .filter(|(at, _)| block.contains(*at))
+            .map(|(_, text)| text)
+            .collect();
         let error = image.get(x, y) - reference.get(x, y);
         let labels: Vec<String> = [-5e-4, 0.0, 5e-4]
             .iter()
@@ -973,7 +989,7 @@ fn a_case_from_the_menu_reproduces_render_and_opens_on_its_worst_pixel() {
             .collect();
         assert!(
             labels.iter().any(|l| written.contains(l)),
-            "{name}: none of {labels:?} is written over the panes"
+            "{name}: none of {labels:?} is written in the focus block, which has {written:?}"
         );
         // The whole pane at ×1, too.
         harness.state_mut().settings.camera.magnify = 1;

@@ -316,7 +316,7 @@ fn bad_input_fails_cleanly() {
         &with(&["--text", "a", "--variation", "wé=700"]),
         "1 to 4 ASCII",
     );
-    fails("no text", &base, "required");
+    fails("no text", &base, "give --text or --glyph-id");
 }
 
 /// Runs `info` with no display to open, returning (exit code, stdout, stderr).
@@ -779,5 +779,16 @@ fn render_case_draws_a_named_view_and_refuses_mixing() {
             "reference",
         ],
         "cannot be used with",
+    );
+    // Without --case, the view's own options are required.
+    fails(
+        "no-size",
+        &["--text", "a", "--method", "reference"],
+        "give --size",
+    );
+    fails(
+        "no-text",
+        &["--size", "20", "--method", "reference"],
+        "give --text",
     );
 }

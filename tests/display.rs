@@ -5,7 +5,7 @@ mod common;
 
 use common::run_probe;
 use glyphscope::app::display::{
-    CoverageAdjust, Darkening, DisplayMode, composite_wgsl, display_color,
+    CoverageAdjust, Darkening, DisplayMode, composite_wgsl, display_color, srgb_encode,
 };
 use glyphscope::gpu::GpuContext;
 
@@ -54,7 +54,8 @@ fn the_shader_shows_coverage_as_its_cpu_mirror_does() {
     for mode in DisplayMode::ALL {
         for darkening in Darkening::ALL {
             for (text, background) in colours {
-                let adjust = darkening.adjust(10.0, text);
+                // The darkenings read the text colour as sRGB, as the app passes it.
+                let adjust = darkening.adjust(10.0, text.map(srgb_encode));
                 for k in 0..=64 {
                     cases.push((k as f32 / 64.0, text, background, mode, adjust));
                 }

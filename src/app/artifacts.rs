@@ -3,10 +3,12 @@
 //! frame and the CPU reference, the way `glyphscope render` measures them; the magnifier
 //! is centred on one after another.
 
+use eframe::egui;
+
 use super::Explorer;
 use super::gpu_view::lock;
 use super::panes::{REFERENCE, pane_letter};
-use super::settings::PaneSource;
+use super::settings::{CameraSettings, PaneSource, SceneSettings};
 use crate::camera::Camera;
 use crate::methods::frame;
 use crate::metrics::{self, PixelError};
@@ -18,6 +20,12 @@ pub const ARTIFACT_THRESHOLD: f64 = 0.25;
 
 /// The magnification the worst pixel is shown at when the view is not magnified yet.
 const ARTIFACT_MAGNIFY: u32 = 16;
+
+/// The view a worst-pixel request was made for.
+pub struct WorstPixelRequest {
+    camera: CameraSettings,
+    scene: SceneSettings,
+}
 
 /// One pane's pixels over the threshold, and the one shown.
 pub struct Artifacts {
@@ -40,22 +48,48 @@ impl Explorer {
         self.step_through_artifacts(None, self.hovered_pane());
     }
 
-    /// Once the view has settled after `worst_pixel_pending` was set (a case loaded,
-    /// the first start): the magnifier on the worst pixel of the first visible pane
-    /// that shows a GPU method.
-    pub(super) fn go_to_worst_pixel_when_settled(&mut self) {
-        if !self.worst_pixel_pending || !self.view_settled() {
+    /// Asks for the magnifier on the worst pixel of the view the settings show now, as
+    /// soon as a pane's method is ready (a case loaded, the first start); any change to
+    /// the camera or the scene before then cancels it.
+    pub(super) fn go_to_worst_pixel_when_ready(&mut self) {
+        self.worst_pixel_pending = Some(WorstPixelRequest {
+            camera: self.settings.camera,
+            scene: self.settings.scene.clone(),
+        });
+    }
+
+    /// Carries out a pending request once the first visible pane that shows a GPU method
+    /// has it prepared for the view; once a frame.
+    pub(super) fn answer_worst_pixel_request(&mut self, ctx: &egui::Context) {
+        let Some(request) = &self.worst_pixel_pending else {
+            return;
+        };
+        if request.camera != self.settings.camera || request.scene != self.settings.scene {
+            self.worst_pixel_pending = None;
             return;
         }
-        self.worst_pixel_pending = false;
-        let gpu_pane = (0..self.settings.layout.panes()).find(|&i| {
-            matches!(&self.settings.panes[i].source,
-                PaneSource::Method { name, .. } if name != REFERENCE)
-        });
-        match gpu_pane {
-            Some(pane) => self.step_through_artifacts(None, pane),
-            None => self.set_status("no pane shows a GPU method to find the worst pixel of".into()),
+        let shown = self.settings.layout.panes();
+        let Some(pane) = (0..shown).find(|&i| self.pane_is_gpu_method(i)) else {
+            self.worst_pixel_pending = None;
+            self.set_status("no pane shows a GPU method to find the worst pixel of".into());
+            return;
+        };
+        let ready = self.view.pane_size.is_some()
+            && self.scene.is_built_for(&self.settings.scene)
+            && self.panes[pane].is_built_for(&self.settings.panes[pane], self.scene.generation())
+            && self.panes[pane].has_method();
+        if ready {
+            self.worst_pixel_pending = None;
+            self.step_through_artifacts(None, pane);
+            // The magnifier moved after this frame's panes were laid out.
+            ctx.request_repaint();
         }
+    }
+
+    /// Whether pane `index` shows a GPU method (not the reference or a difference).
+    fn pane_is_gpu_method(&self, index: usize) -> bool {
+        matches!(&self.settings.panes[index].source,
+            PaneSource::Method { name, .. } if name != REFERENCE)
     }
 
     /// Centres the magnifier on the next (`forward`) or previous pixel over the
@@ -171,9 +205,8 @@ impl Explorer {
         let Some(scene) = self.scene.scene() else {
             return Err("no scene".into());
         };
-        match &self.settings.panes[pane].source {
-            PaneSource::Method { name, .. } if name != REFERENCE => {}
-            _ => return Err("worst pixels are a GPU method's; this pane shows none".into()),
+        if !self.pane_is_gpu_method(pane) {
+            return Err("worst pixels are a GPU method's; this pane shows none".into());
         }
         let image = {
             let mut surface = lock(&self.panes[pane].surface);

@@ -275,7 +275,14 @@ mod tests {
                     .unwrap_or_else(|| panic!("{}: not a rotation after a skew", view.name));
                 let offset = DVec2::from_array(c.case_frame.unwrap().offset);
                 assert_eq!(offset, offset.floor(), "{}", view.name);
-                assert!((offset.x - (f64::from(frame.width) - f64::from(w)) / 2.0).abs() < 1.0);
+                let centred = (DVec2::new(f64::from(frame.width), f64::from(frame.height))
+                    - DVec2::new(f64::from(w), f64::from(h)))
+                    / 2.0;
+                assert!(
+                    (offset - centred).abs().max_element() < 1.0,
+                    "{}",
+                    view.name
+                );
                 let mut magnified = c;
                 magnified.magnify = 8;
                 magnified.focus = [f64::from(w) / 3.0, f64::from(h) / 2.0];

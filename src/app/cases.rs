@@ -7,7 +7,7 @@
 use eframe::egui;
 
 use super::Explorer;
-use super::settings::{CameraSettings, SceneSettings};
+use super::settings::{CameraSettings, PANES, SceneSettings};
 use crate::named_views::{self, NamedView, Source};
 
 /// A loaded case's magnification: the first at which each pixel's value is written.
@@ -21,6 +21,8 @@ pub struct Cases {
     /// The scene settings a case was loaded over: changing the font, text or glyph
     /// leaves the case.
     loaded_over: Option<SceneSettings>,
+    /// Each pane's outline switch before a case turned them on, restored on leaving.
+    outlines_before: Option<[bool; PANES]>,
 }
 
 impl Explorer {
@@ -75,10 +77,10 @@ impl Explorer {
                 .clicked()
             {
                 self.settings.scene.case = None;
-                self.framing.pending = true;
             }
         });
-        if let Some(view) = self.cases.views.iter().flatten().find(|v| v.name == name) {
+        let views = self.cases.views.get_or_insert_with(named_views::all);
+        if let Some(view) = views.iter().find(|v| v.name == name) {
             ui.weak(view.about);
         }
     }
@@ -87,17 +89,22 @@ impl Explorer {
     /// controls, a key or a dropped file alike); once a frame.
     pub(super) fn leave_case_on_scene_change(&mut self) {
         let scene = &mut self.settings.scene;
-        if scene.case.is_none() {
-            self.cases.loaded_over = None;
-            return;
+        if scene.case.is_some() {
+            let mut now = scene.clone();
+            now.case = None;
+            // A case remembered from the last run is loaded over what is there now.
+            let over = self.cases.loaded_over.get_or_insert_with(|| now.clone());
+            if *over != now {
+                scene.case = None;
+            }
         }
-        let mut now = scene.clone();
-        now.case = None;
-        // A case remembered from the last run is loaded over what is there now.
-        let over = self.cases.loaded_over.get_or_insert_with(|| now.clone());
-        if *over != now {
-            scene.case = None;
-            self.cases.loaded_over = None;
+        if scene.case.is_none() && self.cases.loaded_over.take().is_some() {
+            // Left (by the button or a change): the text framed again, outlines as they were.
+            if let Some(outlines) = self.cases.outlines_before.take() {
+                for (pane, outline) in self.settings.panes.iter_mut().zip(outlines) {
+                    pane.outline = outline;
+                }
+            }
             self.framing.pending = true;
         }
     }
@@ -116,11 +123,15 @@ impl Explorer {
                     magnify: VALUES_MAGNIFY,
                     ..camera
                 };
+                let panes = &mut self.settings.panes;
+                self.cases
+                    .outlines_before
+                    .get_or_insert_with(|| panes.each_ref().map(|p| p.outline));
                 let shown = self.settings.layout.panes();
-                for pane in &mut self.settings.panes[..shown] {
+                for pane in &mut panes[..shown] {
                     pane.outline = true;
                 }
-                self.worst_pixel_pending = true;
+                self.go_to_worst_pixel_when_ready();
             }
             None => self.set_status(
                 "this case's matrix is not a rotation after a skew; the explorer's camera \

@@ -275,8 +275,9 @@ impl Explorer {
                 |d| (d.short_label(), d.label()),
             )
             .on_hover_text(
-                "stem darkening at display time: FreeType's CFF curve (approximated) or \
-                 HarfBuzz's GPU formula; error figures stay linear coverage",
+                "stem darkening at display time: FreeType's CFF curve (approximated), or \
+                 HarfBuzz's GPU formula (heavier dark text, lighter light text); error \
+                 figures stay linear coverage",
             );
         });
         ui.add(

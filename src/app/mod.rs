@@ -103,8 +103,8 @@ pub struct Explorer {
     artifacts: Option<artifacts::Artifacts>,
     blink: blink::Blink,
     cases: cases::Cases,
-    /// Go to the worst pixel once the view settles (see `go_to_worst_pixel_when_settled`).
-    worst_pixel_pending: bool,
+    /// Go to the worst pixel once a pane is ready (see `go_to_worst_pixel_when_ready`).
+    worst_pixel_pending: Option<artifacts::WorstPixelRequest>,
     /// Each pane's heat-scale legend's own uniform and bind group.
     legends: Vec<gpu_view::SharedSurface>,
     /// Messages from screenshots and file drops; shared with the screenshot callback.
@@ -170,7 +170,7 @@ impl Explorer {
             artifacts: None,
             blink: blink::Blink::default(),
             cases: cases::Cases::default(),
-            worst_pixel_pending: false,
+            worst_pixel_pending: None,
             legends: (0..PANES).map(|_| gpu_view::PaneSurface::new()).collect(),
             status: Arc::new(Mutex::new(String::new())),
             frame_intervals: VecDeque::new(),
@@ -186,6 +186,11 @@ impl Explorer {
     /// The pixels of a ×1 pane the panes draw this frame, and their magnification.
     pub fn magnified_window(&self) -> Option<crate::magnify::Window> {
         self.view.window
+    }
+
+    /// A pane's size in pixels at ×1, once laid out.
+    pub fn pane_pixels(&self) -> Option<(u32, u32)> {
+        self.view.pane_size
     }
 
     /// Where the visible panes are on the screen, in points.
@@ -241,7 +246,7 @@ impl Explorer {
         let placing = self.framing.pending || self.framing.opening;
         self.view_settled()
             && !(placing && self.scene.scene().is_some())
-            && !self.worst_pixel_pending
+            && self.worst_pixel_pending.is_none()
     }
 
     /// Whether the reference and every pane's numbers are worked out for this view, and
@@ -333,7 +338,7 @@ impl Explorer {
             .show(ui, |ui| self.view(ui));
         self.windows(&ctx);
         self.settle(&ctx);
-        self.go_to_worst_pixel_when_settled();
+        self.answer_worst_pixel_request(&ctx);
         if self.settings.continuous {
             ctx.request_repaint();
         }

@@ -71,11 +71,10 @@ impl SceneState {
         self.scene.as_ref().and_then(|s| s.as_ref().ok())
     }
 
+    /// Why the scene could not be built (a font that fails fails the scene built from
+    /// it; a case's scene needs no font).
     pub fn problem(&self) -> Option<String> {
-        match (&self.font, &self.scene) {
-            (Some((_, Err(e))), _) | (_, Some(Err(e))) => Some(e.clone()),
-            _ => None,
-        }
+        self.scene.as_ref().and_then(|s| s.as_ref().err().cloned())
     }
 
     pub fn units_per_em(&self) -> f64 {

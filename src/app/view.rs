@@ -153,7 +153,7 @@ impl Explorer {
                 camera.size_px_per_em = OPENING.0;
                 camera.reset(&scene);
                 camera.magnify = OPENING.1;
-                self.worst_pixel_pending = true;
+                self.go_to_worst_pixel_when_ready();
             } else if !self.place_case(pane) {
                 let size = DVec2::new(f64::from(pane.0), f64::from(pane.1));
                 self.settings.camera.fit(&scene, size);
