@@ -5,13 +5,12 @@
 
 use glyphscope::app::display::{Darkening, DisplayMode};
 use glyphscope::app::headless::Headless;
-use glyphscope::app::screenshots::{Then, photograph};
+use glyphscope::app::screenshots::{Then, photograph_panes};
 use glyphscope::app::settings::{Layout, PaneSettings, Settings};
 
 const WIDTH: u32 = 900;
 const HEIGHT: u32 = 500;
-/// Where the pane's text line lies on the screen, and the part of it shown.
-const PANE_LEFT: u32 = 390;
+/// Where the text line lies in the pane, and the part of it shown.
 const LINE_TOP: u32 = 58;
 const STRIP: (u32, u32) = (200, 16);
 const ZOOM: u32 = 3;
@@ -44,9 +43,10 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         settings.camera.size_px_per_em = 10.0;
         // Below the pane's title and notes.
         settings.camera.origin = [12.0, 70.0];
-        let shot = photograph(&mut screen, settings, Then::Settle)?;
-        // The text's line in the pane (right of the side panel), each pixel drawn 3×3.
-        let line = image::imageops::crop_imm(&shot, PANE_LEFT, LINE_TOP, STRIP.0, STRIP.1);
+        let (shot, panes) = photograph_panes(&mut screen, settings, Then::Settle)?;
+        // The text's line in the pane, each pixel drawn 3×3.
+        let pane_left = panes.first().map_or(0, |r| r.min.x as u32);
+        let line = image::imageops::crop_imm(&shot, pane_left, LINE_TOP, STRIP.0, STRIP.1);
         let (w, h) = (STRIP.0 * ZOOM, STRIP.1 * ZOOM);
         let filter = image::imageops::FilterType::Nearest;
         strips.push(image::imageops::resize(&line.to_image(), w, h, filter));

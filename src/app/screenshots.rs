@@ -5,6 +5,8 @@
 use std::path::Path;
 use std::time::{Duration, Instant};
 
+use eframe::egui;
+
 use super::Explorer;
 use super::headless::Headless;
 use super::panes::{Catalog, REFERENCE};
@@ -180,6 +182,16 @@ pub fn photograph(
     settings: Settings,
     then: Then,
 ) -> Result<image::RgbaImage, Error> {
+    photograph_panes(screen, settings, then).map(|(image, _)| image)
+}
+
+/// [`photograph`], and where the panes are in the picture (pixels: the headless
+/// screen draws one pixel a point).
+pub fn photograph_panes(
+    screen: &mut Headless,
+    settings: Settings,
+    then: Then,
+) -> Result<(image::RgbaImage, Vec<egui::Rect>), Error> {
     let mut app: Explorer = screen.explorer(settings);
     match then {
         Then::OpenAsOnAFirstStart => app.open_as_on_a_first_start(),
@@ -209,5 +221,6 @@ pub fn photograph(
     }
     // One more frame shows what arrived last.
     screen.frame(&mut app)?;
-    screen.screenshot(&mut app)
+    let image = screen.screenshot(&mut app)?;
+    Ok((image, app.pane_rects().to_vec()))
 }
