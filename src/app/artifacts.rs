@@ -80,10 +80,36 @@ impl Explorer {
             && self.panes[pane].has_method();
         if ready {
             self.worst_pixel_pending = None;
+            self.bring_case_worst_into_pane(pane);
             self.step_through_artifacts(None, pane);
             // The magnifier moved after this frame's panes were laid out.
             ctx.request_repaint();
         }
+    }
+
+    /// For a case whose frame is larger than the pane: finds pane `pane`'s worst pixel
+    /// over the whole frame and moves the pane's window of the frame (by whole pixels,
+    /// inside the frame) so it is in view; the pane then holds no pixel outside the
+    /// frame along that side, so its worst is the frame's.
+    fn bring_case_worst_into_pane(&mut self, pane: usize) {
+        let (Some(frame), Some((width, height))) =
+            (self.scene.case_camera().copied(), self.view.pane_size)
+        else {
+            return;
+        };
+        if frame.width <= width && frame.height <= height {
+            return;
+        }
+        let worst = match self.find_artifacts(pane, &frame) {
+            Ok((_, (pixel, _))) => pixel,
+            Err(message) => {
+                self.set_status(format!("pane {}: {message}", pane_letter(pane)));
+                return;
+            }
+        };
+        self.settings
+            .camera
+            .show_frame_pixel(worst, (width, height));
     }
 
     /// Whether pane `index` shows a GPU method (not the reference or a difference).

@@ -116,6 +116,30 @@ impl CameraSettings {
         ];
     }
 
+    /// Moves a named view's window so that its frame pixel `pixel` is in a pane of
+    /// `pane` pixels: centred along a side where the frame is larger than the pane,
+    /// the window kept inside the frame there; a side the pane holds whole keeps its
+    /// centring. Each pane pixel stays one of the frame's.
+    pub fn show_frame_pixel(&mut self, pixel: (u32, u32), pane: (u32, u32)) {
+        let Some(frame) = &mut self.case_frame else {
+            return;
+        };
+        let place = |offset: f64, pixel: u32, pane: u32, frame: u32| {
+            if frame <= pane {
+                return offset;
+            }
+            let centred = f64::from(pixel) - f64::from(pane / 2);
+            centred.clamp(0.0, f64::from(frame - pane))
+        };
+        let old = DVec2::from_array(frame.offset);
+        let new = DVec2::new(
+            place(old.x, pixel.0, pane.0, frame.width),
+            place(old.y, pixel.1, pane.1, frame.height),
+        );
+        frame.offset = new.to_array();
+        self.origin = (DVec2::from_array(self.origin) + old - new).to_array();
+    }
+
     /// Font units → pixels, before the tilt: image = origin + linear · (x, y).
     fn linear(&self, units_per_em: f64) -> DMat2 {
         let s = self.size_px_per_em / units_per_em;
@@ -283,6 +307,33 @@ mod tests {
                     "{}",
                     view.name
                 );
+                // Moved to show a far pixel, the window stays inside the frame along a side
+                // larger than the pane, shows the pixel, and keeps the mapping.
+                for pixel in [(0, 0), (frame.width - 1, frame.height - 1)] {
+                    let mut moved = c;
+                    moved.show_frame_pixel(pixel, (w, h));
+                    let o = DVec2::from_array(moved.case_frame.unwrap().offset);
+                    let at = DVec2::new(f64::from(pixel.0), f64::from(pixel.1)) - o;
+                    assert!(at.x >= 0.0 && at.y >= 0.0, "{}: {at}", view.name);
+                    assert!(
+                        at.x < f64::from(w) && at.y < f64::from(h),
+                        "{}: {at}",
+                        view.name
+                    );
+                    for (offset, pane, side) in [(o.x, w, frame.width), (o.y, h, frame.height)] {
+                        assert_eq!(offset, offset.floor());
+                        if side > pane {
+                            assert!((0.0..=f64::from(side - pane)).contains(&offset));
+                        }
+                    }
+                    let upem = scene.units_per_em;
+                    let pen = scene.instances[0].position;
+                    let p = DVec2::new(300.0, 200.0);
+                    let expected = project(&frame.glyph_to_image(upem, pen), p) - o;
+                    let got = project(&moved.camera(w, h).glyph_to_image(upem, pen), p);
+                    let tolerance = 1e-9 * (1.0 + frame.world_offset.length());
+                    assert!((got - expected).length() <= tolerance, "{}", view.name);
+                }
                 let mut magnified = c;
                 magnified.magnify = 8;
                 magnified.focus = [f64::from(w) / 3.0, f64::from(h) / 2.0];
