@@ -1077,3 +1077,31 @@ fn shift_b_blinks_pane_a_on_its_own_and_stops() {
         "stopped, it showed {after:?}"
     );
 }
+
+/// A case whose method has no pixel off by more than 0.25 (winding on `strong-skew`)
+/// still opens on its worst pixel, and the status bar says none is over the threshold.
+#[test]
+fn a_case_with_no_pixel_over_the_threshold_opens_on_its_worst() {
+    let mut settings = Settings::default();
+    settings.panes[0] = PaneSettings::method("winding");
+    let mut harness = harness(settings);
+    settle(&mut harness);
+    harness.state_mut().load_case("strong-skew");
+    settle(&mut harness);
+    let text = harness
+        .get_by_label_contains("worst pixel (")
+        .accesskit_node()
+        .value()
+        .unwrap_or_default();
+    let pixel = text
+        .strip_prefix("worst pixel (")
+        .and_then(|rest| rest.split_once(')'))
+        .and_then(|(xy, rest)| {
+            let (x, y) = xy.split_once(", ")?;
+            rest.contains("none is off by more than 0.25")
+                .then_some((x.parse::<u32>().ok()?, y.parse::<u32>().ok()?))
+        })
+        .unwrap_or_else(|| panic!("the status bar says {text:?}"));
+    let window = harness.state().magnified_window().expect("laid out");
+    assert_eq!((window.factor, window.focus), (32, pixel));
+}
