@@ -106,7 +106,7 @@ pub enum Then {
 }
 
 /// The case the README's first picture shows.
-const MICROSCOPE_CASE: &str = "strong-skew";
+const MICROSCOPE_CASE: &str = "inter-overlaps";
 
 /// sdf-cells beside its own error against the reference, for a loaded case: coverage
 /// and error written in each magnified pixel, the exact outline over both.
