@@ -2,9 +2,10 @@
 // the curves listed in the pixel's cell, turned into coverage by the pixel's footprint.
 //
 // Per distinct glyph (`GlyphCells`): a grid over the outline; the glyph's points in the
-// seed's layout (curve i starts at points[i], an even index; points[i - 2] is the
-// previous curve's start); per cell one u32, either the seed's packed word (three runs
-// of consecutive curves) or an escape to a list of slots (slot = point index / 2).
+// layout of kocsis1david's font-demo (curve i starts at points[i], an even index;
+// points[i - 2] is the previous curve's start); per cell one u32, either font-demo's
+// packed word (three runs of consecutive curves) or an escape to a list of slots
+// (slot = point index / 2).
 // Exact mode adds one band per grid row for the winding number. All math is in the
 // glyph's own font units, y up: the numbers stay small wherever the glyph is.
 
@@ -58,7 +59,7 @@ fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u
 // ---- Cells -------------------------------------------------------------------------
 
 struct CellCurves {
-    // The seed's packed word, or 0 for a list.
+    // font-demo's packed word, or 0 for a list.
     word: u32,
     // Index in `words` of the list's first slot.
     list: u32,
@@ -90,7 +91,7 @@ fn cell_curve(g: GlyphCells, cell: CellCurves, k: u32) -> u32 {
     if cell.word == 0u {
         return g.point_base + 2u * words[cell.list + k];
     }
-    // The seed's three loops: lengths in bits 0-1, 2-4, 5-7; begins (slots) in the
+    // font-demo's three loops: lengths in bits 0-1, 2-4, 5-7; begins (slots) in the
     // bytes above.
     let len0 = cell.word & 3u;
     let len1 = (cell.word >> 2u) & 7u;
@@ -133,20 +134,20 @@ fn keep_two_smallest(field: ptr<function, Field>, d: f32) {
     }
 }
 
-// Seed 000: signed distance from p to the line a→b, positive on its right (y up).
+// From font-demo: signed distance from p to the line a→b, positive on its right (y up).
 fn dist_to_line(a: vec2<f32>, b: vec2<f32>, p: vec2<f32>) -> f32 {
     let dir = b - a;
     return dot(normalize(vec2<f32>(-dir.y, dir.x)), a - p);
 }
 
-// Seed 000: where p projects on the chord a→b, as a parameter clamped to [0, 1].
+// From font-demo: where p projects on the chord a→b, as a parameter clamped to [0, 1].
 fn calc_t(a: vec2<f32>, b: vec2<f32>, p: vec2<f32>) -> f32 {
     let dir = b - a;
     // A closed curve (a == b) projects to its start.
     return clamp(dot(p - a, dir) / max(dot(dir, dir), 1e-30), 0.0, 1.0);
 }
 
-// Seed 000's `process_bezier2`: the curve nearest by its chord gives the distance to
+// font-demo's `process_bezier2`: the curve nearest by its chord gives the distance to
 // its tangent line at t; curves within `bias` of that one are merged with min where the
 // outline turns right at their join (convex: inside both) and max where it turns left.
 fn estimate_curve(p: vec2<f32>, i: u32, field: ptr<function, Field>) {
@@ -172,7 +173,7 @@ fn estimate_curve(p: vec2<f32>, i: u32, field: ptr<function, Field>) {
     // Gradient of dist_to_line with respect to p.
     let grad = vec2<f32>(dir.y, -dir.x);
     if udist >= min_udist - settings.bias {
-        // A tie: which way does the outline turn at the join? The seed asks how the
+        // A tie: which way does the outline turn at the join? font-demo asks how the
         // previous curve (points[i - 2]) turns into this one. When this curve is the one
         // before the curve that gave the value (the last curve of a contour meeting its
         // first, or runs visited out of order), that join is the other one: ask how
@@ -427,7 +428,7 @@ fn fs_main(in: GlyphQuad) -> @location(0) vec4<f32> {
     switch settings.output {
         case OUTPUT_EQUAL_DISTANCE: {
             // Where the two nearest curves are as near as each other, within the bias:
-            // the seed's purple regions, where its tie-break decides.
+            // font-demo's purple regions, where its tie-break decides.
             if field.second - field.nearest <= settings.bias {
                 color = mix(color, PURPLE, 0.85);
             }
@@ -435,7 +436,7 @@ fn fs_main(in: GlyphQuad) -> @location(0) vec4<f32> {
         case OUTPUT_CELL_GRID: {
             let cell = (p - g.grid_min) / g.cell_size;
             let count = cell_curves(g, cell_index(g, p)).count;
-            // White at the seed's most curves a packed cell holds.
+            // White at the most curves a packed cell of font-demo holds.
             color = mix(color, heat_color(f32(count) / 17.0), 0.45);
             // Distance to the nearest cell border in pixels, per axis.
             let rate = vec2<f32>(length(vec2<f32>(dx.x, dy.x)), length(vec2<f32>(dx.y, dy.y))) / g.cell_size;

@@ -47,7 +47,7 @@ fn every_wgsl_file_belongs_to_a_method() {
             .into_owned();
         if name.ends_with(".wgsl") && name != "common.wgsl" {
             assert!(
-                shaders().any(|s| s.file == name),
+                shaders().any(|s| s.files.contains(&name.as_str())),
                 "shaders/{name} is no method's shader in the registry"
             );
         }

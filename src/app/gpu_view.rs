@@ -65,6 +65,7 @@ pub struct Compositor {
 pub fn composite_wgsl() -> String {
     crate::gpu::shaders::Shader {
         file: "composite.wgsl",
+        files: &["composite.wgsl"],
         body: include_str!("composite.wgsl"),
     }
     .source()

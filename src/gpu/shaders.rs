@@ -1,6 +1,7 @@
-//! Shaders as they are compiled: a file of `shaders/` prefixed with the shared
-//! `common.wgsl`. Each method names its own file ([`crate::method_shader!`]); the naga
-//! test validates exactly these sources, for every method of the registry.
+//! Shaders as they are compiled: a method's file or files of `shaders/`, concatenated
+//! in order and prefixed with the shared `common.wgsl`. Each method names its own files
+//! ([`crate::method_shader!`]); the naga test validates exactly these sources, for every
+//! method of the registry.
 
 /// Shared WGSL prepended to every shader.
 pub const COMMON_WGSL: &str = include_str!("../../shaders/common.wgsl");
@@ -9,12 +10,17 @@ pub const COMMON_WGSL: &str = include_str!("../../shaders/common.wgsl");
 /// in the shaders, and the legend's label.
 pub const COST_SCALE_CURVES: u32 = 16;
 
-/// One WGSL file of `shaders/`, its text included in the binary.
+/// One shader module: one or more WGSL files of `shaders/`, their text included in the
+/// binary. A method with several algorithms keeps each in a file of its own beside the
+/// shared part (`winding`): still one module, whose files call each other by name.
 #[derive(Clone, Copy, Debug)]
 pub struct Shader {
-    /// Its file name in `shaders/`.
+    /// Its first file's name in `shaders/`: the module's label.
     pub file: &'static str,
-    /// The file's text, without the common part.
+    /// Every file of it, `file` first, in the order `body` concatenates them.
+    pub files: &'static [&'static str],
+    /// The files' text, concatenated (a line break between two), without the common
+    /// part.
     pub body: &'static str,
 }
 
@@ -36,13 +42,18 @@ impl Shader {
     }
 }
 
-/// The [`Shader`] of `shaders/$file`, wherever the module naming it sits.
+/// The [`Shader`] of `shaders/$file`, or of several files of `shaders/` concatenated in
+/// the order given (the first names the module), wherever the module naming it sits.
 #[macro_export]
 macro_rules! method_shader {
-    ($file:literal) => {
+    ($file:literal $(, $more:literal)* $(,)?) => {
         $crate::gpu::shaders::Shader {
             file: $file,
-            body: include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/shaders/", $file)),
+            files: &[$file $(, $more)*],
+            body: concat!(
+                include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/shaders/", $file))
+                $(, "\n", include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/shaders/", $more)))*
+            ),
         }
     };
 }

@@ -1,6 +1,12 @@
 //! `aa=area`: the exact box-filter coverage of one pixel, in f64 — the CPU mirror of
-//! `area_coverage` in `winding.wgsl`, function for function, so that the shader's
-//! formulation is checked here against closed forms.
+//! `shaders/winding_area.wgsl`, function for function, so that the shader's
+//! formulation is checked here against closed forms. [`pixel_winding`] is the shader's
+//! `area_winding` over every curve (no bands), and [`curve_term`] the zone test in its
+//! loop; [`PixelFrame`] is `pixel_frame` and `frame_map`, [`levels`] `frame_levels`,
+//! [`zone`] `area_zone`, `monotone_pieces` the splits in `across_term`; the rest keep
+//! their names. [`fill`] is `fill` in `shaders/winding.wgsl`. The shader's `area_pixel`
+//! (fill(F), or the mean over a grid of sub-pixels where contours overlap) has no
+//! mirror here.
 //!
 //! # The integral
 //!

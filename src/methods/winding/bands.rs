@@ -64,7 +64,7 @@ pub enum BandCount {
 /// Most bands in one direction: past this, bands cost memory and save nothing.
 pub const MAX_BANDS: u32 = 64;
 
-/// Which bands each glyph gets, in the order `winding.wgsl` finds them.
+/// Which bands each glyph gets, in the order `band_for` (winding_rays.wgsl) finds them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Layout {
     /// For rays: its horizontal bands, its vertical bands, then one band listing all its
@@ -512,7 +512,7 @@ mod tests {
 
     /// `aa=area`'s levels: at each level, for a pixel whose half height is at most half
     /// that level's band height, the band holding the pixel's centre lists every curve
-    /// reaching the pixel's rows. The levels are found as `area_band` in winding.wgsl
+    /// reaching the pixel's rows. The levels are found as `area_band` in winding_area.wgsl
     /// finds them: level 0 first, the band of all curves, then each coarser one.
     #[test]
     fn area_levels_hold_every_curve_at_a_pixels_height() {

@@ -1,5 +1,6 @@
 //! `winding`: the coverage of each pixel from the winding number of its glyph's
-//! quadratic curves (seeds 002 and 003; Slug and Windfoil are the state of the art).
+//! quadratic curves (GreenLightning's "GPU Font Rendering" and Steffen Haug's "Graphics
+//! project"; Eric Lengyel's Slug and Windfoil are the state of the art: docs/sources.md).
 //!
 //! - By default (`aa=area`) the exact box-filter integral of the winding number over
 //!   the pixel, by Green's theorem over each curve, in the pixel's own frame (so exact
@@ -51,7 +52,8 @@ pub const INFO: MethodInfo = MethodInfo {
     colour: [31, 119, 180],
     // The exact integral, then the rays: samples and rays are their trade; bands change
     // only the time (the same image), shown on the cheapest setting (without bands a
-    // page costs ~10× as much).
+    // page costs far more: `glyphscope render --case page --method winding --param
+    // bands=off --stats S.json` beside the same without it).
     bench: &[
         bench_at(&[], true),
         bench_at(&[("samples", "1")], false),
@@ -70,11 +72,13 @@ pub const INFO: MethodInfo = MethodInfo {
             params: &[],
             claim: Claim {
                 // Exact but for f32 and the half-float target (steps of 4.9e-4 below
-                // 1); last measured: max 0.011, MAE 0.05/255 (cubic-cusp).
+                // 1); last measured (`glyphscope stability --methods winding`): max
+                // 0.011, MAE 0.05/255 (cubic-cusp).
                 bound: Some(within(0.02, 0.1)),
                 except: &[Trait::Overlapping, Trait::BeyondF32],
                 // Where three winding levels meet in a sub-pixel, or an edge is placed
-                // to 1/32 px; last measured: max 0.111, MAE 0.40/255 (winding-256).
+                // to 1/32 px; last measured (the same command): max 0.111, MAE 0.40/255
+                // (winding-256).
                 limitation: Some(within(0.25, 0.6)),
                 statement: "no pixel off by more than 0.02 where contours do not overlap \
                             and f32 font units resolve the pixel; where contours overlap, \
@@ -86,14 +90,17 @@ pub const INFO: MethodInfo = MethodInfo {
             label: "winding aa=rays",
             params: &[("aa", "rays")],
             claim: Claim {
-                // Last measured: max 0.475 (thin-stem). The MAE of a frame that is all
-                // edges is the error per edge pixel, 1.14/255 on the bench's page (a
+                // Last measured (`glyphscope stability --methods 'winding aa=rays'`):
+                // max 0.475 (thin-stem). The MAE of a frame that is all edges is the
+                // error per edge pixel, 1.14/255 on the bench's page (`glyphscope bench
+                // --scenes page`, edge MAE; a
                 // frame-wide 0.6/255, from cases with blank space around their edges,
                 // broke on the first case of 3 px squares, slanted-ulp-segments: 1.19):
                 // 1.14 / 0.8 by the margin rule, rounded up.
                 bound: Some(within(0.6, 1.5)),
                 except: &[Trait::CrowdedPixels],
-                // Last measured: max 0.717, MAE 6.26/255 (winding-256).
+                // Last measured (the same stability command): max 0.717, MAE 6.26/255
+                // (winding-256).
                 limitation: Some(within(0.9, 8.0)),
                 statement: "no pixel off by more than 0.6 where at most 8 edges cross a \
                             pixel; a window crossed by more falls back to its averaged \
@@ -105,7 +112,8 @@ pub const INFO: MethodInfo = MethodInfo {
 };
 
 pub const NAME: &str = "winding";
-const SHADER: Shader = crate::method_shader!("winding.wgsl");
+const SHADER: Shader =
+    crate::method_shader!("winding.wgsl", "winding_rays.wgsl", "winding_area.wgsl");
 
 /// The overlays `winding` draws.
 pub const OVERLAYS: &[Overlay] = &[Overlay::CurveClasses, Overlay::CostHeatMap];
