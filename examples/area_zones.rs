@@ -1,6 +1,6 @@
-//! The README's figure of `winding aa=area`: one quadratic curve against one pixel, in
-//! the frame the integral runs in, coloured by the zone each part of it lies in, with
-//! the curve's term from the CPU mirror. Left: a camera that neither rotates nor skews
+//! The figure of `winding aa=area` in docs/methods/winding.md: one quadratic curve
+//! against one pixel, in the frame the integral runs in, coloured by the zone each part
+//! of it lies in, with the curve's term from the CPU mirror. Left: a camera that neither rotates nor skews
 //! the glyph (the pixel is a square); right: rotated 20° (in the band frame the pixel
 //! is a parallelogram with vertical sides).
 //!

@@ -25,7 +25,7 @@ fn main() -> Result<(), glyphscope::Error> {
         layout: Layout::Grid,
         ..Settings::default()
     };
-    settings.scene.text = include_str!("../tests/data/page.txt").into();
+    settings.scene.text = glyphscope::bench::scenes::PAGE_TEXT.into();
     settings.camera.size_px_per_em = 16.0;
     settings.camera.origin = [8.0, 100.0];
     let magnify: u32 = match std::env::args().nth(1) {

@@ -1,4 +1,4 @@
-//! The measurements behind `sdf-cells`' README section: exact mode's error per font,
+//! The measurements behind docs/methods/sdf-cells.md: exact mode's error per font,
 //! size and transform; the estimate's artifacts glyph by glyph; overlapping contours in
 //! Inter; estimate vs exact on the standard page (error, curves per pixel, GPU time).
 //!
@@ -190,9 +190,8 @@ fn glyph_label(font: &Font, id: GlyphId, text: &str) -> String {
 }
 
 fn page_report(gpu: &GpuContext) {
-    let text = std::fs::read_to_string("tests/data/page.txt").expect("the page");
     let font = Font::default_font();
-    let scene = Scene::from_text(&font, &text).unwrap();
+    let scene = Scene::from_text(&font, glyphscope::bench::scenes::PAGE_TEXT).unwrap();
     let camera = Camera::new(1920, 1080, 16.0, DVec2::new(24.0, 40.0));
     let expected = reference::rasterize(&scene, &camera).unwrap();
     let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
@@ -246,7 +245,13 @@ fn page_report(gpu: &GpuContext) {
         let image = target.readback(gpu).unwrap();
         let e = compare(&image, &expected).unwrap();
         if k == 0 {
-            culprits = page_culprits(&scene, &camera, &image, &expected, &text);
+            culprits = page_culprits(
+                &scene,
+                &camera,
+                &image,
+                &expected,
+                glyphscope::bench::scenes::PAGE_TEXT,
+            );
         }
         let cost = match method.curves_per_pixel(gpu, &camera).unwrap() {
             Some(c) => format!("{:.2}, {}", c.mean, c.max),

@@ -43,7 +43,7 @@ struct Run {
 }
 
 fn main() {
-    let text = include_str!("../tests/data/page.txt");
+    let text = glyphscope::bench::scenes::PAGE_TEXT;
     let scene = Scene::from_text(&Font::default_font(), text).unwrap();
     let camera = Camera::new(1920, 1080, 16.0, DVec2::new(24.0, 40.0));
     let gpu = GpuContext::new().unwrap();

@@ -14,10 +14,10 @@ use crate::measure::{self, Measured, RENDER_TIMING, RenderStats};
 use crate::methods::frame::ms_since;
 use crate::methods::registry;
 use crate::metrics;
-use crate::outline;
+use crate::outline_overlay;
 use crate::reference;
 use crate::stability::{self, sweep::SweepSize};
-use crate::view::{ViewArgs, parse_key_value};
+use crate::view_args::{ViewArgs, parse_key_value};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -35,7 +35,7 @@ pub struct Cli {
 pub enum Command {
     /// Render text or a glyph to an 8-bit grayscale PNG of linear coverage.
     Render(Box<RenderArgs>),
-    /// Regenerate the README's screenshots of the explorer, headlessly.
+    /// Regenerate the screenshots of the explorer in README and docs/, headlessly.
     Screenshots(ScreenshotsArgs),
     /// Sweep the hard cases through every method against the reference; exit 1 when a
     /// method breaks a bound it claims.
@@ -256,7 +256,7 @@ pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
         let outline = if args.overlays.contains(&PictureOverlay::Outline) {
             let tolerance_px = 0.2 / f64::from(window.factor);
             Some(
-                outline::trace(
+                outline_overlay::trace(
                     &scene,
                     &camera,
                     &window.rect(),

@@ -10,7 +10,7 @@ use clap::Args;
 use crate::Error;
 use crate::font::{GlyphId, OutlineTable, describe_sfnt_version};
 use crate::shaping;
-use crate::view::{load_font, parse_variation};
+use crate::view_args::{load_font, parse_variation};
 
 #[derive(Args, Clone, Debug)]
 pub struct InfoArgs {

@@ -17,12 +17,12 @@ pub mod measure;
 pub mod methods;
 pub mod metrics;
 pub mod named_views;
-pub mod outline;
+pub mod outline_overlay;
 pub mod reference;
 pub mod scene;
 pub mod shaping;
 pub mod stability;
-pub mod view;
+pub mod view_args;
 
 /// Every failure the core reports. Each message is one line a user can act on.
 #[derive(Debug, thiserror::Error)]

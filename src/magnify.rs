@@ -15,7 +15,7 @@ use crate::coverage::CoverageImage;
 use crate::geometry::{Rect, distance_to_segment};
 
 use crate::metrics::ErrorStats;
-use crate::outline::OutlineDrawing;
+use crate::outline_overlay::OutlineDrawing;
 
 /// The largest magnification: a 64×64 block holds two lines of four characters.
 pub const MAX_FACTOR: u32 = 64;

@@ -1,3 +1,6 @@
+//! The `glyphscope` binary: a subcommand runs headless through `cli` (no display is
+//! opened); no subcommand opens the explorer. Errors print one line and exit 2.
+
 use std::process::ExitCode;
 
 use clap::Parser;

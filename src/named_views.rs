@@ -1,4 +1,4 @@
-//! Every view with a name: the hard cases of [`crate::stability::cases`] (seen unturned,
+//! Every view with a name: the hard cases of [`crate::stability::hard_cases`] (seen unturned,
 //! at sub-pixel offset 0) and the bench's standard scenes. `glyphscope render --case
 //! NAME` draws one and the explorer's Cases menu loads one, from this one list, so a
 //! case added to either source is on both at once.
@@ -8,7 +8,7 @@ use crate::bench::scenes::{self, SCENE_NAMES};
 use crate::camera::Camera;
 use crate::font::{Font, SHIPPED_FONTS};
 use crate::scene::Scene;
-use crate::stability::cases;
+use crate::stability::hard_cases;
 
 /// Where a named view comes from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -30,7 +30,7 @@ pub struct NamedView {
 
 /// Every named view: the hard cases in their table's order, then the bench scenes.
 pub fn all() -> Vec<NamedView> {
-    let hard = cases::all().into_iter().map(|c| NamedView {
+    let hard = hard_cases::all().into_iter().map(|c| NamedView {
         name: c.name,
         about: c.what,
         source: Source::HardCase,
@@ -49,7 +49,7 @@ pub fn all() -> Vec<NamedView> {
 /// The scene and camera of the view called `name`: a hard case's own frame (as the
 /// stability sweep sees it at rotation 0 and offset (0, 0)), or a bench scene's.
 pub fn build(name: &str) -> Result<(Scene, Camera), Error> {
-    if let Some(case) = cases::all().into_iter().find(|c| c.name == name) {
+    if let Some(case) = hard_cases::all().into_iter().find(|c| c.name == name) {
         let camera = case.camera(0.0, glam::DVec2::ZERO)?;
         return Ok((case.scene, camera));
     }
@@ -88,7 +88,7 @@ mod tests {
                 .iter()
                 .filter(|v| v.source == Source::HardCase)
                 .count(),
-            cases::all().len()
+            hard_cases::all().len()
         );
         assert_eq!(
             views

@@ -5,9 +5,12 @@
 //!
 //! Without a GPU adapter these tests fail (the harness cannot make its device).
 
+mod common;
+
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
+use common::gpu;
 use egui_kittest::kittest::{NodeT, Queryable};
 use egui_kittest::{Harness, wgpu::WgpuTestRenderer};
 use glyphscope::app::Explorer;
@@ -23,7 +26,9 @@ const SIZE: [f32; 2] = [1200.0, 700.0];
 fn harness(settings: Settings) -> Harness<'static, Explorer> {
     let mut harness = Harness::builder()
         .with_size(SIZE)
-        .renderer(WgpuTestRenderer::from_setup(glyphscope::app::wgpu_setup()))
+        .renderer(WgpuTestRenderer::from_setup(
+            glyphscope::app::wgpu_setup_on(gpu()),
+        ))
         .build_eframe(|cc| {
             let mut app = Explorer::new(cc);
             app.settings = settings;
@@ -94,12 +99,6 @@ fn screen_vs_coverage(
         }
     }
     worst
-}
-
-/// A device of the core's own, to work out what the app should show.
-fn gpu() -> &'static glyphscope::gpu::GpuContext {
-    static GPU: std::sync::OnceLock<glyphscope::gpu::GpuContext> = std::sync::OnceLock::new();
-    GPU.get_or_init(|| glyphscope::gpu::GpuContext::new().unwrap_or_else(|e| panic!("{e}")))
 }
 
 fn gpu_methods() -> Vec<&'static str> {
@@ -939,7 +938,7 @@ fn a_case_from_the_menu_reproduces_render_and_opens_on_its_worst_pixel() {
             case: Some(name.into()),
             method: "sdf-cells".into(),
             error_image: Some(PathBuf::from("unused")),
-            ..glyphscope::cli::RenderArgs::of(glyphscope::view::ViewArgs::text("-", 1.0))
+            ..glyphscope::cli::RenderArgs::of(glyphscope::view_args::ViewArgs::text("-", 1.0))
         })
         .unwrap_or_else(|e| panic!("{name}: {e}"));
         let (image, reference) = (&rendered.image, rendered.reference.as_ref().unwrap());

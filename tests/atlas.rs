@@ -89,7 +89,7 @@ fn rectangle_coverage(i: u32, j: u32, (x0, x1): (f64, f64), (y0, y1): (f64, f64)
 #[test]
 fn matches_hand_worked_coverage_at_the_cached_size() {
     use glyphscope::geometry::Outline;
-    use glyphscope::stability::cases::{polygon, rect};
+    use glyphscope::stability::hard_cases::{polygon, rect};
     // 16 units per em at 16 px/em; the camera puts font y = 14 on the image's top row.
     let (x0, y0, x1, y1) = (2.25, 3.5, 9.5, 10.75);
     let outline = || Outline {

@@ -44,7 +44,7 @@ fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
 /// on the GPU may differ by a few ulps; a wrong formula moves values by 1e-2 or more).
 #[test]
 fn the_shader_shows_coverage_as_its_cpu_mirror_does() {
-    let gpu = GpuContext::new().unwrap_or_else(|e| panic!("{e}"));
+    let gpu = common::gpu();
     let colours = [
         ([1.0, 1.0, 1.0], [0.0, 0.0, 0.0]),
         ([0.0, 0.0, 0.0], [1.0, 1.0, 1.0]),
@@ -73,7 +73,7 @@ fn the_shader_shows_coverage_as_its_cpu_mirror_does() {
             },
         )
         .collect();
-    let shown = shader_display_color(&gpu, &inputs);
+    let shown = shader_display_color(gpu, &inputs);
     for (case, got) in cases.iter().zip(&shown) {
         let &(c, t, b, mode, d) = case;
         let want = display_color(c, t, b, mode, d);

@@ -7,9 +7,7 @@
 
 mod common;
 
-use std::sync::OnceLock;
-
-use common::cameras;
+use common::{cameras, gpu};
 use glam::DVec2;
 use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
@@ -21,11 +19,6 @@ use glyphscope::{Error, methods, reference};
 
 /// Half-float coverage holds about 3 decimal digits.
 const MAX_ERROR: f32 = 2e-3;
-
-fn gpu() -> &'static GpuContext {
-    static GPU: OnceLock<GpuContext> = OnceLock::new();
-    GPU.get_or_init(|| GpuContext::new().unwrap_or_else(|e| panic!("{e}")))
-}
 
 /// A closed rectangle of four lines, either way round (nonzero fills both alike).
 fn rectangle(min: DVec2, max: DVec2, clockwise: bool) -> Outline {
@@ -221,7 +214,8 @@ fn a_target_larger_than_the_device_allows_is_an_input_error() {
 
 /// The app renders on eframe's device: a device opened elsewhere with the same
 /// descriptor, wrapped by `from_device`, draws exactly what `GpuContext::new`'s draws
-/// and times frames too.
+/// and times frames too. (The one test that opens a second device: that is what it
+/// checks; every other test uses `common::gpu`.)
 #[test]
 fn a_device_opened_elsewhere_renders_the_same() {
     let instance =
@@ -231,7 +225,7 @@ fn a_device_opened_elsewhere_renders_the_same() {
     let (device, queue) =
         pollster::block_on(adapter.request_device(&GpuContext::device_descriptor(&adapter)))
             .unwrap();
-    let outside = GpuContext::from_device(adapter, device, queue);
+    let outside = GpuContext::from_device(instance, adapter, device, queue);
     assert!(outside.has_timestamps(), "{}", outside.adapter_name());
     let scene = small_scene();
     let camera = Camera::new(37, 23, 10.0, DVec2::new(2.3, 17.6));

@@ -12,7 +12,7 @@ use glyphscope::methods::registry::{self, MethodInfo, Role, Trait};
 use glyphscope::methods::{Overlay, param_specs};
 use glyphscope::metrics;
 use glyphscope::stability::claims;
-use glyphscope::view::ViewArgs;
+use glyphscope::view_args::ViewArgs;
 
 /// A few ordinary scenes, as `render` draws them, with what makes them hard.
 fn scenes() -> Vec<(&'static str, ViewArgs, &'static [Trait])> {

@@ -102,11 +102,11 @@ fn prepare_every_glyph(mode: &str) {
         total += prepared;
         eprintln!(
             "{mode} {name}: {prepared} glyphs prepared + {blank} blank; {cells} cells, \
-             {escaped} listed past the seed's word"
+             {escaped} listed past font-demo's word"
         );
     }
     eprintln!(
-        "{mode}: {total} glyphs; {past_slots} past the seed's 512 points, \
+        "{mode}: {total} glyphs; {past_slots} past font-demo's 512 points, \
          {with_escapes} with cells past its 17 curves or 3 runs"
     );
     // The fallback is exercised, not just present.
@@ -189,7 +189,9 @@ fn exact_mode_is_within_half_a_pixel_of_the_reference() {
                     eprintln!("{what}: max {:.3}, MAE {:.3}/255", e.max, e.mae_255);
                     if !overlaps {
                         assert!(e.max <= 0.5, "{what}: {e:?}");
-                        // Hairlines at 16 px/em (Latin Modern) reach 2.4/255 on a tight frame.
+                        // Hairlines at 16 px/em (Latin Modern) reach 2.4/255 on a tight
+                        // frame: see each render's line printed by
+                        // `cargo test --release --test sdf_cells -- --nocapture exact_mode`.
                         assert!(e.mae_255 < 4.0, "{what}: {e:?}");
                         checked += 1;
                     }
@@ -202,8 +204,8 @@ fn exact_mode_is_within_half_a_pixel_of_the_reference() {
 
 #[test]
 fn the_standard_page_exact_clean_estimate_with_its_measured_artifacts() {
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/page.txt"));
-    let scene = Scene::from_text(&Font::default_font(), &text.unwrap()).unwrap();
+    let text = glyphscope::bench::scenes::PAGE_TEXT;
+    let scene = Scene::from_text(&Font::default_font(), text).unwrap();
     let camera = Camera::new(1920, 1080, 16.0, DVec2::new(24.0, 40.0));
     let expected = reference::rasterize(&scene, &camera).unwrap();
     let estimate = compare(
@@ -218,15 +220,17 @@ fn the_standard_page_exact_clean_estimate_with_its_measured_artifacts() {
     eprintln!("page, estimate: {estimate:?}\npage, exact: {exact:?}");
     assert_eq!(exact.pixels_over_05, 0);
     assert!(exact.mae_255 < 0.35 && exact.max < 0.45, "{exact:?}");
-    // Measured: 2 pixels over 0.5 (on 'ç'), where the nearest chord belongs to a curve
-    // whose tangent line puts the pixel on the wrong side. More is a regression.
+    // Measured (`cargo run --release --example sdf_cells_report -- page`): 2 pixels over
+    // 0.5 (on 'ç'), where the nearest chord belongs to a curve whose tangent line puts
+    // the pixel on the wrong side. More is a regression.
     assert!(estimate.pixels_over_05 <= 10, "{estimate:?}");
     assert!(estimate.mae_255 < 0.45, "{estimate:?}");
 }
 
 #[test]
-fn glyphs_past_the_seeds_limits_render_with_every_encoding() {
-    // DejaVu glyphs past the seed's 256 slots (512 points): found, not assumed.
+fn glyphs_past_font_demos_limits_render_with_every_encoding() {
+    // DejaVu glyphs past the 256 slots (512 points) of kocsis1david's font-demo: found,
+    // not assumed.
     let font = Font::default_font();
     let big: Vec<GlyphId> = (0..font.glyph_count())
         .filter(|&id| CurveLayout::new(&quadratic_outline(&font, id)).slots() > 256)
@@ -344,9 +348,9 @@ fn check_tie_set(scene: &Scene, camera: &Camera, mode: &str, bias_em: f64, margi
     purple
 }
 
-/// Seed 000's figure: two quadratics turning left at p2 (here closed by three lines
+/// font-demo's figure: two quadratics turning left at p2 (here closed by three lines
 /// far from p2), one font unit per pixel.
-fn seed_example() -> Scene {
+fn font_demo_example() -> Scene {
     let p = [
         (20.0, 40.0),
         (60.0, 140.0),
@@ -369,13 +373,13 @@ fn seed_example() -> Scene {
 }
 
 #[test]
-fn purple_marks_the_seeds_tie_regions_and_nothing_else() {
-    let scene = seed_example();
+fn purple_marks_font_demos_tie_regions_and_nothing_else() {
+    let scene = font_demo_example();
     let camera = unit_camera(200, 250);
     for mode in ["estimate", "exact"] {
         // A 2-unit bias: wide enough to see, small against the curves.
         let purple = check_tie_set(&scene, &camera, mode, 0.002, 0.05);
-        eprintln!("seed example, {mode}: {purple} purple pixels");
+        eprintln!("font-demo example, {mode}: {purple} purple pixels");
         assert!(purple > 200, "{mode}: the tie regions are there");
     }
 }
@@ -767,7 +771,8 @@ fn overlapping_contours_crack_only_along_the_curves_inside_the_fill() {
         }
         let image = exact.coverage(&scene, &camera);
         let expected = reference::rasterize(&scene, &camera).unwrap();
-        // Elsewhere exact mode stays under 0.45 (corners of the 16 px/em samples); a
+        // Elsewhere exact mode stays under 0.45 (corners of the 16 px/em samples, as
+        // `cargo test --release --test sdf_cells -- --nocapture exact_mode` prints); a
         // crack inside the fill reads 0.5 where an inner curve passes through the centre.
         let mut bad = 0;
         for y in 0..camera.height {
@@ -815,7 +820,7 @@ fn estimate_on_case(case: &str) -> glyphscope::stability::sweep::Outcome {
     let outcome = outcomes.unwrap().remove(0);
     assert!(outcome.failure.is_none(), "{:?}", outcome.failure);
     // One frame in full, whole frame and edge pixels (> 0.25 and > 0.5 counted), for
-    // the README: the case's own view at offset 0, upright.
+    // docs/methods/sdf-cells.md: the case's own view at offset 0, upright.
     let camera = cases[0].camera(0.0, DVec2::ZERO).unwrap();
     let e = Renderer::new(&[]).error(&cases[0].scene, &camera);
     eprintln!(

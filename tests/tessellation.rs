@@ -1,13 +1,11 @@
-//! Method `tessellation` (seed 004): the seed's subdivision reproduced on its own data
-//! and on DejaVu Sans 'g'; the tag state machine against every outline; lyon's nonzero
-//! triangles; and the GPU images against the reference from 8 to 20 000 px/em.
+//! Method `tessellation`: the subdivision of Jeff Boody's Glyph reproduced on Glyph's
+//! own data and on DejaVu Sans 'g'; the tag state machine against every outline; lyon's
+//! nonzero triangles; and the GPU images against the reference from 8 to 20 000 px/em.
 //!
-//! Run with `--nocapture` for the tables the README quotes. The GPU tests need an
+//! Run with `--nocapture` for the tables docs/methods/tessellation.md quotes. The GPU tests need an
 //! adapter and fail without one (CI installs lavapipe).
 
 mod common;
-
-use std::sync::OnceLock;
 
 use common::*;
 use glam::DVec2;
@@ -16,7 +14,7 @@ use glyphscope::cli::{RenderArgs, render};
 use glyphscope::coverage::CoverageImage;
 use glyphscope::font::{Font, SHIPPED_FONTS};
 use glyphscope::geometry::{Contour, Outline, Segment, project};
-use glyphscope::gpu::{CoverageTarget, GpuContext};
+use glyphscope::gpu::CoverageTarget;
 use glyphscope::methods::frame::render_frame;
 use glyphscope::methods::tessellation::mesh::GlyphMesh;
 use glyphscope::methods::tessellation::subdivision::{
@@ -25,13 +23,8 @@ use glyphscope::methods::tessellation::subdivision::{
 use glyphscope::methods::{self, MeshStats, Method};
 use glyphscope::metrics::{ErrorStats, compare};
 use glyphscope::scene::Scene;
-use glyphscope::view::ViewArgs;
+use glyphscope::view_args::ViewArgs;
 use glyphscope::{Error, reference};
-
-fn gpu() -> &'static GpuContext {
-    static GPU: OnceLock<GpuContext> = OnceLock::new();
-    GPU.get_or_init(|| GpuContext::new().unwrap_or_else(|e| panic!("{e}")))
-}
 
 fn params(pairs: &[(&str, &str)]) -> Vec<(String, String)> {
     pairs
@@ -59,9 +52,9 @@ fn coverage(pairs: &[(&str, &str)], scene: &Scene, camera: &Camera) -> CoverageI
         .unwrap()
 }
 
-/// The seed's table (resource/adaptive-subdivision.dat): points and summed area error
+/// Glyph's table (resource/adaptive-subdivision.dat): points and summed area error
 /// for ASA thresholds 1 to 20 on its Barlow 'g'.
-const SEED_ASA: [(usize, f64); 20] = [
+const GLYPH_TABLE_ASA: [(usize, f64); 20] = [
     (229, 1.586691),
     (189, 2.728835),
     (152, 5.162377),
@@ -84,7 +77,7 @@ const SEED_ASA: [(usize, f64); 20] = [
     (64, 32.600826),
 ];
 
-/// The seed's own 'g', as points and tags (tests/data/barlow-g.txt).
+/// Glyph's own 'g', as points and tags (tests/data/barlow-g.txt).
 fn barlow_g() -> Vec<TaggedContour> {
     let text = std::fs::read_to_string(
         std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/barlow-g.txt"),
@@ -107,18 +100,18 @@ fn barlow_g() -> Vec<TaggedContour> {
 }
 
 #[test]
-fn reproduces_the_seeds_table_on_its_own_g() {
+fn reproduces_glyphs_table_on_its_own_g() {
     let g = barlow_g();
     // "Prior to contour decomposition the 'g' glyph contained 59 points."
     assert_eq!(g.iter().map(|c| c.points.len()).sum::<usize>(), 59);
     // Its data is normalised to a height of 1000 already.
-    let cut = |mode| subdivision::subdivide(&g, mode, subdivision::SEED_HEIGHT);
+    let cut = |mode| subdivision::subdivide(&g, mode, subdivision::GLYPH_TABLE_HEIGHT);
     assert_eq!(cut(Subdivision::Fixed(16)).points(), 517);
     assert_eq!(cut(Subdivision::Fixed(3)).points(), 101);
-    // Threshold 0 is the seed's FSA-16: no curve is ever under it.
+    // Threshold 0 is Glyph's FSA-16: no curve is ever under it.
     assert_eq!(cut(Subdivision::Adaptive(0.0)).points(), 517);
-    eprintln!("| ASA threshold | points (seed) | area error (seed) |");
-    for (threshold, &(points, error)) in (1..).zip(&SEED_ASA) {
+    eprintln!("| ASA threshold | points (Glyph) | area error (Glyph) |");
+    for (threshold, &(points, error)) in (1..).zip(&GLYPH_TABLE_ASA) {
         let ours = cut(Subdivision::Adaptive(f64::from(threshold)));
         let our_error = ours.area_error.unwrap();
         eprintln!(
@@ -126,10 +119,10 @@ fn reproduces_the_seeds_table_on_its_own_g() {
             ours.points()
         );
         assert_eq!(ours.points(), points, "threshold {threshold}");
-        // The seed computed in f32.
+        // Glyph computed in f32.
         assert!(
             (our_error - error).abs() < 5e-4 * error,
-            "threshold {threshold}: error {our_error} vs the seed's {error}"
+            "threshold {threshold}: error {our_error} vs Glyph's {error}"
         );
     }
 }
@@ -139,7 +132,7 @@ fn dejavu_g_trade_off_is_monotone() {
     let font = Font::default_font();
     let outline = font.outline(font.glyph_for_char('g').unwrap());
     let g = TaggedContour::from_outline(&outline);
-    let height = font.units_per_em() / subdivision::SEED_EM_PER_HEIGHT;
+    let height = font.units_per_em() / subdivision::GLYPH_TABLE_EM_PER_HEIGHT;
     let cut = |mode| {
         let p = subdivision::subdivide(&g, mode, height);
         (p.points(), p.area_error.unwrap())
@@ -160,7 +153,7 @@ fn dejavu_g_trade_off_is_monotone() {
     for (t, (points, error)) in (1..).zip(&adaptive) {
         eprintln!("| {t} | {points} | {error:.3} |");
     }
-    // More steps: more points, less error, none at the seed's best.
+    // More steps: more points, less error, none at Glyph's best.
     assert!(fixed.windows(2).all(|w| w[1].0 > w[0].0 && w[1].1 < w[0].1));
     assert_eq!(fixed[15].1, 0.0);
     // A higher threshold: never more points, never less error — and it does trade.
@@ -222,7 +215,7 @@ fn lyon_triangles_cover_the_nonzero_area_of_every_glyph() {
     let mut checked = 0;
     for (index, (name, _, _)) in SHIPPED_FONTS.iter().enumerate() {
         let font = Font::shipped(index);
-        let height = font.units_per_em() / subdivision::SEED_EM_PER_HEIGHT;
+        let height = font.units_per_em() / subdivision::GLYPH_TABLE_EM_PER_HEIGHT;
         let snap = (font.units_per_em() / f64::from(1 << 21)) as f32;
         for id in 0..font.glyph_count() {
             let outline = font.outline(id);
@@ -393,7 +386,7 @@ fn screen_space_mode_is_within_half_a_pixel_from_8_to_20000_px_per_em() {
             }
         }
     }
-    // The seed's fixed subdivision shows its facets under zoom: the reason for the
+    // Glyph's fixed subdivision shows its facets under zoom: the reason for the
     // screen-space mode.
     assert!(
         facets_at_20000 > 100,
@@ -405,7 +398,7 @@ fn screen_space_mode_is_within_half_a_pixel_from_8_to_20000_px_per_em() {
 fn a_page_of_repeated_glyphs_matches_the_reference() {
     // Many instances of few glyphs: one draw per distinct glyph, instances culled to the
     // view, and tilted so that instances fall into different scale buckets.
-    let text: String = include_str!("data/page.txt")
+    let text: String = glyphscope::bench::scenes::PAGE_TEXT
         .lines()
         .take(4)
         .collect::<Vec<_>>()

@@ -14,11 +14,7 @@ use glyphscope::methods::{self, Method, frame};
 use glyphscope::metrics::{ErrorStats, compare};
 use glyphscope::reference;
 use glyphscope::scene::Scene;
-use glyphscope::stability::cases;
-
-fn gpu() -> GpuContext {
-    GpuContext::new().expect("a GPU adapter (lavapipe: apt-get install mesa-vulkan-drivers)")
-}
+use glyphscope::stability::hard_cases;
 
 /// `winding` casting rays (`aa=rays`): `tests/winding_area.rs` checks its default.
 fn winding(params: &[(&str, &str)]) -> Box<dyn Method> {
@@ -152,14 +148,14 @@ fn hard_cases_at_their_exact_alignment() {
         ("vertex-on-centre-row", 0.3),
         ("collinear-quadratic", 0.36),
     ] {
-        let case = cases::by_name(name).unwrap();
+        let case = hard_cases::by_name(name).unwrap();
         let cam = case.camera(0.0, DVec2::ZERO).unwrap();
         let s = assert_within_half(&gpu, name, &case.scene, &cam);
         assert!(s.max < bound, "{name}: {s:?}");
     }
 }
 
-/// Issue 18's pixel: in the sun symbol at 48 px/em, origin (24, 72), pixel (52, 57)
+/// The sun symbol's pixel that winding once read as 0.20: in the sun symbol at 48 px/em, origin (24, 72), pixel (52, 57)
 /// spans font units x 583.3–604.2, y 291.7–312.5 (x = (px − 24) / 0.048, y = (72 − py)
 /// / 0.048): inside the ray's bar (y 284–314, x up to 739) and the ring (its hole ends
 /// at x 563), so it is wholly covered. The y-ray through its centre passes 0.25 units
@@ -169,7 +165,7 @@ fn hard_cases_at_their_exact_alignment() {
 #[test]
 fn a_ray_meeting_curves_along_itself_beside_a_vertex_does_not_outweigh_one_meeting_nothing() {
     let gpu = gpu();
-    let sun = cases::by_name("sun-symbol").unwrap().scene;
+    let sun = hard_cases::by_name("sun-symbol").unwrap().scene;
     let cam = Camera::new(87, 106, 48.0, DVec2::new(24.0, 72.0));
     let image = render(&gpu, winding(&[]).as_mut(), &sun, &cam);
     let covered = image.get(52, 57);
@@ -292,9 +288,11 @@ fn settings_trade_accuracy_for_cost() {
 #[test]
 fn fill_rules_on_overlaps_and_self_intersections() {
     let gpu = gpu();
-    let squares = cases::by_name("overlapping-same-direction").unwrap().scene;
+    let squares = hard_cases::by_name("overlapping-same-direction")
+        .unwrap()
+        .scene;
     let star = single(glyphscope::geometry::Outline {
-        contours: vec![cases::pentagram()],
+        contours: vec![hard_cases::pentagram()],
     });
     let cam = unit_camera(22, 22);
     // Pixels (image coordinates) inside the overlap / star centre, and inside one
@@ -437,7 +435,7 @@ fn a_glyph_flat_across_a_ray_reads_its_own_bands() {
         }],
     };
     let scene = Scene::from_outlines(
-        cases::SYNTHETIC_UNITS_PER_EM,
+        hard_cases::SYNTHETIC_UNITS_PER_EM,
         vec![
             (flat(p(0.0, 0.0), p(100.0, 0.0)), p(0.0, 0.0)),
             (flat(p(0.0, 0.0), p(0.0, 100.0)), p(200.0, -150.0)),
@@ -512,7 +510,7 @@ fn curve_counts_past_what_half_floats_hold_are_flagged() {
     }
 }
 
-/// winding.wgsl's `combine_rays` on the GPU, for each (x coverage, y coverage, x sight,
+/// winding_rays.wgsl's `combine_rays` on the GPU, for each (x coverage, y coverage, x sight,
 /// y sight): the shader's own function, run by a compute entry point appended to it.
 fn combine_rays(gpu: &GpuContext, inputs: &[[f32; 4]]) -> Vec<f32> {
     let probe = "

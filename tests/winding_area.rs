@@ -315,11 +315,11 @@ fn sub_pixels_only_where_overlapping_curves_cross() {
 /// both rules.
 #[test]
 fn fill_rules_on_overlaps_and_self_intersections() {
-    let squares = glyphscope::stability::cases::by_name("overlapping-same-direction")
+    let squares = glyphscope::stability::hard_cases::by_name("overlapping-same-direction")
         .unwrap()
         .scene;
     let star = single(Outline {
-        contours: vec![glyphscope::stability::cases::pentagram()],
+        contours: vec![glyphscope::stability::hard_cases::pentagram()],
     });
     let cam = unit_camera(22, 22);
     for (scene, shared, single_cover) in [(&squares, (11, 11), (4, 18)), (&star, (11, 11), (10, 6))]

@@ -86,7 +86,8 @@ fn as_stored(value: vec3<f32>) -> vec4<f32> {
 }
 
 // The grid over magnified pixels: each block's first row and column in grey at 60%
-// (stored values). Drawn here, not as egui lines, which cost llvmpipe ~20 ms a frame.
+// (stored values). Drawn here, not as egui lines: hundreds of lines a frame are slow on
+// llvmpipe.
 fn with_grid(stored: vec3<f32>, local: vec2<f32>) -> vec3<f32> {
     let within = local - floor(local / composite.block) * composite.block;
     if composite.grid == 1u && min(within.x, within.y) < 1.0 {

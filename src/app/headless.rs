@@ -63,7 +63,12 @@ impl Headless {
     /// The device, as the methods see it.
     pub fn gpu(&self) -> GpuContext {
         let rs = &self.render_state;
-        GpuContext::from_device(rs.adapter.clone(), rs.device.clone(), rs.queue.clone())
+        GpuContext::from_device(
+            rs.instance.clone(),
+            rs.adapter.clone(),
+            rs.device.clone(),
+            rs.queue.clone(),
+        )
     }
 
     /// Runs and draws one frame, waiting for the GPU to finish it.

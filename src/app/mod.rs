@@ -5,37 +5,38 @@
 //! - `settings`: what is remembered between runs.
 //! - `scene_state`: the font and scene built from the settings.
 //! - `camera_control`: the shared camera and how input steers it.
-//! - `shortcuts`: the keyboard and mouse, one table for the keys, the help and the README.
+//! - `shortcuts`: the keyboard and mouse, one table for the keys, the help and the docs.
 //! - `panes`: the method catalog, each pane's prepared method, the pane controls.
-//! - `view`: the panes laid out, steered by the pointer, and settling when at rest.
+//! - `canvas`: the panes laid out, steered by the pointer, and settling when at rest.
 //! - `gpu_view`: egui_wgpu paint callbacks drawing each pane's offscreen target.
 //! - `display`: what a pane shows of a coverage value (blending, stem darkening).
 //! - `analysis`: the reference and the error figures, on a background thread.
-//! - `cases`: the Cases menu, loading each named hard case and bench scene.
+//! - `cases_menu`: the Cases menu, loading each named hard case and bench scene.
 //! - `artifacts`: a pane's pixels off from the reference, worst first, to step through.
 //! - `blink`: pane A flipped in place to pane B's method or the reference.
-//! - `sweep`: speed against error over every parameter combination, plotted.
+//! - `pareto`: speed against error over every parameter combination, plotted with its
+//!   Pareto front.
 //! - `controls`: the side panel, the status bar and the windows.
-//! - `outline`, `font_dialog`, `headless` (offscreen frames for `glyphscope screenshots`).
+//! - `outline_painter`, `font_dialog`, `headless` (offscreen frames for `glyphscope screenshots`).
 
 mod analysis;
 mod artifacts;
 mod blink;
 mod camera_control;
-mod cases;
+mod canvas;
+mod cases_menu;
 mod controls;
 pub mod display;
 mod font_dialog;
 mod gpu_view;
 pub mod headless;
-mod outline;
+mod outline_painter;
 mod panes;
+mod pareto;
 mod scene_state;
 pub mod screenshots;
 pub mod settings;
 mod shortcuts;
-mod sweep;
-mod view;
 
 use std::collections::VecDeque;
 use std::sync::{Arc, Mutex};
@@ -44,13 +45,13 @@ use eframe::egui;
 use glam::DVec2;
 
 use self::analysis::{Analysis, ReferenceState};
+use self::canvas::CanvasState;
 use self::font_dialog::FontDialog;
 use self::gpu_view::{Compositor, lock};
 use self::panes::{Catalog, Pane};
+use self::pareto::Sweep;
 use self::scene_state::SceneState;
 use self::settings::{PANES, Settings, sanitize};
-use self::sweep::Sweep;
-use self::view::ViewState;
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
 use crate::gpu::GpuContext;
@@ -86,6 +87,18 @@ pub fn wgpu_setup() -> egui_wgpu::WgpuSetup {
     egui_wgpu::WgpuSetup::CreateNew(setup)
 }
 
+/// eframe's setup on a device already open: the app draws on `gpu`'s device (the
+/// tests' one device per test binary).
+pub fn wgpu_setup_on(gpu: &GpuContext) -> egui_wgpu::WgpuSetup {
+    let (instance, adapter) = gpu.instance_and_adapter();
+    egui_wgpu::WgpuSetup::Existing(egui_wgpu::WgpuSetupExisting {
+        instance: instance.clone(),
+        adapter: adapter.clone(),
+        device: gpu.device.clone(),
+        queue: gpu.queue.clone(),
+    })
+}
+
 /// The explorer app.
 pub struct Explorer {
     pub settings: Settings,
@@ -95,14 +108,14 @@ pub struct Explorer {
     panes: Vec<Pane>,
     reference: ReferenceState,
     analysis: Analysis,
-    view: ViewState,
+    view: CanvasState,
     sweep: Sweep,
     font_dialog: FontDialog,
     help_open: bool,
     /// The pixels the magnifier was last centred on by "worst pixel", to step on from.
     artifacts: Option<artifacts::Artifacts>,
     blink: blink::Blink,
-    cases: cases::Cases,
+    cases: cases_menu::CasesMenu,
     /// Go to the worst pixel once a pane is ready (see `go_to_worst_pixel_when_ready`).
     worst_pixel_pending: Option<artifacts::WorstPixelRequest>,
     /// Each pane's heat-scale legend's own uniform and bind group.
@@ -110,7 +123,7 @@ pub struct Explorer {
     /// Messages from screenshots and file drops; shared with the screenshot callback.
     status: Arc<Mutex<String>>,
     frame_intervals: VecDeque<f64>,
-    framing: view::Framing,
+    auto_fit: canvas::AutoFit,
 }
 
 impl Explorer {
@@ -136,7 +149,7 @@ impl Explorer {
     /// reference) with the text small, magnified on pane A's worst pixel
     /// ([`view::OPENING`]).
     pub fn open_as_on_a_first_start(&mut self) {
-        self.framing.opening = true;
+        self.auto_fit.opening = true;
     }
 
     /// The app on any egui context and wgpu render state (eframe's, a test harness's, or
@@ -147,8 +160,12 @@ impl Explorer {
         settings: Settings,
     ) -> Explorer {
         let gpu = render_state.map(|rs| {
-            let gpu =
-                GpuContext::from_device(rs.adapter.clone(), rs.device.clone(), rs.queue.clone());
+            let gpu = GpuContext::from_device(
+                rs.instance.clone(),
+                rs.adapter.clone(),
+                rs.device.clone(),
+                rs.queue.clone(),
+            );
             let compositor = Arc::new(Compositor::new(&gpu, rs.target_format));
             (gpu, compositor)
         });
@@ -163,18 +180,18 @@ impl Explorer {
             panes: (0..PANES).map(|_| Pane::new()).collect(),
             reference: ReferenceState::default(),
             analysis,
-            view: ViewState::default(),
+            view: CanvasState::default(),
             sweep: Sweep::default(),
             font_dialog: FontDialog::default(),
             help_open: false,
             artifacts: None,
             blink: blink::Blink::default(),
-            cases: cases::Cases::default(),
+            cases: cases_menu::CasesMenu::default(),
             worst_pixel_pending: None,
             legends: (0..PANES).map(|_| gpu_view::PaneSurface::new()).collect(),
             status: Arc::new(Mutex::new(String::new())),
             frame_intervals: VecDeque::new(),
-            framing: view::Framing::default(),
+            auto_fit: canvas::AutoFit::default(),
         }
     }
 
@@ -243,7 +260,7 @@ impl Explorer {
     /// for it, and nothing it is still to do by itself (framing the text, placing a
     /// case, going to the worst pixel).
     pub fn settled(&self) -> bool {
-        let placing = self.framing.pending || self.framing.opening;
+        let placing = self.auto_fit.pending || self.auto_fit.opening;
         self.view_settled()
             && !(placing && self.scene.scene().is_some())
             && self.worst_pixel_pending.is_none()

@@ -27,7 +27,7 @@ pub struct Catalog {
 
 pub struct MethodEntry {
     pub name: &'static str,
-    /// Why it cannot be used ("not implemented yet (issue #N)").
+    /// Why it cannot be used on this device or scene, in one line.
     pub unavailable: Option<String>,
     pub overlays: &'static [Overlay],
 }

@@ -1,6 +1,6 @@
-//! `glyphscope screenshots`: the README's pictures of the explorer, made headlessly by
-//! the real app — what a first start shows, a case under the magnifier, the methods side
-//! by side, each debug overlay, the speed-vs-error plot.
+//! `glyphscope screenshots`: the pictures of the explorer in README and docs/explorer.md,
+//! made headlessly by the real app — what a first start shows, a case under the
+//! magnifier, the methods side by side, each debug overlay, the speed-vs-error plot.
 
 use std::path::Path;
 use std::time::{Duration, Instant};
@@ -12,8 +12,8 @@ use super::headless::Headless;
 use super::panes::{Catalog, REFERENCE};
 use super::settings::{Layout, PaneOverlay, PaneSettings, PaneSource, Settings};
 use crate::Error;
-use crate::methods::Overlay;
 use crate::methods::registry::{self, Role};
+use crate::methods::{Overlay, sdf_cells};
 
 /// Screen size of every screenshot, pixels.
 const WIDTH: u32 = 1400;
@@ -105,17 +105,17 @@ pub enum Then {
     LoadCase(&'static str),
 }
 
-/// The case the README's first picture shows.
+/// The case README's first picture shows.
 const MICROSCOPE_CASE: &str = "inter-overlaps";
 
 /// sdf-cells beside its own error against the reference, for a loaded case: coverage
 /// and error written in each magnified pixel, the exact outline over both.
 fn microscope() -> Settings {
     let mut settings = Settings::default();
-    settings.panes[0] = PaneSettings::method("sdf-cells");
+    settings.panes[0] = PaneSettings::method(sdf_cells::INFO.name);
     settings.panes[1] = PaneSettings {
         overlay: PaneOverlay::Error,
-        ..PaneSettings::method("sdf-cells")
+        ..PaneSettings::method(sdf_cells::INFO.name)
     };
     settings
 }

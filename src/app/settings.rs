@@ -9,7 +9,7 @@ use serde::{Deserialize, Serialize};
 use super::camera_control::{MAX_SIZE_PX_PER_EM, MAX_TILT_DEG, MIN_SIZE_PX_PER_EM};
 use super::display::{Darkening, DisplayMode};
 use crate::font::SHIPPED_FONTS;
-use crate::methods::registry;
+use crate::methods::{registry, sdf_cells, winding};
 
 /// Shown at first start: the classic type-proofing word, pangrams, figures and
 /// punctuation — six lines, enough to fill the first start's magnified panes.
@@ -54,15 +54,15 @@ impl Default for Settings {
             // opens on one), beside the reference; then the near-exact winding, and A's
             // signed difference from the reference.
             panes: [
-                PaneSettings::method("sdf-cells"),
+                PaneSettings::method(sdf_cells::INFO.name),
                 PaneSettings::method(registry::REFERENCE.name),
-                PaneSettings::method("winding"),
+                PaneSettings::method(winding::INFO.name),
                 PaneSettings {
                     source: PaneSource::Difference {
                         first: 0,
                         second: None,
                     },
-                    ..PaneSettings::method("winding")
+                    ..PaneSettings::method(winding::INFO.name)
                 },
             ],
             text_color: [255, 255, 255],
@@ -226,7 +226,7 @@ pub struct PaneSettings {
 
 impl Default for PaneSettings {
     fn default() -> Self {
-        PaneSettings::method("winding")
+        PaneSettings::method(winding::INFO.name)
     }
 }
 

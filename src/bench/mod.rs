@@ -7,12 +7,12 @@
 //! - [`scaling`]: how each method's cost grows with the glyphs and with the size;
 //! - [`report`] and [`plot`]: Markdown, CSV, JSON and SVG plots.
 
+pub mod method_settings;
 pub mod plot;
 pub mod report;
 pub mod run;
 pub mod scaling;
 pub mod scenes;
-pub mod sweep;
 
 use std::path::Path;
 

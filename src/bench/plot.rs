@@ -8,7 +8,7 @@ use std::path::Path;
 use plotters::coord::ranged1d::ValueFormatter;
 use plotters::prelude::*;
 
-use super::run::{BenchResult, Case, View};
+use super::run::{BenchResult, Measurement, SceneCamera};
 use super::scaling::ScalingPoint;
 use crate::Error;
 use crate::methods::registry;
@@ -89,7 +89,7 @@ fn draw_legend_at<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
 }
 
 /// (GPU + CPU ms per frame, MAE) of a case, if it was timed on the GPU.
-fn time_and_error(case: &Case) -> Option<(f64, f64)> {
+fn time_and_error(case: &Measurement) -> Option<(f64, f64)> {
     if case.is_reference() {
         return None;
     }
@@ -125,15 +125,15 @@ pub fn time_against_error(result: &BenchResult, path: &Path) -> Result<(), Error
     let root = SVGBackend::new(path, (1200, 420 * rows as u32)).into_drawing_area();
     root.fill(&WHITE).map_err(plot_error)?;
     for (area, info) in root.split_evenly((rows, columns)).iter().zip(&panels) {
-        let cases: Vec<&Case> = result
+        let cases: Vec<&Measurement> = result
             .cases
             .iter()
             .filter(|c| c.scene == info.name && c.view == info.view)
             .collect();
         let all: Vec<(f64, f64)> = cases.iter().filter_map(|c| time_and_error(c)).collect();
         let caption = match info.view {
-            View::Own => info.name.clone(),
-            View::Moved => format!("{}, after caching (zoom 2.5×, 30°)", info.name),
+            SceneCamera::Own => info.name.clone(),
+            SceneCamera::Moved => format!("{}, after caching (zoom 2.5×, 30°)", info.name),
         };
         let mut chart = ChartBuilder::on(area)
             .caption(caption, ("sans-serif", 18))
@@ -189,8 +189,8 @@ pub fn points_against_error(result: &BenchResult, path: &Path) -> Result<(), Err
                 .filter_map(|c| Some((c.mesh_points? as f64, c.error.mae_255.max(MAE_FLOOR))))
                 .collect();
             let label = match info.view {
-                View::Own => info.name.clone(),
-                View::Moved => format!("{} (moved)", info.name),
+                SceneCamera::Own => info.name.clone(),
+                SceneCamera::Moved => format!("{} (moved)", info.name),
             };
             (label, points)
         })

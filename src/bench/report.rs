@@ -3,14 +3,14 @@
 
 use std::fmt::Write;
 
-use super::run::{BenchResult, Case, SceneInfo, View};
+use super::run::{BenchResult, Measurement, SceneCamera, SceneInfo};
 
 /// Mean-error levels (1/255) at which the report names the fastest method.
 pub const ERROR_LEVELS: &[f64] = &[0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0];
 
 /// A case's time per frame (GPU + CPU) over the atlas baseline's in the same scene and
 /// view.
-pub fn ratio_to_baseline(result: &BenchResult, case: &Case) -> Option<f64> {
+pub fn ratio_to_baseline(result: &BenchResult, case: &Measurement) -> Option<f64> {
     if case.is_reference() {
         return None;
     }
@@ -24,7 +24,7 @@ pub fn ratio_to_baseline(result: &BenchResult, case: &Case) -> Option<f64> {
 /// The fastest GPU case of `cases` (by GPU + CPU time per frame) whose mean error is at
 /// most `level` (1/255) and which has no pixel off by more than 0.5: a method with
 /// rare full-pixel artifacts is not "accurate on average".
-pub fn fastest_within<'a>(cases: &[&'a Case], level: f64) -> Option<&'a Case> {
+pub fn fastest_within<'a>(cases: &[&'a Measurement], level: f64) -> Option<&'a Measurement> {
     cases
         .iter()
         .copied()
@@ -34,7 +34,7 @@ pub fn fastest_within<'a>(cases: &[&'a Case], level: f64) -> Option<&'a Case> {
         .map(|(c, _)| c)
 }
 
-fn cases_of<'a>(result: &'a BenchResult, info: &SceneInfo) -> Vec<&'a Case> {
+fn cases_of<'a>(result: &'a BenchResult, info: &SceneInfo) -> Vec<&'a Measurement> {
     result
         .cases
         .iter()
@@ -97,8 +97,8 @@ fn scene_sections(result: &BenchResult, clock: &str, md: &mut String) {
             continue;
         }
         let view = match info.view {
-            View::Own => String::new(),
-            View::Moved => format!(
+            SceneCamera::Own => String::new(),
+            SceneCamera::Moved => format!(
                 ", after caching: zoomed {}×, turned {}°",
                 super::scenes::MOVED_ZOOM,
                 super::scenes::MOVED_ROTATION_DEG
@@ -189,10 +189,10 @@ fn summary(result: &BenchResult, md: &mut String) {
          | scene | view | atlas MAE /255 (max) | most accurate | fastest, MAE ≤ 0.5 | fastest, MAE ≤ 1 |\n\
          |---|---|---:|---|---|---|\n",
     );
-    let named = |c: &Case| format!("{} {}", c.method, c.settings()).replace(" default", "");
+    let named = |c: &Measurement| format!("{} {}", c.method, c.settings()).replace(" default", "");
     for info in &result.scenes {
         let cases = cases_of(result, info);
-        let gpu: Vec<&Case> = cases
+        let gpu: Vec<&Measurement> = cases
             .iter()
             .copied()
             .filter(|c| !c.is_reference())
@@ -220,8 +220,8 @@ fn summary(result: &BenchResult, md: &mut String) {
             })
         });
         let view = match info.view {
-            View::Own => "own",
-            View::Moved => "moved",
+            SceneCamera::Own => "own",
+            SceneCamera::Moved => "moved",
         };
         let _ = writeln!(
             md,

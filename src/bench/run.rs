@@ -4,9 +4,9 @@
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
 
+use super::method_settings;
 use super::scaling::{self, ScalingPoint, Series};
 use super::scenes::{self, BenchScene};
-use super::sweep;
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::GpuContext;
@@ -64,7 +64,7 @@ pub struct BenchOptions {
 /// Which view of a scene a case was measured in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
-pub enum View {
+pub enum SceneCamera {
     /// The scene's own camera; the atlas is cached at this size.
     Own,
     /// After caching: zoomed 2.5× and turned 30°; the atlas keeps the cache made for
@@ -76,7 +76,7 @@ pub enum View {
 #[derive(Clone, Debug, Serialize)]
 pub struct SceneInfo {
     pub name: String,
-    pub view: View,
+    pub view: SceneCamera,
     pub about: String,
     pub width: u32,
     pub height: u32,
@@ -91,9 +91,9 @@ pub struct SceneInfo {
 
 /// One method at one setting in one view of one scene.
 #[derive(Clone, Debug, Serialize)]
-pub struct Case {
+pub struct Measurement {
     pub scene: String,
-    pub view: View,
+    pub view: SceneCamera,
     pub method: String,
     pub params: Vec<(String, String)>,
     /// Median GPU time of a frame (the reference: its CPU time), ms.
@@ -120,7 +120,7 @@ pub struct Case {
     pub error: ErrorStats,
 }
 
-impl Case {
+impl Measurement {
     /// `k=v, k=v`, or `default`.
     pub fn settings(&self) -> String {
         let shown: Vec<String> = self
@@ -150,7 +150,7 @@ impl Case {
 /// One view of a scene, ready to measure methods in: its reference drawn once.
 struct ViewUnderTest<'a> {
     scene_name: &'a str,
-    view: View,
+    view: SceneCamera,
     scene: Scene,
     camera: Camera,
     reference: Measured,
@@ -164,7 +164,7 @@ impl ViewUnderTest<'_> {
         method: &MethodInfo,
         params: Vec<(String, String)>,
         timing: FrameTiming,
-    ) -> Result<Case, Error> {
+    ) -> Result<Measurement, Error> {
         let reference = &self.reference;
         let (stats, error) = if method.is_reference() {
             let exact = metrics::compare(&reference.image, &reference.image)?;
@@ -175,7 +175,7 @@ impl ViewUnderTest<'_> {
             let error = metrics::compare(&measured.image, &reference.image)?;
             (measured.stats, error)
         };
-        Ok(Case {
+        Ok(Measurement {
             scene: self.scene_name.to_owned(),
             view: self.view,
             method: method.name.to_owned(),
@@ -205,7 +205,7 @@ pub struct BenchResult {
     pub quick: bool,
     pub timing: Rounds,
     pub scenes: Vec<SceneInfo>,
-    pub cases: Vec<Case>,
+    pub cases: Vec<Measurement>,
     /// How each method is timed at each point of the scaling series.
     pub scaling_timing: FrameTiming,
     /// The scaling series' points, series after series.
@@ -327,7 +327,7 @@ fn check(options: &BenchOptions) -> Result<Plan, Error> {
 /// the same zoom and turn) — with `quick`, only `winding`'s, the contrast.
 fn settings_for(
     method: &MethodInfo,
-    view: View,
+    view: SceneCamera,
     quick: bool,
     cache_px_per_em: f64,
 ) -> Vec<Vec<(String, String)>> {
@@ -335,8 +335,8 @@ fn settings_for(
         return vec![Vec::new()];
     }
     let is_baseline = method.role == registry::Role::Baseline;
-    let mut all = sweep::sweep(method, quick);
-    if view == View::Moved && !is_baseline {
+    let mut all = method_settings::settings(method, quick);
+    if view == SceneCamera::Moved && !is_baseline {
         let kept = if quick && method.name != QUICK_MOVED_CONTRAST {
             0
         } else {
@@ -392,8 +392,9 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
             .map(|m| settings_for(m, view, options.quick, 0.0).len())
             .sum()
     };
-    let total = chosen.len() * (per_view(View::Own) + per_view(View::Moved)) * timing.rounds
-        + plan.series.len() * plan.scaling_points * scaling_methods.len();
+    let total =
+        chosen.len() * (per_view(SceneCamera::Own) + per_view(SceneCamera::Moved)) * timing.rounds
+            + plan.series.len() * plan.scaling_points * scaling_methods.len();
     // Hidden by indicatif itself when stderr is not a terminal.
     let progress = ProgressBar::new(total as u64).with_style(
         ProgressStyle::with_template("{elapsed_precise} {wide_bar} {pos}/{len} {msg}")
@@ -412,10 +413,10 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
     for bench_scene in chosen {
         let (_, own_camera) = bench_scene.args.build()?;
         let cache = atlas::auto_cache_size(own_camera.size_px_per_em);
-        for view in [View::Own, View::Moved] {
+        for view in [SceneCamera::Own, SceneCamera::Moved] {
             let args = match view {
-                View::Own => bench_scene.args.clone(),
-                View::Moved => scenes::moved_args(&bench_scene.args, &own_camera),
+                SceneCamera::Own => bench_scene.args.clone(),
+                SceneCamera::Moved => scenes::moved_args(&bench_scene.args, &own_camera),
             };
             let (scene, camera) = args.build()?;
             progress.set_message(format!("{} ({view:?}): reference", bench_scene.name));
@@ -504,17 +505,17 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
 /// Each case's figures over the rounds it was timed in: the median of the rounds'
 /// median GPU and preparation times, the fastest and slowest frame of all; the image
 /// (and so the error) is the same every round.
-fn combine_rounds(rounds: Vec<Vec<Case>>) -> Vec<Case> {
+fn combine_rounds(rounds: Vec<Vec<Measurement>>) -> Vec<Measurement> {
     let mut rounds = rounds.into_iter();
     let Some(first) = rounds.next() else {
         return Vec::new();
     };
-    let rest: Vec<Vec<Case>> = rounds.collect();
+    let rest: Vec<Vec<Measurement>> = rounds.collect();
     first
         .into_iter()
         .enumerate()
         .map(|(i, case)| {
-            let all: Vec<&Case> = std::iter::once(&case)
+            let all: Vec<&Measurement> = std::iter::once(&case)
                 .chain(rest.iter().map(|r| &r[i]))
                 .collect();
             let gpu_ms = metrics::median(all.iter().filter_map(|c| c.gpu_ms));
@@ -524,7 +525,7 @@ fn combine_rounds(rounds: Vec<Vec<Case>>) -> Vec<Case> {
                 metrics::median(all.iter().map(|c| c.cpu_prepare_ms)).unwrap_or(0.0);
             let ranges = all.iter().filter_map(|c| c.gpu_ms_range);
             let gpu_ms_range = ranges.reduce(|a, b| (a.0.min(b.0), a.1.max(b.1)));
-            Case {
+            Measurement {
                 gpu_ms,
                 cpu_frame_ms,
                 frame_ms,
@@ -540,11 +541,11 @@ fn combine_rounds(rounds: Vec<Vec<Case>>) -> Vec<Case> {
 mod tests {
     use super::*;
 
-    fn timed(gpu_ms: f64, range: (f64, f64), cpu_prepare_ms: f64) -> Case {
-        Case {
+    fn timed(gpu_ms: f64, range: (f64, f64), cpu_prepare_ms: f64) -> Measurement {
+        Measurement {
             scene: "page".into(),
-            view: View::Own,
-            method: "winding".into(),
+            view: SceneCamera::Own,
+            method: crate::methods::winding::INFO.name.into(),
             params: Vec::new(),
             gpu_ms: Some(gpu_ms),
             gpu_ms_range: Some(range),

@@ -24,7 +24,7 @@ use crate::measure::{self, FrameTiming};
 use crate::methods::atlas;
 use crate::methods::registry::{self, MethodInfo};
 use crate::metrics;
-use crate::view::ViewArgs;
+use crate::view_args::ViewArgs;
 
 /// The word the `px-per-em` series enlarges: capitals, ascenders and descenders, so
 /// its frame is a full line's height.

@@ -9,10 +9,10 @@ use crate::Error;
 use crate::camera::Camera;
 use crate::font::Font;
 use crate::geometry::Segment;
-use crate::view::ViewArgs;
+use crate::view_args::ViewArgs;
 
 /// The standard page: 2 929 glyphs of DejaVu Sans.
-pub const PAGE_TEXT: &str = include_str!("../../tests/data/page.txt");
+pub const PAGE_TEXT: &str = include_str!("../../data/page.txt");
 /// The page's size, px/em.
 pub const PAGE_PX_PER_EM: f64 = 16.0;
 

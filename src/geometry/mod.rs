@@ -6,7 +6,8 @@
 mod quadratic;
 
 pub use quadratic::{
-    DEFAULT_QUAD_TOLERANCE_EM, cubic_to_quadratics, distance_to_segment, max_distance_to_cubic,
+    DEFAULT_QUAD_TOLERANCE_EM, Quad, cubic_to_quadratics, distance_to_segment,
+    max_distance_to_cubic, signed_area,
 };
 
 use glam::{DMat3, DVec2, DVec3};

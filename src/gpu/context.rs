@@ -10,6 +10,7 @@ pub struct GpuContext {
     pub device: wgpu::Device,
     pub queue: wgpu::Queue,
     adapter: wgpu::Adapter,
+    instance: wgpu::Instance,
 }
 
 /// The features `time_frames` needs: timestamps written on the command encoder, around
@@ -38,6 +39,7 @@ impl GpuContext {
             device,
             queue,
             adapter,
+            instance,
         })
     }
 
@@ -56,12 +58,24 @@ impl GpuContext {
     /// Wraps a device someone else opened (eframe's, in the app), so that methods render
     /// on it and their targets can be drawn by that device's own passes. Timestamps work
     /// only if the device was opened with them (see [`GpuContext::device_descriptor`]).
-    pub fn from_device(adapter: wgpu::Adapter, device: wgpu::Device, queue: wgpu::Queue) -> Self {
+    pub fn from_device(
+        instance: wgpu::Instance,
+        adapter: wgpu::Adapter,
+        device: wgpu::Device,
+        queue: wgpu::Queue,
+    ) -> Self {
         GpuContext {
             device,
             queue,
             adapter,
+            instance,
         }
+    }
+
+    /// The instance and adapter the device came from, for handing the same device to
+    /// a UI (the app's tests draw the explorer on the device their checks use).
+    pub fn instance_and_adapter(&self) -> (&wgpu::Instance, &wgpu::Adapter) {
+        (&self.instance, &self.adapter)
     }
 
     /// The adapter's name and backend, e.g. "llvmpipe (LLVM 15.0.6, 256 bits) (Vulkan)".

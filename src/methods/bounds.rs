@@ -4,7 +4,7 @@
 //! Its coverage is exact, so it proves the GPU path — transform convention, instance
 //! quads, target, blending, readback — against the CPU reference on scenes whose glyphs
 //! are rectangles. It is a check, not a speed floor: the per-pixel clipping loop is
-//! heavy (on lavapipe, 245 ms for 7 000 glyph boxes at 1920×1080).
+//! heavy (its time on a scene: `glyphscope render --method bounds --stats S.json`).
 //!
 //! Per frame the CPU maps each rectangle's corners to image pixels in f64 and uploads
 //! them, relative to an integer pixel near the instance, as f32; the fragment shader

@@ -102,7 +102,8 @@ pub use crate::gpu::kit::CurveCost;
 /// alpha still holds coverage.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Overlay {
-    /// Pixels where the two nearest curves' distances tie (the seed's purple regions).
+    /// Pixels where the two nearest curves' distances tie (the purple regions of
+    /// kocsis1david's font-demo).
     EqualDistance,
     /// Cell borders, each cell tinted by how many curves it lists.
     CellGrid,

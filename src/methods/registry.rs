@@ -98,7 +98,7 @@ pub struct Claim {
     pub except: &'static [Trait],
     /// The looser bound that still holds on the limitations (None: none does).
     pub limitation: Option<Bound>,
-    /// The claim, and its limitations, in the README's words.
+    /// The claim, and its limitations, in the words of the method's page in docs/methods/.
     pub statement: &'static str,
 }
 

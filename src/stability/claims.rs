@@ -1,6 +1,6 @@
 //! What each method claims about its error, as the sweep runs it: every claimed
 //! setting of every method in the registry (each method's row states its claims, as
-//! its README section does). Outside a claim's scope the method documents a known
+//! its page in docs/methods/ does). Outside a claim's scope the method documents a known
 //! limitation, and the table still shows the measured numbers.
 
 use crate::methods::registry::{self, Claim};

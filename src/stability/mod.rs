@@ -1,11 +1,11 @@
-//! Numerical stability: the named hard cases ([`cases`]), what each method claims
+//! Numerical stability: the named hard cases ([`hard_cases`]), what each method claims
 //! ([`claims`]), the sweep that measures them against the reference ([`sweep`]), and
 //! the report `glyphscope stability` prints and writes.
 
-pub mod cases;
 pub mod claims;
+pub mod hard_cases;
 pub mod sweep;
-mod worst_cameras;
+pub mod worst_cameras;
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -13,13 +13,13 @@ use std::path::Path;
 use crate::Error;
 use crate::methods::registry::MARGIN;
 use crate::metrics;
-use cases::Case;
 use claims::Variant;
+use hard_cases::HardCase;
 use sweep::Outcome;
 
 /// The cases called `names` (all when None), or an input error naming the unknown one.
-pub fn select_cases(names: Option<&[String]>) -> Result<Vec<Case>, Error> {
-    let all = cases::all();
+pub fn select_cases(names: Option<&[String]>) -> Result<Vec<HardCase>, Error> {
+    let all = hard_cases::all();
     let Some(names) = names else { return Ok(all) };
     names
         .iter()
@@ -27,7 +27,7 @@ pub fn select_cases(names: Option<&[String]>) -> Result<Vec<Case>, Error> {
             all.iter().find(|c| c.name == name).cloned().ok_or_else(|| {
                 Error::Input(format!(
                     "unknown case '{name}'; the cases are: {}",
-                    cases::names().join(", ")
+                    hard_cases::names().join(", ")
                 ))
             })
         })
@@ -217,32 +217,10 @@ pub fn margin_table(outcomes: &[Outcome]) -> String {
     out
 }
 
-/// Rust source listing, per (case, variant) with any error at all, the camera where
-/// the error was largest: `worst_cameras.rs` for the CI grid to run.
-pub fn worst_cameras_source(outcomes: &[Outcome]) -> String {
-    let mut out = String::from(
-        "//! Written by `glyphscope stability --out DIR` (the full sweep) as\n\
-         //! `DIR/worst-cameras.rs`, and pasted here: the camera where each method was worst on\n\
-         //! each case, which the CI grid runs besides its own.\n\n\
-         use super::cases::WorstCamera;\n\n\
-         pub const WORST_CAMERAS: &[WorstCamera] = &[\n",
-    );
-    for o in outcomes.iter().filter(|o| o.max > 0.0) {
-        let w = &o.worst;
-        writeln!(
-            out,
-            "    WorstCamera {{\n        case: {:?},\n        variant: {:?},\n        \
-             rotation_deg: {:?},\n        subpixel: ({:?}, {:?}),\n    }},",
-            o.case, o.variant, w.rotation_deg, w.subpixel.0, w.subpixel.1
-        )
-        .expect("writing to a String");
-    }
-    out + "];\n"
-}
-
 /// Writes, under `dir`, each (case, variant)'s worst frame and its signed error map
 /// (red: too much coverage, blue: too little, full at 0.5), the tables (with each
-/// claim's margin) as Markdown, the outcomes as JSON, and the worst cameras as Rust.
+/// claim's margin) as Markdown, the outcomes as JSON, and the worst cameras as the CSV
+/// the CI grid reads ([`worst_cameras`]).
 pub fn write_report(dir: &Path, outcomes: &[Outcome]) -> Result<(), Error> {
     let output = |path: &Path, e: &dyn std::fmt::Display| {
         Error::Output(format!("cannot write '{}': {e}", path.display()))
@@ -268,8 +246,8 @@ pub fn write_report(dir: &Path, outcomes: &[Outcome]) -> Result<(), Error> {
     );
     let path = dir.join("stability.md");
     std::fs::write(&path, markdown).map_err(|e| output(&path, &e))?;
-    let path = dir.join("worst-cameras.rs");
-    std::fs::write(&path, worst_cameras_source(outcomes)).map_err(|e| output(&path, &e))?;
+    let path = dir.join("worst-cameras.csv");
+    std::fs::write(&path, worst_cameras::to_csv(outcomes)).map_err(|e| output(&path, &e))?;
     let path = dir.join("stability.json");
     let json = serde_json::to_string_pretty(outcomes).expect("outcomes serialize");
     std::fs::write(&path, json + "\n").map_err(|e| output(&path, &e))?;
@@ -297,6 +275,51 @@ mod tests {
             bound: bound.map(|max| within(max, 2.0)),
             failure: None,
             worst_images: None,
+        }
+    }
+
+    /// The file the full sweep writes reads back as the cameras it was written from,
+    /// and a sweep that finds an error on a pair the file lacks, or more error than the
+    /// file lists, or NaN, shows the file stale.
+    #[test]
+    fn worst_cameras_round_trip_and_go_stale() {
+        let worst = Outcome {
+            worst: Worst {
+                rotation_deg: 89.9,
+                subpixel: (0.25, 0.75),
+                pixel: (3, 4),
+            },
+            ..outcome(0.123_456_789, Some(0.5))
+        };
+        let csv: &'static str =
+            Box::leak(worst_cameras::to_csv(&[worst.clone(), outcome(0.0, None)]).into_boxed_str());
+        let cameras = worst_cameras::parse(csv).unwrap();
+        assert_eq!(
+            cameras,
+            [worst_cameras::WorstCamera {
+                case: "a-case",
+                variant: "a-method",
+                rotation_deg: 89.9,
+                subpixel: (0.25, 0.75),
+                max: 0.123_456_789,
+            }]
+        );
+        assert!(worst_cameras::stale_entries(&cameras, &[worst.clone()]).is_empty());
+        let step = worst_cameras::STALE_TOLERANCE;
+        for (max, variant) in [
+            (0.123_456_789 + 1.5 * step, "a-method"),
+            (f64::NAN, "a-method"),
+            (0.01, "another-method"),
+        ] {
+            let found = Outcome {
+                variant,
+                ..outcome(max, Some(0.5))
+            };
+            assert_eq!(
+                worst_cameras::stale_entries(&cameras, &[found]).len(),
+                1,
+                "{max} {variant}"
+            );
         }
     }
 
@@ -341,9 +364,9 @@ mod tests {
 
     #[test]
     fn case_names_are_unique() {
-        let mut names = cases::names();
+        let mut names = hard_cases::names();
         names.sort();
         names.dedup();
-        assert_eq!(names.len(), cases::all().len());
+        assert_eq!(names.len(), hard_cases::all().len());
     }
 }

@@ -5,8 +5,9 @@
 use glam::DVec2;
 use serde::Serialize;
 
-use super::cases::{Case, WORST_CAMERAS};
 use super::claims::Variant;
+use super::hard_cases::HardCase;
+use super::worst_cameras;
 use crate::Error;
 use crate::coverage::CoverageImage;
 use crate::gpu::GpuContext;
@@ -20,7 +21,7 @@ use crate::reference;
 pub struct SweepSize {
     pub offsets: Vec<DVec2>,
     pub rotations_deg: Vec<f64>,
-    /// Rotations added for the cases seen through a full turn (`Case::full_turn`).
+    /// Rotations added for the cases seen through a full turn (`HardCase::full_turn`).
     pub full_turn_deg: Vec<f64>,
     /// Cameras added for named cases (case, rotation, offset): where the full sweep
     /// found a method worst, so that a grid too coarse to contain them still runs them.
@@ -44,7 +45,7 @@ impl SweepSize {
 
     /// The CI size: 4 offsets (one per row and column of the grid) × 0° and 45°; for a
     /// full turn, every 90° besides; and the camera where the full sweep found each
-    /// method worst on each case ([`WORST_CAMERAS`]).
+    /// method worst on each case ([`worst_cameras`]).
     pub fn quick() -> SweepSize {
         SweepSize {
             offsets: [(0.0, 0.0), (0.25, 0.5), (0.5, 0.75), (0.75, 0.25)]
@@ -52,7 +53,7 @@ impl SweepSize {
                 .to_vec(),
             rotations_deg: vec![0.0, 45.0],
             full_turn_deg: every(90.0),
-            also: WORST_CAMERAS
+            also: worst_cameras::all()
                 .iter()
                 .map(|w| (w.case, w.rotation_deg, DVec2::from(w.subpixel)))
                 .collect(),
@@ -66,7 +67,7 @@ impl SweepSize {
 
     /// The rotations `case` is seen at: the sweep's, and for a full turn its full
     /// turn's too, each once, in increasing order.
-    pub fn rotations_for(&self, case: &Case) -> Vec<f64> {
+    pub fn rotations_for(&self, case: &HardCase) -> Vec<f64> {
         let mut rotations = self.rotations_deg.clone();
         if case.full_turn {
             rotations.extend(&self.full_turn_deg);
@@ -78,7 +79,7 @@ impl SweepSize {
 
     /// Every camera `case` is seen through, (rotation, offset): the grid, then the
     /// cameras added for it that the grid lacks.
-    pub fn cameras_for(&self, case: &Case) -> Vec<(f64, DVec2)> {
+    pub fn cameras_for(&self, case: &HardCase) -> Vec<(f64, DVec2)> {
         let mut cameras: Vec<(f64, DVec2)> = self
             .rotations_for(case)
             .into_iter()
@@ -140,7 +141,7 @@ pub struct Outcome {
 
 impl Outcome {
     /// `variant`'s cell on `case`, before any frame.
-    pub fn new(case: &Case, variant: &Variant) -> Outcome {
+    pub fn new(case: &HardCase, variant: &Variant) -> Outcome {
         Outcome {
             case: case.name,
             variant: variant.label,
@@ -202,7 +203,7 @@ impl Outcome {
 /// per case.
 pub fn run(
     gpu: &GpuContext,
-    cases: &[Case],
+    cases: &[HardCase],
     variants: &[Variant],
     size: &SweepSize,
     mut progress: impl FnMut(&str),

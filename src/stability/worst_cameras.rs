@@ -1,1196 +1,159 @@
-//! Written by `glyphscope stability --out DIR` (the full sweep) as
-//! `DIR/worst-cameras.rs`, and pasted here: the camera where each method was worst on
-//! each case, which the CI grid runs besides its own.
+//! The cameras where the last full sweep found each method worst on each hard case,
+//! kept as data (`data/worst-cameras.csv`, one line a camera) so that the CI grid,
+//! too coarse to contain most of them, runs them too. `glyphscope stability --out DIR`
+//! writes the file anew as `DIR/worst-cameras.csv`; copying it over the shipped one is
+//! the whole update. Each line also keeps the error the sweep measured there, which is
+//! what lets a CI run tell that the file is out of date ([`stale_entries`]).
 
-use super::cases::WorstCamera;
+use std::fmt::Write as _;
+use std::sync::OnceLock;
 
-pub const WORST_CAMERAS: &[WorstCamera] = &[
-    WorstCamera {
-        case: "vertex-on-centre-row",
-        variant: "winding",
-        rotation_deg: 1.0,
-        subpixel: (0.0, 0.25),
-    },
-    WorstCamera {
-        case: "vertex-on-centre-row",
-        variant: "winding aa=rays",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.25),
-    },
-    WorstCamera {
-        case: "vertex-on-centre-row",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "vertex-on-centre-row",
-        variant: "sdf-cells exact",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "vertex-on-centre-row",
-        variant: "xor-stencil",
-        rotation_deg: 1.0,
-        subpixel: (0.75, 0.0),
-    },
-    WorstCamera {
-        case: "vertex-on-centre-row",
-        variant: "tessellation",
-        rotation_deg: 1.0,
-        subpixel: (0.0, 0.5),
-    },
-    WorstCamera {
-        case: "horizontal-on-sample-row",
-        variant: "winding",
-        rotation_deg: 1.0,
-        subpixel: (0.0, 0.75),
-    },
-    WorstCamera {
-        case: "horizontal-on-sample-row",
-        variant: "winding aa=rays",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "horizontal-on-sample-row",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "horizontal-on-sample-row",
-        variant: "sdf-cells exact",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "horizontal-on-sample-row",
-        variant: "xor-stencil",
-        rotation_deg: 45.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "horizontal-on-sample-row",
-        variant: "tessellation",
-        rotation_deg: 45.0,
-        subpixel: (0.5, 0.75),
-    },
-    WorstCamera {
-        case: "horizontal-tangent-join",
-        variant: "winding",
-        rotation_deg: 45.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "horizontal-tangent-join",
-        variant: "winding aa=rays",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "horizontal-tangent-join",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "horizontal-tangent-join",
-        variant: "sdf-cells exact",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "horizontal-tangent-join",
-        variant: "xor-stencil",
-        rotation_deg: 0.0,
-        subpixel: (0.25, 0.75),
-    },
-    WorstCamera {
-        case: "horizontal-tangent-join",
-        variant: "tessellation",
-        rotation_deg: 45.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "collinear-quadratic",
-        variant: "winding",
-        rotation_deg: 1.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "collinear-quadratic",
-        variant: "winding aa=rays",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "collinear-quadratic",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "collinear-quadratic",
-        variant: "sdf-cells exact",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "collinear-quadratic",
-        variant: "xor-stencil",
-        rotation_deg: 0.0,
-        subpixel: (0.25, 0.0),
-    },
-    WorstCamera {
-        case: "collinear-quadratic",
-        variant: "tessellation",
-        rotation_deg: 1.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "nearly-collinear-quadratic",
-        variant: "winding",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.5),
-    },
-    WorstCamera {
-        case: "nearly-collinear-quadratic",
-        variant: "winding aa=rays",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "nearly-collinear-quadratic",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "nearly-collinear-quadratic",
-        variant: "sdf-cells exact",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "nearly-collinear-quadratic",
-        variant: "xor-stencil",
-        rotation_deg: 45.0,
-        subpixel: (0.25, 0.75),
-    },
-    WorstCamera {
-        case: "nearly-collinear-quadratic",
-        variant: "tessellation",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.0),
-    },
-    WorstCamera {
-        case: "control-point-past-curve",
-        variant: "winding",
-        rotation_deg: 0.0,
-        subpixel: (0.25, 0.0),
-    },
-    WorstCamera {
-        case: "control-point-past-curve",
-        variant: "winding aa=rays",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.0),
-    },
-    WorstCamera {
-        case: "control-point-past-curve",
-        variant: "sdf-cells",
-        rotation_deg: 45.0,
-        subpixel: (0.5, 0.25),
-    },
-    WorstCamera {
-        case: "control-point-past-curve",
-        variant: "sdf-cells exact",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.0),
-    },
-    WorstCamera {
-        case: "control-point-past-curve",
-        variant: "xor-stencil",
-        rotation_deg: 0.0,
-        subpixel: (0.75, 0.0),
-    },
-    WorstCamera {
-        case: "control-point-past-curve",
-        variant: "tessellation",
-        rotation_deg: 0.0,
-        subpixel: (0.75, 0.25),
-    },
-    WorstCamera {
-        case: "zero-length-segments",
-        variant: "winding",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "zero-length-segments",
-        variant: "winding aa=rays",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "zero-length-segments",
-        variant: "sdf-cells",
-        rotation_deg: 45.0,
-        subpixel: (0.5, 0.75),
-    },
-    WorstCamera {
-        case: "zero-length-segments",
-        variant: "sdf-cells exact",
-        rotation_deg: 45.0,
-        subpixel: (0.5, 0.75),
-    },
-    WorstCamera {
-        case: "zero-length-segments",
-        variant: "xor-stencil",
-        rotation_deg: 1.0,
-        subpixel: (0.75, 0.75),
-    },
-    WorstCamera {
-        case: "zero-length-segments",
-        variant: "tessellation",
-        rotation_deg: 1.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "f32-collapsed-segment",
-        variant: "winding",
-        rotation_deg: 89.9,
-        subpixel: (0.0, 0.5),
-    },
-    WorstCamera {
-        case: "f32-collapsed-segment",
-        variant: "winding aa=rays",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "f32-collapsed-segment",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "f32-collapsed-segment",
-        variant: "sdf-cells exact",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "f32-collapsed-segment",
-        variant: "xor-stencil",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.75),
-    },
-    WorstCamera {
-        case: "f32-collapsed-segment",
-        variant: "tessellation",
-        rotation_deg: 45.0,
-        subpixel: (0.5, 0.75),
-    },
-    WorstCamera {
-        case: "tiny-curves",
-        variant: "winding",
-        rotation_deg: 1.0,
-        subpixel: (0.75, 0.0),
-    },
-    WorstCamera {
-        case: "tiny-curves",
-        variant: "winding aa=rays",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "tiny-curves",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.25),
-    },
-    WorstCamera {
-        case: "tiny-curves",
-        variant: "sdf-cells exact",
-        rotation_deg: 1.0,
-        subpixel: (0.75, 0.75),
-    },
-    WorstCamera {
-        case: "tiny-curves",
-        variant: "xor-stencil",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.75),
-    },
-    WorstCamera {
-        case: "tiny-curves",
-        variant: "tessellation",
-        rotation_deg: 45.0,
-        subpixel: (0.5, 0.75),
-    },
-    WorstCamera {
-        case: "touching-contours",
-        variant: "winding",
-        rotation_deg: 45.0,
-        subpixel: (0.25, 0.0),
-    },
-    WorstCamera {
-        case: "touching-contours",
-        variant: "winding aa=rays",
-        rotation_deg: 89.9,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "touching-contours",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "touching-contours",
-        variant: "sdf-cells exact",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "touching-contours",
-        variant: "xor-stencil",
-        rotation_deg: 89.9,
-        subpixel: (0.5, 0.25),
-    },
-    WorstCamera {
-        case: "touching-contours",
-        variant: "tessellation",
-        rotation_deg: 1.0,
-        subpixel: (0.75, 0.25),
-    },
-    WorstCamera {
-        case: "shared-edge",
-        variant: "winding",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "shared-edge",
-        variant: "winding aa=rays",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.75),
-    },
-    WorstCamera {
-        case: "shared-edge",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "shared-edge",
-        variant: "sdf-cells exact",
-        rotation_deg: 1.0,
-        subpixel: (0.0, 0.25),
-    },
-    WorstCamera {
-        case: "shared-edge",
-        variant: "xor-stencil",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.75),
-    },
-    WorstCamera {
-        case: "shared-edge",
-        variant: "tessellation",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.0),
-    },
-    WorstCamera {
-        case: "overlapping-same-direction",
-        variant: "winding",
-        rotation_deg: 1.0,
-        subpixel: (0.25, 0.25),
-    },
-    WorstCamera {
-        case: "overlapping-same-direction",
-        variant: "winding aa=rays",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "overlapping-same-direction",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "overlapping-same-direction",
-        variant: "sdf-cells exact",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "overlapping-same-direction",
-        variant: "xor-stencil",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.25),
-    },
-    WorstCamera {
-        case: "overlapping-same-direction",
-        variant: "tessellation",
-        rotation_deg: 45.0,
-        subpixel: (0.25, 0.75),
-    },
-    WorstCamera {
-        case: "winding-256",
-        variant: "winding",
-        rotation_deg: 1.0,
-        subpixel: (0.0, 0.75),
-    },
-    WorstCamera {
-        case: "winding-256",
-        variant: "winding aa=rays",
-        rotation_deg: 1.0,
-        subpixel: (0.75, 0.0),
-    },
-    WorstCamera {
-        case: "winding-256",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "winding-256",
-        variant: "sdf-cells exact",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "winding-256",
-        variant: "xor-stencil",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "winding-256",
-        variant: "tessellation",
-        rotation_deg: 45.0,
-        subpixel: (0.0, 0.25),
-    },
-    WorstCamera {
-        case: "reversed-outer",
-        variant: "winding",
-        rotation_deg: 0.0,
-        subpixel: (0.75, 0.5),
-    },
-    WorstCamera {
-        case: "reversed-outer",
-        variant: "winding aa=rays",
-        rotation_deg: 1.0,
-        subpixel: (0.75, 0.75),
-    },
-    WorstCamera {
-        case: "reversed-outer",
-        variant: "sdf-cells",
-        rotation_deg: 89.9,
-        subpixel: (0.5, 0.75),
-    },
-    WorstCamera {
-        case: "reversed-outer",
-        variant: "sdf-cells exact",
-        rotation_deg: 1.0,
-        subpixel: (0.75, 0.75),
-    },
-    WorstCamera {
-        case: "reversed-outer",
-        variant: "xor-stencil",
-        rotation_deg: 1.0,
-        subpixel: (0.75, 0.75),
-    },
-    WorstCamera {
-        case: "reversed-outer",
-        variant: "tessellation",
-        rotation_deg: 1.0,
-        subpixel: (0.0, 0.75),
-    },
-    WorstCamera {
-        case: "figure-8",
-        variant: "winding",
-        rotation_deg: 1.0,
-        subpixel: (0.0, 0.75),
-    },
-    WorstCamera {
-        case: "figure-8",
-        variant: "winding aa=rays",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.25),
-    },
-    WorstCamera {
-        case: "figure-8",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "figure-8",
-        variant: "sdf-cells exact",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "figure-8",
-        variant: "xor-stencil",
-        rotation_deg: 45.0,
-        subpixel: (0.25, 0.5),
-    },
-    WorstCamera {
-        case: "figure-8",
-        variant: "tessellation",
-        rotation_deg: 1.0,
-        subpixel: (0.0, 0.75),
-    },
-    WorstCamera {
-        case: "pentagram",
-        variant: "winding",
-        rotation_deg: 45.0,
-        subpixel: (0.5, 0.25),
-    },
-    WorstCamera {
-        case: "pentagram",
-        variant: "winding aa=rays",
-        rotation_deg: 1.0,
-        subpixel: (0.75, 0.5),
-    },
-    WorstCamera {
-        case: "pentagram",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "pentagram",
-        variant: "sdf-cells exact",
-        rotation_deg: 89.9,
-        subpixel: (0.5, 0.25),
-    },
-    WorstCamera {
-        case: "pentagram",
-        variant: "xor-stencil",
-        rotation_deg: 45.0,
-        subpixel: (0.0, 0.75),
-    },
-    WorstCamera {
-        case: "pentagram",
-        variant: "tessellation",
-        rotation_deg: 1.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "thin-stem",
-        variant: "winding",
-        rotation_deg: 45.0,
-        subpixel: (0.5, 0.25),
-    },
-    WorstCamera {
-        case: "thin-stem",
-        variant: "winding aa=rays",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "thin-stem",
-        variant: "sdf-cells",
-        rotation_deg: 1.0,
-        subpixel: (0.75, 0.5),
-    },
-    WorstCamera {
-        case: "thin-stem",
-        variant: "sdf-cells exact",
-        rotation_deg: 1.0,
-        subpixel: (0.75, 0.5),
-    },
-    WorstCamera {
-        case: "thin-stem",
-        variant: "xor-stencil",
-        rotation_deg: 45.0,
-        subpixel: (0.0, 0.75),
-    },
-    WorstCamera {
-        case: "thin-stem",
-        variant: "tessellation",
-        rotation_deg: 89.9,
-        subpixel: (0.75, 0.75),
-    },
-    WorstCamera {
-        case: "cubic-cusp",
-        variant: "winding",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "cubic-cusp",
-        variant: "winding aa=rays",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "cubic-cusp",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "cubic-cusp",
-        variant: "sdf-cells exact",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "cubic-cusp",
-        variant: "xor-stencil",
-        rotation_deg: 89.9,
-        subpixel: (0.75, 0.75),
-    },
-    WorstCamera {
-        case: "cubic-cusp",
-        variant: "tessellation",
-        rotation_deg: 45.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "cubic-loop",
-        variant: "winding",
-        rotation_deg: 1.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "cubic-loop",
-        variant: "winding aa=rays",
-        rotation_deg: 0.0,
-        subpixel: (0.25, 0.5),
-    },
-    WorstCamera {
-        case: "cubic-loop",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "cubic-loop",
-        variant: "sdf-cells exact",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "cubic-loop",
-        variant: "xor-stencil",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "cubic-loop",
-        variant: "tessellation",
-        rotation_deg: 89.9,
-        subpixel: (0.0, 0.5),
-    },
-    WorstCamera {
-        case: "cubic-inflection",
-        variant: "winding",
-        rotation_deg: 45.0,
-        subpixel: (0.0, 0.75),
-    },
-    WorstCamera {
-        case: "cubic-inflection",
-        variant: "winding aa=rays",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "cubic-inflection",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "cubic-inflection",
-        variant: "sdf-cells exact",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "cubic-inflection",
-        variant: "xor-stencil",
-        rotation_deg: 1.0,
-        subpixel: (0.0, 0.25),
-    },
-    WorstCamera {
-        case: "cubic-inflection",
-        variant: "tessellation",
-        rotation_deg: 1.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "near-tangent-vertex-y",
-        variant: "winding",
-        rotation_deg: 1.0,
-        subpixel: (0.0, 0.25),
-    },
-    WorstCamera {
-        case: "near-tangent-vertex-y",
-        variant: "winding aa=rays",
-        rotation_deg: 89.9,
-        subpixel: (0.0, 0.25),
-    },
-    WorstCamera {
-        case: "near-tangent-vertex-y",
-        variant: "sdf-cells",
-        rotation_deg: 1.0,
-        subpixel: (0.0, 0.25),
-    },
-    WorstCamera {
-        case: "near-tangent-vertex-y",
-        variant: "sdf-cells exact",
-        rotation_deg: 45.0,
-        subpixel: (0.0, 0.5),
-    },
-    WorstCamera {
-        case: "near-tangent-vertex-y",
-        variant: "xor-stencil",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.5),
-    },
-    WorstCamera {
-        case: "near-tangent-vertex-y",
-        variant: "tessellation",
-        rotation_deg: 45.0,
-        subpixel: (0.5, 0.25),
-    },
-    WorstCamera {
-        case: "near-tangent-vertex-x",
-        variant: "winding",
-        rotation_deg: 45.0,
-        subpixel: (0.25, 0.5),
-    },
-    WorstCamera {
-        case: "near-tangent-vertex-x",
-        variant: "winding aa=rays",
-        rotation_deg: 89.9,
-        subpixel: (0.0, 0.25),
-    },
-    WorstCamera {
-        case: "near-tangent-vertex-x",
-        variant: "sdf-cells",
-        rotation_deg: 45.0,
-        subpixel: (0.0, 0.5),
-    },
-    WorstCamera {
-        case: "near-tangent-vertex-x",
-        variant: "sdf-cells exact",
-        rotation_deg: 45.0,
-        subpixel: (0.0, 0.5),
-    },
-    WorstCamera {
-        case: "near-tangent-vertex-x",
-        variant: "xor-stencil",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "near-tangent-vertex-x",
-        variant: "tessellation",
-        rotation_deg: 45.0,
-        subpixel: (0.0, 0.75),
-    },
-    WorstCamera {
-        case: "glyphs-2px",
-        variant: "winding",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "glyphs-2px",
-        variant: "winding aa=rays",
-        rotation_deg: 1.0,
-        subpixel: (0.25, 0.25),
-    },
-    WorstCamera {
-        case: "glyphs-2px",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.25, 0.25),
-    },
-    WorstCamera {
-        case: "glyphs-2px",
-        variant: "sdf-cells exact",
-        rotation_deg: 1.0,
-        subpixel: (0.25, 0.5),
-    },
-    WorstCamera {
-        case: "glyphs-2px",
-        variant: "xor-stencil",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.25),
-    },
-    WorstCamera {
-        case: "glyphs-2px",
-        variant: "tessellation",
-        rotation_deg: 1.0,
-        subpixel: (0.5, 0.75),
-    },
-    WorstCamera {
-        case: "glyph-100000px-edge",
-        variant: "winding",
-        rotation_deg: 45.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "glyph-100000px-edge",
-        variant: "winding aa=rays",
-        rotation_deg: 45.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "glyph-100000px-edge",
-        variant: "sdf-cells",
-        rotation_deg: 45.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "glyph-100000px-edge",
-        variant: "sdf-cells exact",
-        rotation_deg: 45.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "glyph-100000px-edge",
-        variant: "xor-stencil",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.5),
-    },
-    WorstCamera {
-        case: "glyph-100000px-edge",
-        variant: "tessellation",
-        rotation_deg: 45.0,
-        subpixel: (0.5, 0.75),
-    },
-    WorstCamera {
-        case: "glyph-max-size-edge",
-        variant: "winding",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.0),
-    },
-    WorstCamera {
-        case: "glyph-max-size-edge",
-        variant: "winding aa=rays",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.0),
-    },
-    WorstCamera {
-        case: "glyph-max-size-edge",
-        variant: "sdf-cells",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.0),
-    },
-    WorstCamera {
-        case: "glyph-max-size-edge",
-        variant: "sdf-cells exact",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.0),
-    },
-    WorstCamera {
-        case: "glyph-max-size-edge",
-        variant: "xor-stencil",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.5),
-    },
-    WorstCamera {
-        case: "glyph-max-size-edge",
-        variant: "tessellation",
-        rotation_deg: 45.0,
-        subpixel: (0.25, 0.5),
-    },
-    WorstCamera {
-        case: "world-offset-1e5",
-        variant: "winding",
-        rotation_deg: 0.0,
-        subpixel: (0.25, 0.0),
-    },
-    WorstCamera {
-        case: "world-offset-1e5",
-        variant: "winding aa=rays",
-        rotation_deg: 89.9,
-        subpixel: (0.5, 0.75),
-    },
-    WorstCamera {
-        case: "world-offset-1e5",
-        variant: "sdf-cells",
-        rotation_deg: 1.0,
-        subpixel: (0.25, 0.25),
-    },
-    WorstCamera {
-        case: "world-offset-1e5",
-        variant: "sdf-cells exact",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "world-offset-1e5",
-        variant: "xor-stencil",
-        rotation_deg: 45.0,
-        subpixel: (0.0, 0.5),
-    },
-    WorstCamera {
-        case: "world-offset-1e5",
-        variant: "tessellation",
-        rotation_deg: 45.0,
-        subpixel: (0.25, 0.25),
-    },
-    WorstCamera {
-        case: "world-offset-1e6",
-        variant: "winding",
-        rotation_deg: 0.0,
-        subpixel: (0.25, 0.0),
-    },
-    WorstCamera {
-        case: "world-offset-1e6",
-        variant: "winding aa=rays",
-        rotation_deg: 89.9,
-        subpixel: (0.5, 0.75),
-    },
-    WorstCamera {
-        case: "world-offset-1e6",
-        variant: "sdf-cells",
-        rotation_deg: 1.0,
-        subpixel: (0.25, 0.25),
-    },
-    WorstCamera {
-        case: "world-offset-1e6",
-        variant: "sdf-cells exact",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "world-offset-1e6",
-        variant: "xor-stencil",
-        rotation_deg: 45.0,
-        subpixel: (0.0, 0.5),
-    },
-    WorstCamera {
-        case: "world-offset-1e6",
-        variant: "tessellation",
-        rotation_deg: 45.0,
-        subpixel: (0.25, 0.25),
-    },
-    WorstCamera {
-        case: "strong-skew",
-        variant: "winding",
-        rotation_deg: 1.0,
-        subpixel: (0.5, 0.75),
-    },
-    WorstCamera {
-        case: "strong-skew",
-        variant: "winding aa=rays",
-        rotation_deg: 89.9,
-        subpixel: (0.75, 0.5),
-    },
-    WorstCamera {
-        case: "strong-skew",
-        variant: "sdf-cells",
-        rotation_deg: 45.0,
-        subpixel: (0.25, 0.25),
-    },
-    WorstCamera {
-        case: "strong-skew",
-        variant: "sdf-cells exact",
-        rotation_deg: 45.0,
-        subpixel: (0.25, 0.25),
-    },
-    WorstCamera {
-        case: "strong-skew",
-        variant: "xor-stencil",
-        rotation_deg: 45.0,
-        subpixel: (0.25, 0.75),
-    },
-    WorstCamera {
-        case: "strong-skew",
-        variant: "tessellation",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.5),
-    },
-    WorstCamera {
-        case: "inter-overlaps",
-        variant: "winding",
-        rotation_deg: 89.9,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "inter-overlaps",
-        variant: "winding aa=rays",
-        rotation_deg: 89.9,
-        subpixel: (0.25, 0.75),
-    },
-    WorstCamera {
-        case: "inter-overlaps",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "inter-overlaps",
-        variant: "sdf-cells exact",
-        rotation_deg: 45.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "inter-overlaps",
-        variant: "xor-stencil",
-        rotation_deg: 1.0,
-        subpixel: (0.25, 0.5),
-    },
-    WorstCamera {
-        case: "inter-overlaps",
-        variant: "tessellation",
-        rotation_deg: 1.0,
-        subpixel: (0.0, 0.25),
-    },
-    WorstCamera {
-        case: "latin-modern-cubics",
-        variant: "winding",
-        rotation_deg: 0.0,
-        subpixel: (0.25, 0.5),
-    },
-    WorstCamera {
-        case: "latin-modern-cubics",
-        variant: "winding aa=rays",
-        rotation_deg: 1.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "latin-modern-cubics",
-        variant: "sdf-cells",
-        rotation_deg: 89.9,
-        subpixel: (0.75, 0.0),
-    },
-    WorstCamera {
-        case: "latin-modern-cubics",
-        variant: "sdf-cells exact",
-        rotation_deg: 89.9,
-        subpixel: (0.75, 0.0),
-    },
-    WorstCamera {
-        case: "latin-modern-cubics",
-        variant: "xor-stencil",
-        rotation_deg: 1.0,
-        subpixel: (0.25, 0.5),
-    },
-    WorstCamera {
-        case: "latin-modern-cubics",
-        variant: "tessellation",
-        rotation_deg: 1.0,
-        subpixel: (0.25, 0.25),
-    },
-    WorstCamera {
-        case: "sun-symbol",
-        variant: "winding",
-        rotation_deg: 45.0,
-        subpixel: (0.75, 0.25),
-    },
-    WorstCamera {
-        case: "sun-symbol",
-        variant: "winding aa=rays",
-        rotation_deg: 1.0,
-        subpixel: (0.0, 0.0),
-    },
-    WorstCamera {
-        case: "sun-symbol",
-        variant: "sdf-cells",
-        rotation_deg: 89.9,
-        subpixel: (0.5, 0.25),
-    },
-    WorstCamera {
-        case: "sun-symbol",
-        variant: "sdf-cells exact",
-        rotation_deg: 89.9,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "sun-symbol",
-        variant: "xor-stencil",
-        rotation_deg: 30.0,
-        subpixel: (0.5, 0.0),
-    },
-    WorstCamera {
-        case: "sun-symbol",
-        variant: "tessellation",
-        rotation_deg: 60.0,
-        subpixel: (0.0, 0.75),
-    },
-    WorstCamera {
-        case: "slanted-ulp-segments",
-        variant: "winding",
-        rotation_deg: 89.9,
-        subpixel: (0.75, 0.75),
-    },
-    WorstCamera {
-        case: "slanted-ulp-segments",
-        variant: "winding aa=rays",
-        rotation_deg: 1.0,
-        subpixel: (0.5, 0.75),
-    },
-    WorstCamera {
-        case: "slanted-ulp-segments",
-        variant: "sdf-cells",
-        rotation_deg: 89.9,
-        subpixel: (0.0, 0.75),
-    },
-    WorstCamera {
-        case: "slanted-ulp-segments",
-        variant: "sdf-cells exact",
-        rotation_deg: 1.0,
-        subpixel: (0.5, 0.75),
-    },
-    WorstCamera {
-        case: "slanted-ulp-segments",
-        variant: "xor-stencil",
-        rotation_deg: 45.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "slanted-ulp-segments",
-        variant: "tessellation",
-        rotation_deg: 89.9,
-        subpixel: (0.25, 0.5),
-    },
-    WorstCamera {
-        case: "opposite-wound-contours",
-        variant: "winding",
-        rotation_deg: 1.0,
-        subpixel: (0.0, 0.5),
-    },
-    WorstCamera {
-        case: "opposite-wound-contours",
-        variant: "winding aa=rays",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "opposite-wound-contours",
-        variant: "sdf-cells",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "opposite-wound-contours",
-        variant: "sdf-cells exact",
-        rotation_deg: 0.0,
-        subpixel: (0.5, 0.5),
-    },
-    WorstCamera {
-        case: "opposite-wound-contours",
-        variant: "xor-stencil",
-        rotation_deg: 45.0,
-        subpixel: (0.25, 0.75),
-    },
-    WorstCamera {
-        case: "opposite-wound-contours",
-        variant: "tessellation",
-        rotation_deg: 45.0,
-        subpixel: (0.25, 0.5),
-    },
-];
+use super::sweep::Outcome;
+
+/// The shipped file, as the full sweep last wrote it.
+const SHIPPED_CSV: &str = include_str!("../../data/worst-cameras.csv");
+
+const HEADER: &str = "case,variant,rotation_deg,subpixel_x,subpixel_y,max";
+
+/// A camera where the full sweep found a method (a variant's label) worst on a case.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WorstCamera {
+    pub case: &'static str,
+    pub variant: &'static str,
+    pub rotation_deg: f64,
+    /// Sub-pixel offset (pixels).
+    pub subpixel: (f64, f64),
+    /// The largest pixel error the full sweep measured on this case for this variant
+    /// (here, by construction).
+    pub max: f64,
+}
+
+/// The shipped worst cameras.
+pub fn all() -> &'static [WorstCamera] {
+    static PARSED: OnceLock<Vec<WorstCamera>> = OnceLock::new();
+    PARSED.get_or_init(|| {
+        parse(SHIPPED_CSV).unwrap_or_else(|e| panic!("data/worst-cameras.csv: {e}"))
+    })
+}
+
+/// Reads the file's lines: `#` comments, the header, then one camera a line.
+pub fn parse(text: &'static str) -> Result<Vec<WorstCamera>, String> {
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.starts_with('#') && !l.trim().is_empty());
+    match lines.next() {
+        Some((_, header)) if header == HEADER => {}
+        other => return Err(format!("the header is not '{HEADER}': {other:?}")),
+    }
+    lines
+        .map(|(index, line)| {
+            let line_no = index + 1;
+            let fields: Vec<&'static str> = line.split(',').collect();
+            let [case, variant, rotation, x, y, max] = fields[..] else {
+                return Err(format!(
+                    "line {line_no}: 6 fields expected, found {}",
+                    fields.len()
+                ));
+            };
+            let number = |field: &str| {
+                field
+                    .parse::<f64>()
+                    .ok()
+                    .filter(|v| v.is_finite())
+                    .ok_or_else(|| format!("line {line_no}: '{field}' is not a finite number"))
+            };
+            Ok(WorstCamera {
+                case,
+                variant,
+                rotation_deg: number(rotation)?,
+                subpixel: (number(x)?, number(y)?),
+                max: number(max)?,
+            })
+        })
+        .collect()
+}
+
+/// The file for `outcomes` of a full sweep: per (case, variant) with any error at all,
+/// the camera where the error was largest.
+pub fn to_csv(outcomes: &[Outcome]) -> String {
+    let mut out = format!(
+        "# Generated by `glyphscope stability --out DIR` (the full sweep) as\n\
+         # DIR/worst-cameras.csv: copy it to data/worst-cameras.csv; do not edit by hand.\n\
+         # Per hard case and method variant, the camera where the sweep found the largest\n\
+         # pixel error, and that error. The CI grid runs every camera listed here.\n\
+         {HEADER}\n"
+    );
+    for o in outcomes.iter().filter(|o| o.max > 0.0) {
+        let w = &o.worst;
+        writeln!(
+            out,
+            "{},{},{:?},{:?},{:?},{:?}",
+            o.case, o.variant, w.rotation_deg, w.subpixel.0, w.subpixel.1, o.max
+        )
+        .expect("writing to a String");
+    }
+    out
+}
+
+/// How much larger an error the CI grid may find than the full sweep recorded before
+/// the file counts as out of date: one 8-bit step. The CI grid's cameras are a subset
+/// of the full sweep's, so on the device that wrote the file it can never find more;
+/// another driver may round a pixel differently by far less than a step.
+pub const STALE_TOLERANCE: f64 = 1.0 / 255.0;
+
+/// What shows `cameras` out of date against `outcomes` of a sweep whose cameras the
+/// full sweep contains (the CI grid): a (case, variant) with some error and no camera
+/// listed, or one whose error exceeds the listed worst by more than [`STALE_TOLERANCE`]
+/// (or is not a number). Empty when the file is current.
+pub fn stale_entries(cameras: &[WorstCamera], outcomes: &[Outcome]) -> Vec<String> {
+    let mut stale = Vec::new();
+    for o in outcomes.iter().filter(|o| !(o.max <= 0.0)) {
+        let listed = cameras
+            .iter()
+            .find(|w| w.case == o.case && w.variant == o.variant);
+        match listed {
+            None => stale.push(format!(
+                "{} × {}: off by {:.4} but no worst camera is listed",
+                o.case, o.variant, o.max
+            )),
+            Some(w) if !(o.max <= w.max + STALE_TOLERANCE) => stale.push(format!(
+                "{} × {}: off by {:.4}, more than the listed worst {:.4}",
+                o.case, o.variant, o.max, w.max
+            )),
+            Some(_) => {}
+        }
+    }
+    stale
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_shipped_file_parses_and_names_each_pair_once() {
+        let cameras = all();
+        assert!(!cameras.is_empty());
+        for (k, a) in cameras.iter().enumerate() {
+            assert!(a.max > 0.0, "{a:?}");
+            assert!(
+                !cameras[..k]
+                    .iter()
+                    .any(|b| b.case == a.case && b.variant == a.variant),
+                "{a:?} twice"
+            );
+        }
+    }
+
+    #[test]
+    fn malformed_lines_are_named() {
+        let header = "case,variant,rotation_deg,subpixel_x,subpixel_y,max\n";
+        let short: &'static str = Box::leak(format!("{header}a,b,1.0,0.0\n").into_boxed_str());
+        assert!(parse(short).unwrap_err().contains("6 fields"));
+        let nan: &'static str =
+            Box::leak(format!("{header}a,b,1.0,0.0,0.25,NaN\n").into_boxed_str());
+        assert!(parse(nan).unwrap_err().contains("'NaN'"));
+        assert!(parse("case,variant\n").unwrap_err().contains("header"));
+    }
+}

@@ -10,8 +10,8 @@ use glyphscope::geometry::Outline;
 use glyphscope::gpu::GpuContext;
 use glyphscope::scene::Scene;
 /// A scene holding an outline once at the origin, where 1 font unit = 1 px.
-pub use glyphscope::stability::cases::synthetic_scene as single;
-pub use glyphscope::stability::cases::{polygon, rect};
+pub use glyphscope::stability::hard_cases::synthetic_scene as single;
+pub use glyphscope::stability::hard_cases::{polygon, rect};
 
 /// The GPU, opened once per test binary. Without an adapter the tests that need it fail
 /// with the message that says how to get one (CI installs lavapipe) rather than skip

@@ -12,9 +12,9 @@
 //!
 //! Every point of the cell then finds its nearest curve (and every curve it ties with)
 //! in the list, whatever the zoom: the list does not depend on the pixel size, unlike
-//! the seed's lists of curves crossing the cell. The bound is loose by about the cell's
-//! diagonal, so a long list is tightened once to the union of its quarters' lists
-//! (about a fifth fewer curves per pixel). Cells are grown by a small pad first, since
+//! the lists of curves crossing the cell in kocsis1david's font-demo. The bound is loose
+//! by about the cell's diagonal, so a long list is tightened once to the union of its
+//! quarters' lists (fewer curves per pixel). Cells are grown by a small pad first, since
 //! the shader picks a point's cell in f32.
 //!
 //! Exact mode also needs the winding number, from a ray to +x: each grid row gets a band
@@ -26,13 +26,14 @@ use std::ops::Range;
 use glam::DVec2;
 use lyon_geom::{LineSegment, QuadraticBezierSegment};
 
-use super::curves::{CurveLayout, Quad};
+use super::curves::CurveLayout;
+use crate::geometry::Quad;
 use crate::geometry::Rect;
 
 /// Which distance decides the nearest curve.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Mode {
-    /// The seed's estimate: nearest by distance to the chord p0–p2, signed by the
+    /// font-demo's estimate: nearest by distance to the chord p0–p2, signed by the
     /// tangent line there.
     Estimate,
     /// True distance to each quadratic, signed by the winding number.

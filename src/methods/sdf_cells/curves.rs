@@ -1,5 +1,5 @@
 //! A glyph's outline as the shader reads it: quadratic Béziers only, filled on their
-//! right, in the seed's point layout.
+//! right, in the point layout of kocsis1david's font-demo.
 //!
 //! Layout, per contour of n curves (font units, y up):
 //!
@@ -16,12 +16,9 @@
 use glam::DVec2;
 
 use crate::camera::Camera;
-use crate::geometry::{Contour, Outline, Segment};
+use crate::geometry::{Contour, Outline, Quad, Segment, signed_area};
 use crate::reference;
 use crate::scene::Scene;
-
-/// A quadratic Bézier: start, control, end.
-pub type Quad = [DVec2; 3];
 
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct CurveLayout {
@@ -38,7 +35,7 @@ impl CurveLayout {
     /// Lays out `outline` (cubics must already be quadratics). Lines become quadratics
     /// with the control point at their midpoint; segments too short in f32 to have a
     /// direction are merged into the next one ([`contour_quads`]); each contour is
-    /// turned so that the fill lies on its right, as the seed's signed distance assumes
+    /// turned so that the fill lies on its right, as font-demo's signed distance assumes
     /// ([`turn_fill_to_the_right`]).
     pub fn new(outline: &Outline) -> CurveLayout {
         let mut contours: Vec<Vec<Quad>> = outline
@@ -147,7 +144,7 @@ fn contour_quads(contour: &Contour) -> Vec<Quad> {
     kept
 }
 
-/// Turns every contour so that the filled side is on its right, as the seed's signed
+/// Turns every contour so that the filled side is on its right, as font-demo's signed
 /// distance assumes, judging each contour on its own: nonzero fill lets one glyph hold
 /// contours wound either way (two side by side, wound opposite ways, both fill), so the
 /// glyph's total orientation cannot stand for each of them. A contour's inside is the
@@ -252,8 +249,8 @@ fn ray_crossings(q: &Quad, p: DVec2) -> i32 {
 /// and the distance to the nearest curve is wrong near the curves inside the fill (a
 /// known weakness of distance fields). Measured with the exact reference at 512 px
 /// across the glyph, whose area is good to about 1e-6: a difference of 1e-4 of the area
-/// counts, so that the small folds variable fonts leave at joins (Inter's 'G' has one
-/// of 0.04%) count too.
+/// counts, so that the small folds variable fonts leave at joins (Inter's 'G' has one)
+/// count too.
 pub fn overlapping_contours(outline: &Outline) -> bool {
     let Some(bounds) = outline.control_bounds() else {
         return false;
@@ -273,16 +270,6 @@ pub fn overlapping_contours(outline: &Outline) -> bool {
     let filled = reference::rasterize(&scene, &camera).map_or(0.0, |image| image.sum());
     let filled = filled / (scale * scale);
     (filled - signed.abs()).abs() > 1e-4 * filled.max(signed.abs())
-}
-
-/// Signed area enclosed by a closed chain of quadratics (positive counter-clockwise,
-/// y up): the polygon of their endpoints plus, for each, the parabolic segment between
-/// the curve and its chord, 2/3 of its control triangle.
-pub fn signed_area(contour: &[Quad]) -> f64 {
-    contour
-        .iter()
-        .map(|[a, b, c]| 0.5 * a.perp_dot(*c) + (b - a).perp_dot(c - a) / 3.0)
-        .sum()
 }
 
 #[cfg(test)]
@@ -511,14 +498,6 @@ mod tests {
             ray_crossings(&q((-1.0, -1.0), (0.0, 0.0), (-1.0, 1.0)), p),
             0
         );
-    }
-
-    #[test]
-    fn parabola_area_is_two_thirds_of_its_triangle() {
-        // y = x(2 - x)·… : the chord (0,0)-(2,0) and control (1,2) enclose 4/3.
-        let q = [DVec2::ZERO, DVec2::new(1.0, 2.0), DVec2::new(2.0, 0.0)];
-        let back = [DVec2::new(2.0, 0.0), DVec2::new(1.0, 0.0), DVec2::ZERO];
-        assert!((signed_area(&[q, back]) + 4.0 / 3.0).abs() < 1e-12);
     }
 
     #[test]

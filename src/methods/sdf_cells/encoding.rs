@@ -1,17 +1,18 @@
 //! How a cell's curve list reaches the shader: one u32 per cell.
 //!
-//! **Packed** (the seed's encoding, bit for bit): three loops of consecutive curves,
+//! **Packed** (the encoding of kocsis1david's font-demo, bit for bit): three loops of
+//! consecutive curves,
 //!
 //! ```text
 //!   bits 0–1 len0 · 2–4 len1 · 5–7 len2 · 8–15 begin0 · 16–23 begin1 · 24–31 begin2
 //! ```
 //!
 //! where `begin` is a slot (point index / 2) and `len` a number of curves: at most
-//! 3 + 7 + 7 = 17 curves in three runs, starting within the first 256 slots (the seed's
+//! 3 + 7 + 7 = 17 curves in three runs, starting within the first 256 slots (font-demo's
 //! 512 points). A run may take in curves the cell does not need, to bridge a gap.
 //!
-//! **List** (general): where the seed's word cannot hold a cell, the word escapes to a
-//! list: all three lengths zero (a pattern the seed never needs, since every cell lists
+//! **List** (general): where font-demo's word cannot hold a cell, the word escapes to a
+//! list: all three lengths zero (a pattern font-demo never needs, since every cell lists
 //! a curve) and bits 8–31 the offset, from the glyph's first word, of `count` followed
 //! by `count` slots. Any cell fits; `encoding=list` escapes every cell.
 
@@ -123,7 +124,7 @@ pub struct EncodedCells {
 }
 
 impl EncodedCells {
-    /// Packs every cell of `lists` that the seed's word can hold (all of them when
+    /// Packs every cell of `lists` that font-demo's word can hold (all of them when
     /// `pack`, none otherwise) and lists the others. `None` when the lists are too long
     /// for an escape word's offset (over 16 million words for one glyph).
     pub fn new(lists: &[Vec<u32>], layout: &CurveLayout, pack: bool) -> Option<EncodedCells> {
@@ -192,14 +193,14 @@ mod tests {
     }
 
     #[test]
-    fn words_follow_the_seeds_bit_layout() {
+    fn words_follow_font_demos_bit_layout() {
         let runs = [
             Run { begin: 5, len: 3 },
             Run { begin: 200, len: 7 },
             Run { begin: 255, len: 6 },
         ];
         let word = pack(runs);
-        // The seed's decoder, verbatim in spirit.
+        // font-demo's decoder, verbatim in spirit.
         assert_eq!(word & 3, 3);
         assert_eq!((word >> 2) & 7, 7);
         assert_eq!((word >> 5) & 7, 6);
@@ -242,7 +243,7 @@ mod tests {
     }
 
     #[test]
-    fn slots_past_the_seeds_reach_do_not_pack() {
+    fn slots_past_font_demos_reach_do_not_pack() {
         // 300 curves in one contour: slots 1..=300.
         let layout = layout(&[300]);
         assert!(pack_cell(&[250, 255], &layout).is_some());

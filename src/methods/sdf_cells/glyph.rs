@@ -70,8 +70,8 @@ impl PreparedGlyph {
         };
         let pack = settings.encoding != EncodingChoice::List;
         let mut cells = EncodedCells::new(&lists, &layout, pack).ok_or_else(too_long)?;
-        // `packed`: refine an automatic grid until the seed's word holds every cell, for
-        // glyphs whose curves all begin within its reach.
+        // `packed`: refine an automatic grid until the packed word of kocsis1david's
+        // font-demo holds every cell, for glyphs whose curves all begin within its reach.
         while settings.encoding == EncodingChoice::Packed
             && settings.grid == GridChoice::Auto
             && layout.slots() <= MAX_BEGIN_SLOT + 1

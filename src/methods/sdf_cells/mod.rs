@@ -1,8 +1,9 @@
 //! `sdf-cells`: a signed distance to the outline, per pixel, from the few curves listed
-//! in the pixel's cell of a grid over its glyph (seeds 000 and 001).
+//! in the pixel's cell of a grid over its glyph (kocsis1david's font-demo, and Clément
+//! Bœsch's "GPU-computed distances" article for exact distances and the effects).
 //!
-//! - **estimate** (seed 000): the curve nearest by its chord decides; the distance is to
-//!   its tangent line at the chord's projection parameter, and near-ties (`bias`) are
+//! - **estimate** (font-demo's): the curve nearest by its chord decides; the distance is
+//!   to its tangent line at the chord's projection parameter, and near-ties (`bias`) are
 //!   merged by min or max according to how the outline turns at the tied curves' join.
 //!   Cheap; wrong where the chord misjudges which curve is nearest or the tangent line
 //!   misjudges the side.
@@ -17,7 +18,7 @@
 //! (dilate/erode, outline, glow) act on the same distance.
 //!
 //! CPU side per distinct glyph: [`curves`] lays the quadratics out, [`cells`] chooses
-//! what each cell lists, [`encoding`] packs it (the seed's u32) or lists it, [`glyph`]
+//! what each cell lists, [`encoding`] packs it (font-demo's u32) or lists it, [`glyph`]
 //! puts these together. Shader: `shaders/sdf_cells.wgsl`.
 
 pub mod cells;
@@ -59,7 +60,8 @@ pub const INFO: MethodInfo = MethodInfo {
             claim: Claim {
                 // What the estimate is for: text, whose contours neither overlap nor
                 // touch, at sizes where an edge has a pixel to itself. Last measured
-                // there: max 0.482 (strong-skew), MAE 1.85/255 (control-point-past-curve).
+                // there (`cargo run --release -- stability --methods sdf-cells`): max
+                // 0.482 (strong-skew), MAE 1.85/255 (control-point-past-curve).
                 bound: Some(within(0.65, 2.4)),
                 except: &[
                     Trait::Overlapping,
@@ -68,7 +70,7 @@ pub const INFO: MethodInfo = MethodInfo {
                 ],
                 // Cracks read a covered pixel as empty: no bound.
                 limitation: None,
-                statement: "estimate (the seed's): no pixel off by more than 0.65 on \
+                statement: "estimate (font-demo's): no pixel off by more than 0.65 on \
                             text whose contours neither overlap nor touch, an edge to a \
                             pixel; cracks along overlaps and touching contours",
             },
@@ -77,10 +79,12 @@ pub const INFO: MethodInfo = MethodInfo {
             label: "sdf-cells exact",
             params: &[("mode", "exact")],
             claim: Claim {
-                // Last measured: max 0.499 (shared-edge), MAE 1.56/255 (shared-edge).
+                // Last measured (`cargo run --release -- stability --methods sdf-cells`):
+                // max 0.499 (shared-edge), MAE 1.56/255 (shared-edge).
                 bound: Some(within(0.65, 2.0)),
                 except: &[Trait::Overlapping, Trait::SubpixelDetail],
-                // Last measured: max 0.620 (glyphs-2px), MAE 66.01/255 (winding-256).
+                // Last measured, by the same sweep: max 0.620 (glyphs-2px), MAE
+                // 66.01/255 (winding-256).
                 limitation: Some(within(0.8, 85.0)),
                 statement: "no pixel off by more than 0.65 on outlines without overlapping \
                             contours; one edge per pixel, so detail under a pixel (a contour \
@@ -172,7 +176,7 @@ struct PreparedScene {
 pub struct Summary {
     pub glyphs: usize,
     pub cells: usize,
-    /// Cells the seed's packed word cannot hold, listed instead.
+    /// Cells font-demo's packed word cannot hold, listed instead.
     pub escaped_cells: usize,
     /// Curves listed, over all cells.
     pub listed: usize,

@@ -12,16 +12,17 @@ pub const PARAMS: &[ParamSpec] = &[
         key: "mode",
         choices: &["estimate", "exact"],
         range: None,
-        help: "estimate: the seed's tangent-line distance (cheap, wrong far from high \
-               curvature and where curves tie); exact: true distance to each quadratic \
-               (a cubic solve per curve) with the sign from the winding number.",
+        help: "estimate: the tangent-line distance of kocsis1david's font-demo (cheap, \
+               wrong far from high curvature and where curves tie); exact: true distance \
+               to each quadratic (a cubic solve per curve, after Clément Bœsch's \
+               \"GPU-computed distances\" article) with the sign from the winding number.",
     },
     ParamSpec {
         key: "bias",
         choices: &["0.001", "0", "0.005"],
         range: None,
-        help: "The seed's UDIST_BIAS, em: distances closer than this tie and the turn \
-               at the join decides.",
+        help: "UDIST_BIAS of kocsis1david's font-demo, em: distances closer than this \
+               tie and the turn at the join decides.",
     },
     ParamSpec {
         key: "grid",
@@ -34,8 +35,8 @@ pub const PARAMS: &[ParamSpec] = &[
         key: "encoding",
         choices: &["auto", "packed", "list"],
         range: None,
-        help: "packed: the seed's three loops in one u32 per cell; list: offset + count \
-               into an index list; auto: packed where it fits.",
+        help: "packed: the three loops in one u32 per cell of kocsis1david's font-demo; \
+               list: offset + count into an index list; auto: packed where it fits.",
     },
     ParamSpec {
         key: "outline",
@@ -71,7 +72,7 @@ pub const OVERLAYS: &[Overlay] = &[
     Overlay::CostHeatMap,
 ];
 
-/// The seed's `UDIST_BIAS`, taken as em.
+/// The `UDIST_BIAS` of kocsis1david's font-demo, taken as em.
 pub const DEFAULT_BIAS_EM: f64 = 0.001;
 /// The largest grid a parameter may force, per side.
 pub const MAX_GRID: u32 = 64;
@@ -86,10 +87,10 @@ pub enum GridChoice {
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum EncodingChoice {
-    /// Packed for every cell the seed's word holds, the list for the others.
+    /// Packed for every cell font-demo's word holds, the list for the others.
     Auto,
     /// Packed wherever it can be: an automatic grid is refined until every cell fits,
-    /// except for glyphs past the seed's 256 slots, which no grid can fit.
+    /// except for glyphs past font-demo's 256 slots, which no grid can fit.
     Packed,
     /// The list for every cell.
     List,

@@ -1,9 +1,9 @@
-//! `tessellation`: seed 004 (jeffboody's Glyph). Each curve is cut into straight steps,
+//! `tessellation` (after Jeff Boody's Glyph): each curve is cut into straight steps,
 //! the polygons are triangulated on the CPU, and the GPU draws the triangles with
 //! hardware MSAA as the anti-aliasing.
 //!
 //! - `subdivision=fsa` (`steps=N`): N equal steps per curve; `asa` (`threshold=T`):
-//!   1 to 16 steps by the seed's average-area-error rule; `screen` (`tolerance_px=D`,
+//!   1 to 16 steps by Glyph's average-area-error rule; `screen` (`tolerance_px=D`,
 //!   the default): never more than D pixels from the curve under the current
 //!   transform ([`subdivision`]). A mode's own parameter, given alone, picks the mode.
 //! - Triangles from lyon's fill tessellator, nonzero, intersections handled ([`mesh`]).
@@ -27,7 +27,7 @@ use glam::{DMat2, DMat3, DVec2};
 
 use self::mesh::GlyphMesh;
 use self::store::{MeshKey, MeshStore};
-use self::subdivision::{Polylines, SEED_EM_PER_HEIGHT, Subdivision, TaggedContour};
+use self::subdivision::{GLYPH_TABLE_EM_PER_HEIGHT, Polylines, Subdivision, TaggedContour};
 use super::instances::Instances;
 use super::registry::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at, within};
 use super::{
@@ -66,11 +66,12 @@ pub const INFO: MethodInfo = MethodInfo {
         label: NAME,
         params: &[],
         claim: Claim {
-            // Set by the margin rule (registry::Claim); last measured: max 0.474
+            // Set by the margin rule (registry::Claim); last measured by
+            // `cargo run --release -- stability --methods tessellation`: max 0.474
             // (strong-skew), MAE 4.51/255 (latin-modern-cubics).
             bound: Some(within(0.6, 6.0)),
             except: &[Trait::SubpixelDetail],
-            // Last measured: max 0.692, MAE 4.58/255 (glyphs-2px).
+            // Last measured, by the same sweep: max 0.692, MAE 4.58/255 (glyphs-2px).
             limitation: Some(within(0.9, 6.0)),
             statement: "screen-space subdivision with 4x MSAA: no pixel off by more than \
                         0.6; four point samples cannot resolve several edges inside one pixel",
@@ -84,11 +85,13 @@ const SHADER: Shader = crate::method_shader!("tessellation.wgsl");
 pub const NAME: &str = "tessellation";
 const OVERLAYS: &[Overlay] = &[Overlay::TriangleWireframe, Overlay::SubdivisionPoints];
 
-/// The seed's default for FSA, and the subdivision its errors are measured against.
+/// Glyph's default for FSA, and the subdivision its errors are measured against.
 pub const DEFAULT_STEPS: u32 = subdivision::BEST_STEPS;
-/// The seed's threshold for "nearly equivalent quality" (artifacts begin between 3 and 13).
+/// Glyph's threshold for "nearly equivalent quality" (artifacts begin between 3 and 13).
 pub const DEFAULT_THRESHOLD: f64 = 3.0;
-/// The screen-space tolerance's default: the budget donner#1158 was held to.
+/// The screen-space tolerance's default: the 0.1-pixel budget that jwmcglynn's Donner SVG
+/// renderer holds its fills to at any zoom (its change "Keep cubic fills accurate at high
+/// zoom").
 pub const DEFAULT_TOLERANCE_PX: f64 = 0.1;
 const MAX_STEPS: u32 = 1024;
 const TOLERANCE_RANGE_PX: std::ops::RangeInclusive<f64> = 0.01..=16.0;
@@ -141,7 +144,7 @@ struct PreparedScene {
 struct PreparedGlyph {
     id: GlyphId,
     bounds: Rect,
-    /// The outline as points and tags, the seed's input.
+    /// The outline as points and tags, Glyph's input.
     contours: Vec<TaggedContour>,
 }
 
@@ -152,21 +155,23 @@ pub const PARAMS: &[ParamSpec] = &[
         choices: &["screen", "asa", "fsa"],
         range: None,
         help: "screen: never more than tolerance_px from the curve under the current \
-               transform (re-tessellates per power-of-two zoom); asa: the seed's adaptive \
-               steps; fsa: N equal steps per curve.",
+               transform (re-tessellates per power-of-two zoom); asa: the adaptive steps \
+               of Jeff Boody's Glyph; fsa: N equal steps per curve.",
     },
     ParamSpec {
         key: "steps",
         choices: &["16", "1", "2", "4", "8"],
         range: Some((1, 1024)),
-        help: "fsa: steps per curve. More steps, more triangles; 16 is the seed's best.",
+        help: "fsa: steps per curve. More steps, more triangles; 16 is the best in Jeff \
+               Boody's Glyph.",
     },
     ParamSpec {
         key: "threshold",
         choices: &["3", "1", "13", "20"],
         range: Some((0, 1000)),
-        help: "asa: area error per length allowed (seed units); the seed sees artifacts \
-               begin between 3 and 13.",
+        help: "asa: area error per length allowed, in tenths of a unit with the glyph \
+               1000 units tall, as in Jeff Boody's Glyph; Glyph sees artifacts begin \
+               between 3 and 13.",
     },
     ParamSpec {
         key: "tolerance_px",
@@ -348,7 +353,7 @@ pub fn glyph_mesh(
     units_per_em: f64,
     subdivision: Subdivision,
 ) -> Result<(Polylines, GlyphMesh), lyon_tessellation::TessellationError> {
-    let height = units_per_em / SEED_EM_PER_HEIGHT;
+    let height = units_per_em / GLYPH_TABLE_EM_PER_HEIGHT;
     let polylines = subdivision::subdivide(contours, subdivision, height);
     let snap_em = match subdivision {
         Subdivision::Tolerance(distance) => {

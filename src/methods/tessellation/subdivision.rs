@@ -1,38 +1,38 @@
-//! The seed's subdivision (seed 004, jeffboody's Glyph): each contour walked as TrueType
-//! points and tags, each curve cut into straight steps.
+//! The subdivision of Jeff Boody's Glyph: each contour walked as TrueType points and
+//! tags, each curve cut into straight steps.
 //!
 //! - **Fixed (FSA)**: N equal parameter steps per curve.
 //! - **Adaptive (ASA)**: 1, 2, 4, 8 or 16 steps, the fewest whose average area error (below)
 //!   is under the threshold; 16 when none is.
-//! - **Tolerance** (not in the seed): the fewest equal steps that keep the polyline within
+//! - **Tolerance** (not in Glyph): the fewest equal steps that keep the polyline within
 //!   a distance of the curve — Wang's bound, through [`Segment::flatten`]. The caller sets
 //!   the distance from pixels, which is what makes it a screen-space tolerance.
 //!
-//! The seed's area error of an n-step polyline: for each step from B(ta) to B(tb), the
+//! Glyph's area error of an n-step polyline: for each step from B(ta) to B(tb), the
 //! triangles fanned from B(ta) through the 16-step points inside it to B(tb) (Heron's
 //! formula), summed, then divided by the length of the 16-step polyline. For n = 1, 2, 4, 8
-//! this is exactly the seed's Eabs/Length; any other n reads the same formula with its own
-//! step ends. Errors are quoted as the seed's table quotes them: with the glyph's height
+//! this is exactly Glyph's Eabs/Length; any other n reads the same formula with its own
+//! step ends. Errors are quoted as Glyph's table quotes them: with the glyph's height
 //! normalised to 1000.
 //!
-//! Cubics (which the seed does not support) are stepped directly, with the same rules.
+//! Cubics (which Glyph does not support) are stepped directly, with the same rules.
 
 use glam::DVec2;
 
 use crate::geometry::{Contour, Outline, Segment, from_lyon, lyon_cubic};
 
-/// Steps of the seed's "best" subdivision, the one errors are measured against.
+/// Steps of Glyph's "best" subdivision, the one errors are measured against.
 pub const BEST_STEPS: u32 = 16;
 
-/// The height the seed's errors and thresholds are normalised to (its table's glyphs were
+/// The height Glyph's errors and thresholds are normalised to (its table's glyphs were
 /// 1000 units tall).
-pub const SEED_HEIGHT: f64 = 1000.0;
+pub const GLYPH_TABLE_HEIGHT: f64 = 1000.0;
 
-/// Ems per normalised height: the seed's converter (font2outline) sets the em to 90% of
+/// Ems per normalised height: Glyph's converter (font2outline) sets the em to 90% of
 /// the glyph cell it normalises.
-pub const SEED_EM_PER_HEIGHT: f64 = 0.9;
+pub const GLYPH_TABLE_EM_PER_HEIGHT: f64 = 0.9;
 
-/// A point's tag in the TrueType outline model (the seed's `t`: 1, 0 and 2).
+/// A point's tag in the TrueType outline model (Glyph's `t`: 1, 0 and 2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Tag {
     On,
@@ -106,7 +106,7 @@ impl TaggedContour {
         self.tags.push(tag);
     }
 
-    /// The seed's state machine: for each point p1 and its neighbours p0, p2 (wrapping
+    /// Glyph's state machine: for each point p1 and its neighbours p0, p2 (wrapping
     /// around the contour), by tags (t0, t1, t2), 1 = on, 0 = conic:
     ///
     /// ```text
@@ -118,8 +118,8 @@ impl TaggedContour {
     /// 11X  line (p0, p1]
     /// ```
     ///
-    /// The seed's text gives 11X as "\[p2\]", but its code (and every count in its table)
-    /// adds p1: p2 may be a control point. Cubics, which the seed lacks, follow the same
+    /// Glyph's text gives 11X as "\[p2\]", but its code (and every count in its table)
+    /// adds p1: p2 may be a control point. Cubics, which Glyph lacks, follow the same
     /// idea: the first of two cubic controls after an on point starts the curve
     /// (p0, p3], and every other point next to a cubic control is skipped.
     pub fn curves(&self) -> Vec<Curve> {
@@ -167,8 +167,8 @@ impl TaggedContour {
 pub enum Subdivision {
     /// FSA: this many equal parameter steps per curve.
     Fixed(u32),
-    /// ASA with the seed's threshold: an average area error under threshold/10 with the
-    /// height normalised to 1000 (the `thresh` of the seed's table, 1 to 20).
+    /// ASA with Glyph's threshold: an average area error under threshold/10 with the
+    /// height normalised to 1000 (the `thresh` of Glyph's table, 1 to 20).
     Adaptive(f64),
     /// At most this distance from the curve, in the outline's units.
     Tolerance(f64),
@@ -179,13 +179,13 @@ pub enum Subdivision {
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Polylines {
     pub contours: Vec<Vec<(DVec2, PointKind)>>,
-    /// The seed's area error summed over the curves (height normalised to 1000); None
+    /// Glyph's area error summed over the curves (height normalised to 1000); None
     /// for the tolerance mode, whose measure is its distance.
     pub area_error: Option<f64>,
 }
 
 impl Polylines {
-    /// Points emitted, the seed's count.
+    /// Points emitted, as Glyph counts them.
     pub fn points(&self) -> usize {
         self.contours.iter().map(Vec::len).sum()
     }
@@ -194,7 +194,7 @@ impl Polylines {
 /// Cuts every curve of `contours` by `mode`. `height` is the glyph height in outline
 /// units that errors and thresholds are normalised against.
 pub fn subdivide(contours: &[TaggedContour], mode: Subdivision, height: f64) -> Polylines {
-    let to_seed_units = SEED_HEIGHT / height;
+    let to_glyph_table_units = GLYPH_TABLE_HEIGHT / height;
     let mut area_error = 0.0;
     let contours = contours
         .iter()
@@ -208,13 +208,13 @@ pub fn subdivide(contours: &[TaggedContour], mode: Subdivision, height: f64) -> 
                         segment.flatten(distance, &mut emit)
                     }
                     (segment, Subdivision::Fixed(steps)) => {
-                        area_error += seed_area_error(&segment, steps) * to_seed_units;
+                        area_error += average_area_error(&segment, steps) * to_glyph_table_units;
                         emit_steps(&segment, steps, &mut emit);
                     }
                     (segment, Subdivision::Adaptive(threshold)) => {
                         let (steps, error) =
-                            adaptive_steps(&segment, threshold / to_seed_units / 10.0);
-                        area_error += error * to_seed_units;
+                            adaptive_steps(&segment, threshold / to_glyph_table_units / 10.0);
+                        area_error += error * to_glyph_table_units;
                         emit_steps(&segment, steps, &mut emit);
                     }
                 }
@@ -230,12 +230,12 @@ pub fn subdivide(contours: &[TaggedContour], mode: Subdivision, height: f64) -> 
     }
 }
 
-/// The seed's ASA choice for one curve: the fewest of 1, 2, 4, 8 steps whose average
+/// Glyph's ASA choice for one curve: the fewest of 1, 2, 4, 8 steps whose average
 /// area error is under `threshold` (outline units), with that error; else 16 and 0.
 fn adaptive_steps(curve: &Segment, threshold: f64) -> (u32, f64) {
     [1, 2, 4, 8]
         .into_iter()
-        .map(|steps| (steps, seed_area_error(curve, steps)))
+        .map(|steps| (steps, average_area_error(curve, steps)))
         .find(|&(_, error)| error < threshold)
         .unwrap_or((BEST_STEPS, 0.0))
 }
@@ -248,9 +248,9 @@ fn emit_steps(curve: &Segment, steps: u32, emit: &mut impl FnMut(DVec2)) {
     emit(curve.end());
 }
 
-/// The seed's average area error of cutting `curve` into `steps` equal parameter steps
+/// Glyph's average area error of cutting `curve` into `steps` equal parameter steps
 /// (see the module docs), in outline units.
-pub fn seed_area_error(curve: &Segment, steps: u32) -> f64 {
+pub fn average_area_error(curve: &Segment, steps: u32) -> f64 {
     let best: Vec<DVec2> = (0..=BEST_STEPS)
         .map(|j| evaluate(curve, f64::from(j) / f64::from(BEST_STEPS)))
         .collect();
@@ -272,7 +272,7 @@ pub fn seed_area_error(curve: &Segment, steps: u32) -> f64 {
     area / length
 }
 
-/// The curve's point at parameter t. Quadratics as the seed writes them:
+/// The curve's point at parameter t. Quadratics as Glyph writes them:
 /// B(t) = P1 + (1−t)²(P0 − P1) + t²(P2 − P1).
 fn evaluate(curve: &Segment, t: f64) -> DVec2 {
     match *curve {
@@ -282,7 +282,7 @@ fn evaluate(curve: &Segment, t: f64) -> DVec2 {
     }
 }
 
-/// A triangle's area from its sides (Heron's formula), as the seed computes it.
+/// A triangle's area from its sides (Heron's formula), as Glyph computes it.
 fn heron(a: DVec2, b: DVec2, c: DVec2) -> f64 {
     let (x, y, z) = (a.distance(b), b.distance(c), c.distance(a));
     let s = (x + y + z) / 2.0;
@@ -364,14 +364,16 @@ mod tests {
             .sum::<f64>()
             .abs()
             / 2.0;
-        assert!((seed_area_error(&q, 1) * length - shoelace).abs() < 1e-9);
+        assert!((average_area_error(&q, 1) * length - shoelace).abs() < 1e-9);
         // 16 steps leave 1/256 of it out.
         assert!((shoelace - 400.0 / 3.0 * (1.0 - 1.0 / 256.0)).abs() < 1e-9);
         // Finer steps, smaller error; the best has none.
-        let errors: Vec<f64> = [1, 2, 3, 4, 8, 16].map(|n| seed_area_error(&q, n)).to_vec();
+        let errors: Vec<f64> = [1, 2, 3, 4, 8, 16]
+            .map(|n| average_area_error(&q, n))
+            .to_vec();
         assert!(errors.windows(2).all(|w| w[1] < w[0]), "{errors:?}");
-        assert_eq!(seed_area_error(&q, 16), 0.0);
-        assert_eq!(seed_area_error(&q, 32), 0.0);
+        assert_eq!(average_area_error(&q, 16), 0.0);
+        assert_eq!(average_area_error(&q, 32), 0.0);
     }
 
     #[test]

@@ -19,7 +19,7 @@
 use glam::DVec2;
 
 use super::area::{Bezier, monotone_pieces, t_at};
-use crate::methods::sdf_cells::curves::signed_area;
+use crate::geometry::signed_area;
 
 /// How near two curves may come before they count as touching, in em. Only the cost
 /// depends on it (a curve marked needlessly costs sub-pixels where it meets another

@@ -51,7 +51,8 @@ impl Triangles {
 /// How often to halve the cubic → quadratic tolerance for a view whose largest scale
 /// is `px_per_em`: the project's default is 1/16 px at 4096 px/em, and halving it until
 /// it is 1/16 px at this scale too keeps zooming in from showing the conversion (a
-/// fixed tolerance would not: donner#1158). Eight halvings reach 10⁶ px/em, the largest
+/// fixed tolerance would not, as jwmcglynn's Donner SVG renderer found before its change
+/// "Keep cubic fills accurate at high zoom"). Eight halvings reach 10⁶ px/em, the largest
 /// size; further, the tolerance would pass the f32 precision of the points.
 pub fn tolerance_halvings(px_per_em: f64) -> u32 {
     (px_per_em / 4096.0).log2().ceil().clamp(0.0, 8.0) as u32

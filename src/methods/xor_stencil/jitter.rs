@@ -21,7 +21,7 @@ use crate::gpu::GpuContext;
 /// With 4 samples, whose standard positions lie at 1/8, 3/8, 5/8 and 7/8 in both axes,
 /// offsets within ±1/8 keep every sample inside its pixel, as the box filter needs;
 /// the frame's samples then form a 4N-rooks pattern, but one gathered in four
-/// quarter-pixel squares (see the README for what that costs).
+/// quarter-pixel squares (docs/methods/xor-stencil.md says what that costs).
 pub fn jitter_offsets(passes: u32, samples: u32) -> Vec<DVec2> {
     let n = passes.max(1) as usize;
     let point = |i: usize, row: usize| {

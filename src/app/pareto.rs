@@ -360,8 +360,8 @@ mod tests {
 
     #[test]
     fn combinations_cover_every_choice_but_overlays() {
-        let all = combinations(methods::param_specs("winding"));
-        let one_at_a_time: usize = 1 + methods::param_specs("winding")
+        let all = combinations(methods::param_specs(methods::winding::INFO.name));
+        let one_at_a_time: usize = 1 + methods::param_specs(methods::winding::INFO.name)
             .iter()
             .filter(|s| s.key != "overlay")
             .map(|s| s.choices.len() - 1)

@@ -1,5 +1,5 @@
 //! The named hard cases: the outlines and views that broke the best-known renderers
-//! (see shared/anchors.md), each built in code or taken from a shipped font, with the
+//! (docs/sources.md names them), each built in code or taken from a shipped font, with the
 //! view it is seen through. This is the one place hard cases are defined; the method
 //! tests that need one take it from here.
 //!
@@ -24,7 +24,7 @@ const MARGIN_PX: f64 = 3.0;
 
 /// How a case's view is placed.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum View {
+pub enum Framing {
     /// The whole ink box plus a margin, moved by whole pixels only (so alignments to
     /// pixel centres survive).
     Framed,
@@ -35,7 +35,7 @@ pub enum View {
 
 /// One named hard case.
 #[derive(Clone, Debug)]
-pub struct Case {
+pub struct HardCase {
     pub name: &'static str,
     /// What it tests, in a phrase.
     pub what: &'static str,
@@ -43,7 +43,7 @@ pub struct Case {
     pub size_px_per_em: f64,
     /// Applied before the sweep's rotation (e.g. a skew).
     pub matrix: DMat2,
-    pub view: View,
+    pub view: Framing,
     pub world_offset: DVec2,
     /// What makes it hard in ways some methods document as their limits.
     pub traits: &'static [Trait],
@@ -55,19 +55,7 @@ pub struct Case {
 /// A property of a case that a method's claim may leave out of its scope.
 pub use crate::methods::registry::Trait;
 
-/// A camera where the full sweep found a method (a variant's label) worst on a case.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct WorstCamera {
-    pub case: &'static str,
-    pub variant: &'static str,
-    pub rotation_deg: f64,
-    /// Sub-pixel offset (pixels).
-    pub subpixel: (f64, f64),
-}
-
-pub use super::worst_cameras::WORST_CAMERAS;
-
-impl Case {
+impl HardCase {
     /// The case's camera, turned by `rotation_deg` about the view (after the case's own
     /// matrix) and moved by `subpixel` (pixels).
     pub fn camera(&self, rotation_deg: f64, subpixel: DVec2) -> Result<Camera, Error> {
@@ -75,14 +63,14 @@ impl Case {
         let mut camera = Camera::new(1, 1, self.size_px_per_em, DVec2::ZERO);
         camera.matrix = Camera::matrix_from_rows(cos, -sin, sin, cos) * self.matrix;
         match self.view {
-            View::Framed => {
+            Framing::Framed => {
                 let ink = camera.ink_bounds(&self.scene)?;
                 camera.origin = (DVec2::splat(MARGIN_PX) - ink.min).floor() + subpixel;
                 let extent = (ink.size() + 2.0 * MARGIN_PX + 1.0).ceil();
                 camera.width = extent.x as u32;
                 camera.height = extent.y as u32;
             }
-            View::Window { side, focus } => {
+            Framing::Window { side, focus } => {
                 camera.width = side;
                 camera.height = side;
                 let at = project(
@@ -99,33 +87,33 @@ impl Case {
 }
 
 /// Every case, in the table's order.
-pub fn all() -> Vec<Case> {
-    let synthetic = |name, what, contours: Vec<Contour>| Case {
+pub fn all() -> Vec<HardCase> {
+    let synthetic = |name, what, contours: Vec<Contour>| HardCase {
         name,
         what,
         scene: synthetic_scene(Outline { contours }),
         size_px_per_em: SYNTHETIC_PX_PER_EM,
         matrix: DMat2::IDENTITY,
-        view: View::Framed,
+        view: Framing::Framed,
         world_offset: DVec2::ZERO,
         traits: &[],
         full_turn: false,
     };
-    let overlapping = |case: Case| Case {
+    let overlapping = |case: HardCase| HardCase {
         traits: &[Trait::Overlapping],
         ..case
     };
-    let touching = |case: Case| Case {
+    let touching = |case: HardCase| HardCase {
         traits: &[Trait::TouchingContours],
         ..case
     };
     // Two edges inside one pixel.
-    let subpixel_detail = |case: Case| Case {
+    let subpixel_detail = |case: HardCase| HardCase {
         traits: &[Trait::SubpixelDetail],
         ..case
     };
     // Whole contours, or chains of curves, inside a pixel: more than 8 edges cross it.
-    let crowded = |case: Case| Case {
+    let crowded = |case: HardCase| HardCase {
         traits: &[Trait::SubpixelDetail, Trait::CrowdedPixels],
         ..case
     };
@@ -134,18 +122,18 @@ pub fn all() -> Vec<Case> {
     let glyph_o = text("o");
     let bowl = glyph_o.glyphs[0].bounds;
     let inter = Font::shipped(2);
-    let real = |name, what, scene, size_px_per_em| Case {
+    let real = |name, what, scene, size_px_per_em| HardCase {
         name,
         what,
         scene,
         size_px_per_em,
         matrix: DMat2::IDENTITY,
-        view: View::Framed,
+        view: Framing::Framed,
         world_offset: DVec2::ZERO,
         traits: &[],
         full_turn: false,
     };
-    let far = |name, what, offset: f64| Case {
+    let far = |name, what, offset: f64| HardCase {
         world_offset: DVec2::new(offset, -offset),
         ..real(name, what, text("Rg"), 37.0)
     };
@@ -277,7 +265,7 @@ pub fn all() -> Vec<Case> {
                 polygon(&rect(8.0, 8.0, 20.0, 20.0)),
             ],
         )),
-        Case {
+        HardCase {
             // Edges 0.05 px apart: some 20 of them cross each pixel of the border.
             traits: &[
                 Trait::Overlapping,
@@ -379,8 +367,8 @@ pub fn all() -> Vec<Case> {
             text("Hamburg@"),
             2.0,
         )),
-        Case {
-            view: View::Window {
+        HardCase {
+            view: Framing::Window {
                 side: 48,
                 focus: DVec2::new(bowl.min.x, (bowl.min.y + bowl.max.y) / 2.0),
             },
@@ -391,8 +379,8 @@ pub fn all() -> Vec<Case> {
                 100_000.0,
             )
         },
-        Case {
-            view: View::Window {
+        HardCase {
+            view: Framing::Window {
                 side: 48,
                 focus: DVec2::new(bowl.min.x, (bowl.min.y + bowl.max.y) / 2.0),
             },
@@ -414,7 +402,7 @@ pub fn all() -> Vec<Case> {
             "DejaVu 'Rg' at 37 px/em, scene and view moved 1e6 px",
             1e6,
         ),
-        Case {
+        HardCase {
             matrix: Camera::matrix_from_rows(1.0, 2.0, 0.0, 1.0),
             ..real(
                 "strong-skew",
@@ -435,7 +423,7 @@ pub fn all() -> Vec<Case> {
             Scene::from_text(&Font::shipped(1), "g§").expect("Latin Modern shapes it"),
             31.0,
         ),
-        Case {
+        HardCase {
             full_turn: true,
             ..real(
                 "sun-symbol",
@@ -473,7 +461,7 @@ pub fn all() -> Vec<Case> {
     ]
 }
 
-/// The sun symbol of issue 18 (a CFF glyph, 1000 units per em, advance 800), the
+/// A sun symbol (a CFF glyph, 1000 units per em, advance 800), the
 /// outline of a real symbol font's U+263C-like glyph: at 48 px/em with the origin at a
 /// whole pixel, `winding` read 0.20 for 1.0 beside (594, 284), where the cubic
 /// `574,207 588,243 594,284` ends nearly vertical and the line to (739, 284) starts.
@@ -487,7 +475,7 @@ const SUN_SYMBOL: &str = "M 384,-39 L 416,-39 L 416,107 C 470,115 491,126 526,15
     C 488,462 563,387 563,299 C 563,211 490,137 400,137 Z";
 
 /// The case called `name`.
-pub fn by_name(name: &str) -> Option<Case> {
+pub fn by_name(name: &str) -> Option<HardCase> {
     all().into_iter().find(|c| c.name == name)
 }
 

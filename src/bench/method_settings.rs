@@ -1,12 +1,12 @@
 //! The settings each method is measured at: a curated sweep across its speed/accuracy
-//! trade, listed in its registry row (see each method's README section for what the
-//! parameters do), a handful of them marked for `--quick`.
+//! trade, listed in its registry row (see each method's page in docs/methods/ for what
+//! the parameters do), a handful of them marked for `--quick`.
 
 use crate::methods::registry::MethodInfo;
 
 /// The parameter sets `method` is measured at (all, or the quick ones), as `--param`
 /// lists; the default first.
-pub fn sweep(method: &MethodInfo, quick: bool) -> Vec<Vec<(String, String)>> {
+pub fn settings(method: &MethodInfo, quick: bool) -> Vec<Vec<(String, String)>> {
     method
         .bench
         .iter()
@@ -32,10 +32,10 @@ mod tests {
     fn every_setting_is_valid() {
         for method in registry::benched() {
             let name = method.name;
-            let all = sweep(method, false);
+            let all = settings(method, false);
             assert!(all[0].is_empty(), "{name}: default first");
             assert!(
-                sweep(method, true).len() >= 2,
+                settings(method, true).len() >= 2,
                 "{name}: quick sweeps a trade"
             );
             let create = method.create.expect("a benched method is drawn on the GPU");

@@ -1,13 +1,13 @@
 //! The outline overlay painted with egui over any method: the curves, their on-curve
 //! points filled and control points hollow on their handles (traced by
-//! [`crate::outline`]).
+//! [`crate::outline_overlay`]).
 
 use eframe::egui;
 use glam::DVec2;
 
 use crate::camera::Camera;
 use crate::geometry::Rect;
-use crate::outline;
+use crate::outline_overlay;
 use crate::scene::Scene;
 
 /// Flattening tolerance, image pixels.
@@ -31,7 +31,7 @@ pub fn paint(
         max: DVec2::new(f64::from(camera.width), f64::from(camera.height)),
     };
     let block = f64::from(block);
-    let drawing = outline::trace(scene, camera, &view, TOLERANCE_PX / block, block)?;
+    let drawing = outline_overlay::trace(scene, camera, &view, TOLERANCE_PX / block, block)?;
     let origin = painter.clip_rect().min;
     let scale = block as f32 / pixels_per_point;
     let to_screen = |p: DVec2| origin + egui::vec2(p.x as f32, p.y as f32) * scale;

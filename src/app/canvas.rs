@@ -13,7 +13,7 @@ use super::analysis::Request;
 use super::blink::BLINKING_PANE;
 use super::display::{CoverageAdjust, DisplayMode};
 use super::gpu_view::{CompositeMode, PanePaint, Source, lock};
-use super::outline;
+use super::outline_painter;
 use super::panes::{REFERENCE, pane_letter, subtrahend_label};
 use super::settings::{Layout, PaneOverlay, PaneSource};
 use crate::camera::Camera;
@@ -32,7 +32,7 @@ const REST_SECONDS: f64 = 0.25;
 /// changes — the text once its field is left, not at each key — and on a first start,
 /// which opens on small text magnified on an artifact instead (see [`OPENING`]).
 #[derive(Default)]
-pub struct Framing {
+pub struct AutoFit {
     pub pending: bool,
     /// The first start's opening view is still to be placed.
     pub opening: bool,
@@ -46,7 +46,7 @@ pub const OPENING: (f64, u32) = (12.0, 8);
 
 /// What the view shows; when it stops changing, the view is at rest.
 #[derive(Clone, Debug, PartialEq)]
-pub struct ViewKey {
+pub struct CanvasKey {
     camera: Camera,
     scene: u64,
     panes: Vec<(u64, bool)>,
@@ -54,7 +54,7 @@ pub struct ViewKey {
 
 /// The pane layout and hover of the last frame.
 #[derive(Default)]
-pub struct ViewState {
+pub struct CanvasState {
     /// The camera every pane shares this frame (its size: one pane, in pixels, or the
     /// magnifier's window of it).
     pub camera: Option<Camera>,
@@ -65,9 +65,9 @@ pub struct ViewState {
     /// The wheel's scroll action began with Alt: what egui still smooths out of it is
     /// the magnifier's, not a zoom.
     magnifying_scroll: bool,
-    pub key: Option<ViewKey>,
+    pub key: Option<CanvasKey>,
     changed_at: f64,
-    pub analysed: Option<ViewKey>,
+    pub analysed: Option<CanvasKey>,
     /// Pane index and pixel under the pointer.
     pub hovered: Option<(usize, u32, u32)>,
     /// Notes to show, per pane.
@@ -129,26 +129,26 @@ impl Explorer {
         }
     }
 
-    /// Fits the text (or places a loaded case) in a `pane` of pixels when [`Framing`]
+    /// Fits the text (or places a loaded case) in a `pane` of pixels when [`AutoFit`]
     /// says so.
     fn frame_text(&mut self, ui: &egui::Ui, pane: (u32, u32)) {
-        let framing = &mut self.framing;
+        let auto_fit = &mut self.auto_fit;
         let layout = self.settings.layout;
-        if framing.layout.replace(layout).is_some_and(|l| l != layout) {
-            framing.pending = true;
+        if auto_fit.layout.replace(layout).is_some_and(|l| l != layout) {
+            auto_fit.pending = true;
         }
         let text = &self.settings.scene.text;
         if !ui.ctx().egui_wants_keyboard_input()
-            && framing.text.as_ref() != Some(text)
-            && framing.text.replace(text.clone()).is_some()
+            && auto_fit.text.as_ref() != Some(text)
+            && auto_fit.text.replace(text.clone()).is_some()
         {
-            framing.pending = true;
+            auto_fit.pending = true;
         }
-        if (framing.pending || framing.opening)
+        if (auto_fit.pending || auto_fit.opening)
             && self.scene.is_built_for(&self.settings.scene)
             && let Some(scene) = self.scene.scene().cloned()
         {
-            if std::mem::take(&mut self.framing.opening) {
+            if std::mem::take(&mut self.auto_fit.opening) {
                 let camera = &mut self.settings.camera;
                 camera.size_px_per_em = OPENING.0;
                 camera.reset(&scene);
@@ -158,7 +158,7 @@ impl Explorer {
                 let size = DVec2::new(f64::from(pane.0), f64::from(pane.1));
                 self.settings.camera.fit(&scene, size);
             }
-            self.framing.pending = false;
+            self.auto_fit.pending = false;
         }
     }
 
@@ -405,7 +405,7 @@ impl Explorer {
         }
         if settings.outline
             && let Some(scene) = self.scene.scene()
-            && let Err(e) = outline::paint(&painter, scene, camera, ppp, block)
+            && let Err(e) = outline_painter::paint(&painter, scene, camera, ppp, block)
         {
             notes.push(e);
         }
@@ -635,7 +635,7 @@ impl Explorer {
             return;
         };
         let visible = self.settings.layout.panes();
-        let key = ViewKey {
+        let key = CanvasKey {
             camera,
             scene: self.scene.generation(),
             panes: self.panes[..visible]

@@ -15,7 +15,7 @@ pub const VALUES_MAGNIFY: u32 = crate::magnify::VALUES_FROM;
 
 /// The menu's list, and what a loaded case is waiting for.
 #[derive(Default)]
-pub struct Cases {
+pub struct CasesMenu {
     /// Listed on the menu's first opening (building every case's scene takes a moment).
     views: Option<Vec<NamedView>>,
     /// The scene settings a case was loaded over: changing the font, text or glyph
@@ -61,7 +61,7 @@ impl Explorer {
         over.case = None;
         self.cases.loaded_over = Some(over);
         self.settings.scene.case = Some(name.to_owned());
-        self.framing.pending = true;
+        self.auto_fit.pending = true;
     }
 
     /// The loaded case's name, what it is, and a button back to the text.
@@ -105,7 +105,7 @@ impl Explorer {
                     pane.outline = outline;
                 }
             }
-            self.framing.pending = true;
+            self.auto_fit.pending = true;
         }
     }
 
