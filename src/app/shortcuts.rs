@@ -355,11 +355,11 @@ mod tests {
         assert_eq!(key_name(Action::Zoom(3.0)), "");
     }
 
-    /// The README's table of keys is this one, row for row.
+    /// The explorer page's table of keys is this one, row for row.
     #[test]
-    fn the_readme_lists_every_shortcut() {
-        let readme = include_str!("../../README.md");
-        let table: Vec<&str> = readme
+    fn the_explorer_page_lists_every_shortcut() {
+        let page = include_str!("../../docs/explorer.md");
+        let table: Vec<&str> = page
             .lines()
             .skip_while(|l| *l != "| keys | what |")
             .skip(2)
