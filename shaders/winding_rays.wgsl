@@ -16,8 +16,9 @@
 // sample point.
 
 // `SAMPLES` auto: four sub-samples where a pixel spans more than this part of an em
-// (text under 32 px/em, or the far side of a tilt), where one sample's error reaches
-// 1–4/255 on average; one elsewhere.
+// (text under 32 px/em, or the far side of a tilt), where one sample's error is
+// several times four's (`glyphscope bench --scenes tiny`: `aa=rays` against
+// `aa=rays, samples=1`); one elsewhere.
 const AUTO_SAMPLES_EM_PER_PIXEL: f32 = 1.0 / 32.0;
 
 // aa=rays' coverage of the pixel centred on local `centre` whose one-pixel steps are

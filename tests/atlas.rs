@@ -66,7 +66,8 @@ fn reproduces_its_cached_bitmaps_at_the_cached_size() {
             e.mae_255
         );
         // 8-bit texels: each bitmap within 1/510 of the exact coverage, two meeting in
-        // a pixel within 1/255, plus the half-float target's rounding. Measured: 0.71/255.
+        // a pixel within 1/255, plus the half-float target's rounding (measured with
+        // `cargo test --release --test atlas reproduces -- --nocapture`).
         assert!(e.max < 1.2 / 255.0, "subpixel={subpixel}: {e:?}");
         assert!(e.mae_255 < 0.05, "subpixel={subpixel}: {e:?}");
     }
@@ -162,7 +163,7 @@ fn between_phases_the_error_is_the_snap() {
     // Snapped to a quarter pixel, a glyph moves by at most 1/8 px along each axis: no
     // pixel's coverage changes by more than a pixel-wide strip 1/8 + 1/8 wide.
     assert!(quarter.max <= 0.25, "{quarter:?}");
-    // Measured: 2.4, 8.8 and 6.0/255 (max 0.15, 0.55, 0.47).
+    // Measured by `cargo test --release --test atlas between_phases -- --nocapture`.
     assert!(quarter.mae_255 < 3.0, "{quarter:?}");
     assert_worse(whole.mae_255, 2.0, quarter.mae_255, "whole pixels' MAE");
     assert_worse(resampled.mae_255, 2.0, quarter.mae_255, "resampling's MAE");
@@ -198,8 +199,8 @@ fn worse_than_winding_once_the_camera_zooms_and_turns() {
             e.mae_255, e.max, e.pixels_over_025
         );
     }
-    // Measured (mostly blank view): atlas 0.41/255, max 0.58, 838 pixels over 0.25;
-    // winding 0.004/255, max 0.15, none.
+    // Measured (a mostly blank view) by `cargo test --release --test atlas
+    // worse_than_winding -- --nocapture`.
     assert!(atlas.pixels_over_025 > 100, "{atlas:?}");
     assert_eq!(winding.pixels_over_025, 0, "{winding:?}");
     assert_worse(

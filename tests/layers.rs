@@ -9,18 +9,39 @@
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
-/// The shared part of `methods/`: the `Method` trait and its helpers (`mod.rs`), the
-/// registry that lists every method, the frame loop and the instance transforms. Every
-/// other module of `methods/` is one method's own, and may use these but no other
-/// method's.
-const METHODS_SHARED: &[&str] = &["mod", "registry", "frame", "instances"];
+/// The shared part of `methods/`, as `docs/architecture.md` lists it between its
+/// `methods-shared` markers: each item's first `name.rs`. Every other module of
+/// `methods/` is one method's own, and may use these but no other method's.
+fn methods_shared() -> Vec<String> {
+    let list = ARCHITECTURE
+        .split("<!-- methods-shared -->")
+        .nth(1)
+        .and_then(|rest| rest.split("<!-- /methods-shared -->").next())
+        .expect("docs/architecture.md lists the shared part of methods/ between markers");
+    list.lines()
+        .filter_map(|line| line.strip_prefix("- `"))
+        .filter_map(|item| item.split_once(".rs`"))
+        .map(|(name, _)| name.to_owned())
+        .collect()
+}
 
-/// The method modules: `methods/`'s folders and files outside the shared part.
+/// The method modules: `methods/`'s folders and files outside the shared part, which
+/// must exist.
 fn method_modules(src: &Path) -> Vec<String> {
-    std::fs::read_dir(src.join("methods"))
+    let shared = methods_shared();
+    let on_disk: Vec<String> = std::fs::read_dir(src.join("methods"))
         .unwrap()
         .map(|e| module_path(Path::new(&e.unwrap().file_name()))[0].clone())
-        .filter(|m| !METHODS_SHARED.contains(&m.as_str()))
+        .collect();
+    for module in &shared {
+        assert!(
+            on_disk.contains(module),
+            "methods/{module}.rs is listed as shared"
+        );
+    }
+    on_disk
+        .into_iter()
+        .filter(|m| !shared.contains(m))
         .collect()
 }
 
@@ -49,67 +70,105 @@ fn layer_of(layers: &[(String, u32)], module: &str) -> Option<u32> {
     layers.iter().find(|(m, _)| m == module).map(|&(_, l)| l)
 }
 
-/// The module paths named as `crate::a::b…` in the code of `source`, each as its names
-/// (`["methods", "winding", "area"]`; a path ends at its first item that is not a
-/// lower-case name), grouped imports (`use crate::{a, b::c}`) expanded one level.
-fn used_paths(source: &str) -> BTreeSet<Vec<String>> {
+/// The code of `source` without comments and unit tests, on one line.
+fn code_of(source: &str) -> String {
     let code = source.split("#[cfg(test)]").next().unwrap_or_default();
-    let name_of = |part: &str| -> String {
-        part.chars()
-            .take_while(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || *c == '_')
-            .collect()
-    };
-    let path_of = |text: &str| -> Vec<String> {
-        text.split("::")
-            .map(name_of)
-            .take_while(|name| !name.is_empty())
-            .collect()
-    };
-    let mut used = BTreeSet::new();
-    for line in code.lines() {
-        let line = line.trim_start();
-        if line.starts_with("//") {
-            continue;
+    code.lines()
+        .map(|line| line.split("//").next().unwrap_or_default().trim())
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// The lower-case name at the start of `text` (a module, not a type or a macro).
+fn name_of(text: &str) -> String {
+    text.chars()
+        .take_while(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || *c == '_')
+        .collect()
+}
+
+/// Every path a use tree names, its groups expanded at any depth: `a::{b, c::{d}}`
+/// gives `a::b` and `a::c::d`. Names are cut at the first one that is not a module's.
+fn expand_tree(prefix: &[String], tree: &str, out: &mut Vec<Vec<String>>) {
+    let mut path = prefix.to_vec();
+    let mut rest = tree.trim();
+    loop {
+        if let Some(group) = rest.strip_prefix('{') {
+            let inner = &group[..group.rfind('}').unwrap_or(group.len())];
+            let (mut depth, mut start, mut items) = (0, 0, Vec::new());
+            for (k, c) in inner.char_indices() {
+                match c {
+                    '{' => depth += 1,
+                    '}' => depth -= 1,
+                    ',' if depth == 0 => {
+                        items.push(&inner[start..k]);
+                        start = k + 1;
+                    }
+                    _ => {}
+                }
+            }
+            items.push(&inner[start..]);
+            // A trailing comma leaves an empty item: nothing to name.
+            for item in items.into_iter().filter(|i| !i.trim().is_empty()) {
+                expand_tree(&path, item, out);
+            }
+            return;
         }
-        for part in line.split("crate::").skip(1) {
-            if let Some(group) = part.strip_prefix('{') {
-                for item in group.split([',', '}']) {
-                    let path = path_of(item.trim());
-                    if !path.is_empty() {
-                        used.insert(path);
-                    }
+        let name = name_of(rest);
+        if name.is_empty() {
+            break;
+        }
+        path.push(name.clone());
+        match rest[name.len()..].strip_prefix("::") {
+            Some(next) => rest = next.trim_start(),
+            None => break,
+        }
+    }
+    out.push(path);
+}
+
+/// `path` as seen from the module at `module`: `crate::` dropped, `super::` and
+/// `self::` resolved against the module's own path. None for a path from outside the
+/// crate.
+fn absolute(module: &[String], path: &[String]) -> Option<Vec<String>> {
+    match path.first().map(String::as_str) {
+        Some("crate") => Some(path[1..].to_vec()),
+        Some("self") => Some([module, &path[1..]].concat()),
+        Some("super") => {
+            let ups = path.iter().take_while(|p| *p == "super").count();
+            let base = module.get(..module.len().checked_sub(ups)?)?;
+            Some([base, &path[ups..]].concat())
+        }
+        _ => None,
+    }
+}
+
+/// The crate paths the code of `source` uses, as absolute module paths seen from the
+/// module `module` (`["methods", "winding"]` for `methods/winding/mod.rs`): every `use`
+/// statement's tree, nested groups and line breaks included, and every `crate::…`
+/// written in the code.
+fn used_paths(module: &[String], source: &str) -> BTreeSet<Vec<String>> {
+    let code = code_of(source);
+    let mut trees = Vec::new();
+    for statement in code.split(';') {
+        let statement = statement.trim();
+        let tree = statement
+            .strip_prefix("pub use ")
+            .or_else(|| statement.strip_prefix("pub(crate) use "))
+            .or_else(|| statement.strip_prefix("use "));
+        match tree {
+            Some(tree) => expand_tree(&[], tree, &mut trees),
+            None => {
+                for part in statement.split("crate::").skip(1) {
+                    expand_tree(&["crate".to_owned()], part, &mut trees);
                 }
-                continue;
-            }
-            // `crate::methods::{winding, atlas}`: the group's members under the prefix.
-            if let Some((prefix, group)) = part.split_once("::{") {
-                let prefix = path_of(prefix);
-                if prefix.len() == prefix_len(part) {
-                    let members = group.split('}').next().unwrap_or_default();
-                    for item in members.split(',').filter(|i| !i.trim().is_empty()) {
-                        let mut path = prefix.clone();
-                        path.extend(path_of(item.trim()));
-                        used.insert(path);
-                    }
-                    continue;
-                }
-            }
-            let path = path_of(part);
-            if !path.is_empty() {
-                used.insert(path);
             }
         }
     }
-    used
-}
-
-/// How many plain names `part` has before its first `::{` (if that is where it ends).
-fn prefix_len(part: &str) -> usize {
-    part.split("::{")
-        .next()
-        .unwrap_or_default()
-        .split("::")
-        .count()
+    trees
+        .iter()
+        .filter_map(|path| absolute(module, path))
+        .filter(|path| !path.is_empty())
+        .collect()
 }
 
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
@@ -157,7 +216,12 @@ fn violations(
     let own = layer_of(layers, top)
         .unwrap_or_else(|| panic!("src/{top} has no row in docs/architecture.md's layers"));
     let mut found = Vec::new();
-    for used in used_paths(source) {
+    // The module a file is: `winding/mod.rs` is `winding`, `winding/area.rs` is `area`.
+    let module: Vec<String> = match path.split_last() {
+        Some((last, parent)) if last == "mod" => parent.to_vec(),
+        _ => path.to_vec(),
+    };
+    for used in used_paths(&module, source) {
         // Macros and the crate's error type are exported at the root.
         let Some(theirs) = layer_of(layers, &used[0]) else {
             continue;
@@ -228,40 +292,50 @@ fn the_architecture_table_lists_every_module_once() {
 /// part of `methods/` and its own modules.
 #[test]
 fn the_rules_catch_what_they_are_for() {
+    let names = |path: &[&str]| -> Vec<String> { path.iter().map(|p| p.to_string()).collect() };
     let used = used_paths(
+        &names(&["app"]),
         "use crate::{camera::Camera, gpu};\n// crate::app\nfn f() { crate::metrics::x(); }\n\
-         use crate::methods::{registry, winding::area};\n\
+         use crate::methods::{\n    registry,\n    winding::{area, bands},\n};\n\
+         use super::shaping;\nuse self::canvas::CanvasState;\nuse std::sync::Arc;\n\
          #[cfg(test)]\nmod tests { use crate::bench; }",
     );
     let joined: Vec<String> = used.iter().map(|p| p.join("::")).collect();
     assert_eq!(
         joined,
         [
+            "app::canvas",
             "camera",
             "gpu",
             "methods::registry",
             "methods::winding::area",
-            "metrics::x"
+            "methods::winding::bands",
+            "metrics::x",
+            "shaping"
         ]
     );
     let layers: Vec<(String, u32)> = [("geometry", 0), ("methods", 6), ("app", 11)]
         .map(|(m, l)| (m.to_owned(), l))
         .to_vec();
-    let methods: Vec<String> = ["winding", "sdf_cells", "atlas"].map(String::from).to_vec();
-    let winding: Vec<String> = ["methods", "winding", "overlaps"]
-        .map(String::from)
-        .to_vec();
+    let methods = names(&["winding", "sdf_cells", "atlas", "bounds"]);
+    let overlaps = names(&["methods", "winding", "overlaps"]);
     let check = |path: &[String], source: &str| violations(&layers, &methods, path, source);
-    let sibling = "use crate::methods::sdf_cells::curves::signed_area;";
-    assert_eq!(check(&winding, sibling).len(), 1);
-    assert_eq!(
-        check(&winding, "fn f() { crate::methods::atlas::INFO; }").len(),
-        1
-    );
-    assert_eq!(check(&winding, "use crate::app::Explorer;").len(), 1);
+    for sibling in [
+        "use crate::methods::sdf_cells::curves::signed_area;",
+        "use crate::methods::{\n    sdf_cells::{curves},\n};",
+        "use super::super::sdf_cells::curves;",
+        "fn f() { crate::methods::atlas::INFO; }",
+        "use crate::app::Explorer;",
+    ] {
+        assert_eq!(check(&overlaps, sibling).len(), 1, "{sibling}");
+    }
+    let atlas = names(&["methods", "atlas"]);
+    assert_eq!(check(&atlas, "use super::bounds::Bounds;").len(), 1);
     let allowed = "use crate::geometry::signed_area;\nuse crate::methods::{Method, registry};\n\
-                   use crate::methods::winding::area::Bezier;\nuse crate::methods::param;";
-    assert!(check(&winding, allowed).is_empty());
-    let registry: Vec<String> = ["methods", "registry"].map(String::from).to_vec();
+                   use crate::methods::winding::area::Bezier;\nuse crate::methods::param;\n\
+                   use super::area::{Bezier, t_at};\nuse super::super::registry::Role;";
+    assert!(check(&overlaps, allowed).is_empty());
+    assert!(check(&atlas, "use super::registry::{MethodInfo, Role};").is_empty());
+    let registry = names(&["methods", "registry"]);
     assert!(check(&registry, "&crate::methods::winding::INFO").is_empty());
 }

@@ -284,7 +284,8 @@ fn converges_with_supersampling_on_real_glyphs() {
             // n×n samples quantize an edge's position to 1/n px: up to 1/(2n) of a
             // pixel's area per edge through it (two edges share a pixel at 6 px/em),
             // less on average, and the difference
-            // must shrink as n grows (measured: 128×128 leaves ≤ 0.1/255 mean).
+            // must shrink as n grows (`cargo test --release --test reference converges --
+            // --nocapture` prints it).
             for (n, mean_bound, max_bound) in [(16, 1.0, 0.04), (64, 0.3, 2.0 / 128.0)] {
                 let s = compare(&got, &supersample(&scene, &cam, n)).unwrap();
                 assert!(

@@ -7,7 +7,7 @@
 //! Bounds: where contours do not overlap, the integral is exact, and what is left is
 //! f32 arithmetic and the half-float target, whose steps below 1 are 2⁻¹¹ (and the
 //! conversion to it may round either way) — hence 0.02/255 mean and 0.02 max over whole
-//! images (the bound), and one step plus f32's share where one edge is checked
+//! images (the bound `aa=area` is held to), and one step plus f32's share where one edge is checked
 //! alone.
 
 mod common;

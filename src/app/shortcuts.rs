@@ -1,5 +1,5 @@
 //! The keyboard and mouse: one table that the key handling, the help window, the
-//! controls' hover hints and the README all follow, so a shortcut cannot be listed
+//! controls' hover hints and docs/explorer.md all follow, so a shortcut cannot be listed
 //! without working or work without being listed; and what each action does (the
 //! screenshot is also the controls' button).
 
@@ -17,7 +17,7 @@ const ARROW_PAN_PX: f64 = 40.0;
 
 /// One row of the help: the input, and what it does.
 pub struct Shortcut {
-    /// The keys or gesture, as the help window and the README write them.
+    /// The keys or gesture, as the help window and docs/explorer.md write them.
     pub keys: &'static str,
     pub what: &'static str,
     pub input: Input,
@@ -96,7 +96,7 @@ const fn pointer(keys: &'static str, what: &'static str) -> Shortcut {
     }
 }
 
-/// The keyboard and mouse, in the order the help and the README list them (and the
+/// The keyboard and mouse, in the order the help and docs/explorer.md list them (and the
 /// order keys pressed in one frame take effect).
 #[rustfmt::skip]
 pub const SHORTCUTS: &[Shortcut] = &[
