@@ -1,5 +1,6 @@
-//! The command line. `glyphscope render` is the command every later issue and every
-//! outside check drives; it lives in the library so tests call exactly what users run.
+//! The command line. `glyphscope render` is the command every figure of the docs and
+//! every outside check drives; it lives in the library so tests call exactly what users
+//! run.
 
 use std::path::PathBuf;
 use std::time::Instant;
@@ -58,7 +59,8 @@ pub struct ScreenshotsArgs {
 
 #[derive(Args, Clone, Debug)]
 pub struct StabilityArgs {
-    /// The CI size: 4 sub-pixel offsets × 2 rotations instead of 16 × 4.
+    /// The CI size: 4 sub-pixel offsets × 2 rotations instead of 16 × 4, plus the
+    /// cameras where the full sweep found each method worst (data/worst-cameras.csv).
     #[arg(long)]
     pub quick: bool,
     /// Only these cases (comma-separated names).
@@ -67,7 +69,9 @@ pub struct StabilityArgs {
     /// Only these methods (labels such as 'sdf-cells exact', or method names).
     #[arg(long, value_delimiter = ',')]
     pub methods: Option<Vec<String>>,
-    /// Write each worst frame, its error map, and the table (Markdown, JSON) here.
+    /// Write each worst frame, its error map, and the table (Markdown, JSON) here; the
+    /// full sweep (no --quick, --cases or --methods) also writes worst-cameras.csv,
+    /// the cameras the CI grid reruns (copy it to data/).
     #[arg(long)]
     pub out: Option<PathBuf>,
 }
@@ -354,7 +358,10 @@ pub fn run_stability(args: &StabilityArgs) -> Result<bool, Error> {
     print!("{}", stability::long_table(&outcomes));
     print!("\n{}", stability::margin_table(&outcomes));
     if let Some(dir) = &args.out {
-        stability::write_report(dir, &outcomes)?;
+        // Only the full sweep of every case and method finds the worst cameras.
+        let full = !args.quick && args.cases.is_none() && args.methods.is_none();
+        let device = gpu.adapter_name();
+        stability::write_report(dir, &outcomes, full.then_some(device.as_str()))?;
     }
     let broken = stability::broken_claims(&outcomes);
     for line in &broken {

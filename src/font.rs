@@ -135,6 +135,11 @@ impl Font {
         })
     }
 
+    /// The font file's bytes, shared.
+    pub fn data(&self) -> std::sync::Arc<[u8]> {
+        self.data.clone()
+    }
+
     pub fn name(&self) -> &str {
         &self.name
     }

@@ -39,6 +39,11 @@ pub enum Error {
     /// A result that cannot be written.
     #[error("{0}")]
     Output(String),
+    /// A view a peer renderer cannot draw through its public API (glyphon: anything but
+    /// translation and uniform scale; vello: perspective): its documented limit, which
+    /// tables show as "n/a — reason", never as a failure or a blank image.
+    #[error("{0}")]
+    Refused(String),
     /// A result the code cannot vouch for (a value no correct computation gives):
     /// reported, never hidden by a clamp and never a panic.
     #[error("{0}")]

@@ -65,6 +65,9 @@ pub struct RenderStats {
     pub curves_per_pixel: Option<methods::CurveCost>,
     /// The meshes built, for methods that draw meshes.
     pub mesh: Option<methods::MeshStats>,
+    /// For a peer that lays text out itself (glyphon): how far its glyphs lie from
+    /// glyphscope's shaping. The error figures include that difference.
+    pub layout_offset: Option<methods::LayoutOffset>,
 }
 
 /// How many frames are timed, after how many untimed warm-up frames (shaders compile
@@ -128,6 +131,7 @@ pub fn measure(
         error: None,
         curves_per_pixel: None,
         mesh: None,
+        layout_offset: None,
     };
     let mut overlay = None;
     let image = if info.is_reference() {
@@ -187,6 +191,7 @@ pub fn measure(
         stats.gpu_bytes = method.gpu_bytes();
         stats.cache_bytes = method.cache_bytes();
         stats.mesh = method.mesh_stats();
+        stats.layout_offset = method.layout_offset();
         image
     };
     if stats.coverage_range.is_none() {

@@ -35,13 +35,27 @@ pub struct Scene {
     pub glyphs: Vec<Glyph>,
     /// Instances of glyphs with ink (blank glyphs such as spaces are left out).
     pub instances: Vec<Instance>,
+    /// The font (and text) the scene was made from; None for synthetic outlines.
+    pub source: Option<SceneSource>,
+}
+
+/// What a scene was made from, for renderers that take a font's glyphs, or its text,
+/// rather than outlines: the peers draw from the same font bytes and variations.
+#[derive(Clone, Debug)]
+pub struct SceneSource {
+    pub font: Font,
+    /// The text shaped, lines separated by '\n'; None for a glyph drawn by its id.
+    pub text: Option<String>,
 }
 
 impl Scene {
     /// Shapes `text` (possibly several lines) in `font`.
     pub fn from_text(font: &Font, text: &str) -> Result<Scene, Error> {
         let shaped = shaping::shape(font, text)?;
-        let scene = Self::build(font, shaped.iter().map(|g| (g.glyph, g.position)));
+        let mut scene = Self::build(font, shaped.iter().map(|g| (g.glyph, g.position)));
+        if let Some(source) = &mut scene.source {
+            source.text = Some(shaping::line_breaks(text));
+        }
         if scene.instances.is_empty() {
             return Err(Error::Input(
                 "the text draws nothing (only blank glyphs)".into(),
@@ -86,6 +100,10 @@ impl Scene {
             units_per_em: font.units_per_em(),
             glyphs,
             instances,
+            source: Some(SceneSource {
+                font: font.clone(),
+                text: None,
+            }),
         }
     }
 
@@ -112,6 +130,7 @@ impl Scene {
             units_per_em,
             glyphs,
             instances,
+            source: None,
         }
     }
 

@@ -18,11 +18,17 @@ pub struct ShapedGlyph {
     pub position: DVec2,
 }
 
+/// `text` with its line breaks as '\n' (a literal backslash-n, for shells, and "\r\n"
+/// included): the lines [`shape`] lays out.
+pub fn line_breaks(text: &str) -> String {
+    text.replace("\\n", "\n").replace("\r\n", "\n")
+}
+
 /// Shapes `text`, which may hold several lines separated by '\n' (a literal backslash-n
 /// also breaks the line, for shells). Lines advance by the font's ascender − descender
 /// + line gap. A character the font lacks is an error naming it, not a .notdef box.
 pub fn shape(font: &Font, text: &str) -> Result<Vec<ShapedGlyph>, Error> {
-    let text = text.replace("\\n", "\n").replace("\r\n", "\n");
+    let text = line_breaks(text);
     if text.trim().is_empty() {
         return Err(Error::Input("the text is empty".into()));
     }

@@ -792,3 +792,57 @@ fn render_case_draws_a_named_view_and_refuses_mixing() {
         "give --text",
     );
 }
+
+/// Each peer renders through `render` as a method does, with time, error and edge
+/// error in `--stats`; a view it cannot draw exits 2 with one line naming its limit,
+/// and writes no image.
+#[test]
+fn render_draws_the_peers_and_refuses_what_they_cannot_draw() {
+    for peer in ["vello", "glyphon", "vello-cpu"] {
+        let (out, err, stats) = (
+            scratch(&format!("{peer}.png")),
+            scratch(&format!("{peer}-err.png")),
+            scratch(&format!("{peer}.json")),
+        );
+        run_ok(&[
+            "render",
+            "--case",
+            "tiny",
+            "--method",
+            peer,
+            "--out",
+            out.to_str().unwrap(),
+            "--error-image",
+            err.to_str().unwrap(),
+            "--stats",
+            stats.to_str().unwrap(),
+        ]);
+        let json: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
+        assert_eq!(json["method"], peer);
+        assert!(json["frame_ms"].as_f64().unwrap() > 0.0, "{peer}: {json}");
+        let error = &json["error"];
+        assert!(error["mae_255"].as_f64().unwrap().is_finite(), "{peer}");
+        assert!(error["edge"]["pixels"].as_u64().unwrap() > 0, "{peer}");
+        assert!(error["edge"]["mae_255"].as_f64().unwrap() > 0.0, "{peer}");
+        fails(
+            &format!("{peer}-tilted"),
+            &["--case", "rotated", "--method", peer],
+            &format!("{peer} draws"),
+        );
+    }
+    fails(
+        "glyphon-turned",
+        &[
+            "--text",
+            "Turned",
+            "--size",
+            "20",
+            "--matrix",
+            "0.866,-0.5,0.5,0.866",
+            "--method",
+            "glyphon",
+        ],
+        "translation and uniform scale only",
+    );
+}

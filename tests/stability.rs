@@ -1,11 +1,13 @@
 //! The numerical-stability suite at CI size: every hard case through every method at 4
-//! sub-pixel offsets × 2 rotations against the reference, each method held to the bound
-//! it claims (`glyphscope stability` runs the full sweep).
+//! sub-pixel offsets × 2 rotations, and the cameras where the full sweep found each
+//! method worst, against the reference, each method held to the bound it claims and
+//! the peers observed (`glyphscope stability` runs the full sweep).
 
 mod common;
 
 use glam::DVec2;
 use glyphscope::coverage::CoverageImage;
+use glyphscope::methods::registry;
 use glyphscope::metrics;
 use glyphscope::reference;
 use glyphscope::stability::{self, claims, hard_cases, sweep, worst_cameras};
@@ -20,19 +22,30 @@ fn every_method_keeps_its_claims_on_every_hard_case() {
     assert_eq!(outcomes.len(), cases.len() * variants.len());
     for o in &outcomes {
         let case = cases.iter().find(|c| c.name == o.case).unwrap();
-        assert_eq!(
-            o.frames,
-            size.cameras_for(case).len(),
-            "{} × {}",
-            o.case,
-            o.variant
-        );
+        // Only an observed peer may refuse a view; it draws the others.
+        let cameras = size.cameras_for(case).len();
+        match &o.refused {
+            Some(reason) => {
+                assert!(o.observed, "{} × {} refused: {reason}", o.case, o.variant);
+                assert!(o.frames < cameras, "{} × {}", o.case, o.variant);
+            }
+            None => assert_eq!(o.frames, cameras, "{} × {}", o.case, o.variant),
+        }
         assert!(o.mae_255.is_finite(), "{} × {}", o.case, o.variant);
     }
     let broken = stability::broken_claims(&outcomes);
     assert!(broken.is_empty(), "claims broken:\n{}", broken.join("\n"));
-    // The CI grid's cameras are among the full sweep's: finding an error the shipped
-    // worst cameras do not account for means the full sweep must be run again.
+    // The CI grid runs every listed camera among cameras of the full sweep's: on the
+    // device the file was measured on, an error it does not account for means the full
+    // sweep must be run again. Another device rounds differently: said, not checked.
+    let device = common::gpu().adapter_name();
+    if worst_cameras::device() != Some(device.as_str()) {
+        println!(
+            "data/worst-cameras.csv was measured on {:?}, not {device}: not compared",
+            worst_cameras::device()
+        );
+        return;
+    }
     let stale = worst_cameras::stale_entries(worst_cameras::all(), &outcomes);
     assert!(
         stale.is_empty(),
@@ -195,6 +208,11 @@ fn every_claim_rejects_coverage_rounded_to_0_or_1_and_nan() {
         }
     }
     for (variant, broken) in variants.iter().zip(&broken_by_rounding) {
+        // A peer is observed: glyphscope claims nothing of it, so nothing can break.
+        if registry::find(variant.method).is_ok_and(|m| m.is_peer()) {
+            assert_eq!(*broken, 0, "{}: a peer's row broke a claim", variant.label);
+            continue;
+        }
         println!(
             "{}: rounded coverage breaks it on {broken} cases",
             variant.label
@@ -207,13 +225,19 @@ fn every_claim_rejects_coverage_rounded_to_0_or_1_and_nan() {
     }
 }
 
-/// Every claimed setting bounds something on the outlines it is meant for — the
-/// estimate, `sdf-cells`' default, on text without overlapping or touching contours —
-/// and a bound on the maximum comes with one on the mean.
+/// Every claimed setting of glyphscope's methods bounds something on the outlines it
+/// is meant for — the estimate, `sdf-cells`' default, on text without overlapping or
+/// touching contours — and a bound on the maximum comes with one on the mean. A peer
+/// claims nothing anywhere.
 #[test]
 fn every_setting_claims_a_bound_where_it_is_meant_to_work() {
     let ordinary = hard_cases::by_name("latin-modern-cubics").unwrap();
     for variant in claims::variants() {
+        if registry::find(variant.method).is_ok_and(|m| m.is_peer()) {
+            assert_eq!(variant.claim.bound, None, "{}", variant.label);
+            assert_eq!(variant.claim.limitation, None, "{}", variant.label);
+            continue;
+        }
         let bound = variant.claim.bound(ordinary.traits);
         let bound = bound.unwrap_or_else(|| panic!("{} claims nothing", variant.label));
         assert!(bound.max < 1.0 && bound.mae_255 > 0.0, "{}", variant.label);

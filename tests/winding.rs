@@ -105,7 +105,7 @@ fn real_glyphs_stay_within_half_a_level_everywhere() {
                 .collect();
             let scene = Scene::from_text(&font, &text).unwrap();
             for (name, matrix) in transforms() {
-                let s = sweep(&gpu, &[], &scene, size, matrix);
+                let s = sweep(gpu, &[], &scene, size, matrix);
                 println!(
                     "| {} | {size} | {name} | {:.2} | {:.3} | {} |",
                     SHIPPED_FONTS[index].0, s.mean_mae, s.max, s.over_half
@@ -150,7 +150,7 @@ fn hard_cases_at_their_exact_alignment() {
     ] {
         let case = hard_cases::by_name(name).unwrap();
         let cam = case.camera(0.0, DVec2::ZERO).unwrap();
-        let s = assert_within_half(&gpu, name, &case.scene, &cam);
+        let s = assert_within_half(gpu, name, &case.scene, &cam);
         assert!(s.max < bound, "{name}: {s:?}");
     }
 }
@@ -167,7 +167,7 @@ fn a_ray_meeting_curves_along_itself_beside_a_vertex_does_not_outweigh_one_meeti
     let gpu = gpu();
     let sun = hard_cases::by_name("sun-symbol").unwrap().scene;
     let cam = Camera::new(87, 106, 48.0, DVec2::new(24.0, 72.0));
-    let image = render(&gpu, winding(&[]).as_mut(), &sun, &cam);
+    let image = render(gpu, winding(&[]).as_mut(), &sun, &cam);
     let covered = image.get(52, 57);
     println!("sun symbol, pixel (52, 57): {covered:.3}");
     assert!(
@@ -182,14 +182,14 @@ fn far_from_the_origin_nothing_changes() {
     let scene = Scene::from_text(&Font::default_font(), "Rg").unwrap();
     let mut cam = framed(&scene, 37.0, [0.9, 0.3, -0.2, 1.1], DVec2::new(0.25, 0.5));
     let mut method = winding(&[]);
-    let near = render(&gpu, method.as_mut(), &scene, &cam);
+    let near = render(gpu, method.as_mut(), &scene, &cam);
     cam.world_offset = DVec2::new(1.0e5, -1.0e5);
-    let far = frame::render_image(&gpu, method.as_mut(), &cam).unwrap();
+    let far = frame::render_image(gpu, method.as_mut(), &cam).unwrap();
     assert!(
         compare(&far, &near).unwrap().max < 1e-3,
         "a 100 000 px world offset changed the image"
     );
-    assert_within_half(&gpu, "100 000 px world offset", &scene, &cam);
+    assert_within_half(gpu, "100 000 px world offset", &scene, &cam);
 }
 
 #[test]
@@ -208,14 +208,14 @@ fn a_huge_glyph_viewed_on_its_edge() {
             edge,
         );
         cam.origin = DVec2::splat(32.3) - at;
-        let got = render(&gpu, winding(&[]).as_mut(), &scene, &cam);
+        let got = render(gpu, winding(&[]).as_mut(), &scene, &cam);
         let covered = got.sum() / 4096.0;
         assert!(
             covered > 0.2 && covered < 0.8,
             "{name}: view not on the edge ({covered})"
         );
         assert_within_half(
-            &gpu,
+            gpu,
             &format!("20 000 px/em on an edge, {name}"),
             &scene,
             &cam,
@@ -229,7 +229,7 @@ fn perspective_tilt() {
     let scene = Scene::from_text(&Font::default_font(), "Tilted").unwrap();
     let mut cam = framed(&scene, 60.0, [1.0, 0.0, 0.0, 1.0], DVec2::new(0.3, 0.6));
     cam.tilt_deg = 40.0;
-    let s = assert_within_half(&gpu, "40° perspective tilt", &scene, &cam);
+    let s = assert_within_half(gpu, "40° perspective tilt", &scene, &cam);
     assert!(s.mae_255 < 2.0, "{s:?}");
 }
 
@@ -244,18 +244,18 @@ fn bands_change_the_cost_not_the_image() {
         DVec2::new(0.4, 0.1),
     );
     let mut brute = winding(&[("bands", "off")]);
-    let reference_image = render(&gpu, brute.as_mut(), &scene, &cam);
-    let brute_cost = brute.curves_per_pixel(&gpu, &cam).unwrap().unwrap();
+    let reference_image = render(gpu, brute.as_mut(), &scene, &cam);
+    let brute_cost = brute.curves_per_pixel(gpu, &cam).unwrap().unwrap();
     for bands in ["auto", "1", "5", "64"] {
         let mut banded = winding(&[("bands", bands)]);
-        let got = render(&gpu, banded.as_mut(), &scene, &cam);
+        let got = render(gpu, banded.as_mut(), &scene, &cam);
         let diff = compare(&got, &reference_image).unwrap();
         assert!(
             diff.max < 2e-3,
             "bands={bands} changed a pixel by {}",
             diff.max
         );
-        let cost = banded.curves_per_pixel(&gpu, &cam).unwrap().unwrap();
+        let cost = banded.curves_per_pixel(gpu, &cam).unwrap().unwrap();
         assert!(
             cost.mean < brute_cost.mean,
             "bands={bands}: {cost:?} vs brute force {brute_cost:?}"
@@ -269,10 +269,10 @@ fn settings_trade_accuracy_for_cost() {
     let scene = Scene::from_text(&Font::default_font(), "Hamburgefonstiv").unwrap();
     let (s, c) = 12f64.to_radians().sin_cos();
     let cam = framed(&scene, 13.0, [c, -s, s, c], DVec2::new(0.37, 0.21));
-    let one_ray = error(&gpu, &[("rays", "1"), ("samples", "1")], &scene, &cam);
-    let two_rays = error(&gpu, &[("samples", "1")], &scene, &cam);
-    let four_samples = error(&gpu, &[("samples", "4")], &scene, &cam);
-    let auto = error(&gpu, &[], &scene, &cam);
+    let one_ray = error(gpu, &[("rays", "1"), ("samples", "1")], &scene, &cam);
+    let two_rays = error(gpu, &[("samples", "1")], &scene, &cam);
+    let four_samples = error(gpu, &[("samples", "4")], &scene, &cam);
+    let auto = error(gpu, &[], &scene, &cam);
     assert_eq!(
         auto, four_samples,
         "13 px/em is small text: auto takes four samples"
@@ -299,8 +299,8 @@ fn fill_rules_on_overlaps_and_self_intersections() {
     // square / one star point only.
     let probes = [(&squares, (11, 11), (4, 18)), (&star, (11, 11), (10, 6))];
     for (scene, shared, single_cover) in probes {
-        let nonzero = render(&gpu, winding(&[]).as_mut(), scene, &cam);
-        let even_odd = render(&gpu, winding(&[("fill", "evenodd")]).as_mut(), scene, &cam);
+        let nonzero = render(gpu, winding(&[]).as_mut(), scene, &cam);
+        let even_odd = render(gpu, winding(&[("fill", "evenodd")]).as_mut(), scene, &cam);
         assert_eq!(nonzero.get(shared.0, shared.1), 1.0);
         assert_eq!(even_odd.get(shared.0, shared.1), 0.0);
         assert_eq!(nonzero.get(single_cover.0, single_cover.1), 1.0);
@@ -318,12 +318,12 @@ fn overlays_draw_classes_and_cost() {
     let cam = framed(&scene, 80.0, [1.0, 0.0, 0.0, 1.0], DVec2::new(0.5, 0.5));
     let picture = |params: &[(&str, &str)]| {
         let mut method = winding(params);
-        method.prepare(&gpu, &scene).unwrap();
-        let target = gpu::CoverageTarget::new(&gpu, cam.width, cam.height).unwrap();
-        frame::render_frame(&gpu, method.as_mut(), &target, &cam).unwrap();
+        method.prepare(gpu, &scene).unwrap();
+        let target = gpu::CoverageTarget::new(gpu, cam.width, cam.height).unwrap();
+        frame::render_frame(gpu, method.as_mut(), &target, &cam).unwrap();
         (
-            target.readback_color(&gpu).unwrap(),
-            target.readback(&gpu).unwrap(),
+            target.readback_color(gpu).unwrap(),
+            target.readback(gpu).unwrap(),
         )
     };
     let (classes, coverage) = picture(&[("overlay", "classes")]);
@@ -342,7 +342,7 @@ fn overlays_draw_classes_and_cost() {
         "only {tinted} pixels tinted by a counting class"
     );
     // The overlay does not change coverage.
-    let plain = render(&gpu, winding(&[]).as_mut(), &scene, &cam);
+    let plain = render(gpu, winding(&[]).as_mut(), &scene, &cam);
     assert!(compare(&coverage, &plain).unwrap().max < 1e-3);
     let (cost, _) = picture(&[("overlay", "cost")]);
     let (cost_brute, _) = picture(&[("overlay", "cost"), ("bands", "off")]);
@@ -383,10 +383,10 @@ fn slug_combine_on_hand_worked_pixels() {
         ("45° edge", &triangle, (9, 22), 0.75, 0.71875),
     ];
     for (what, scene, (i, j), slug, exact) in probes {
-        let by_slug = render(&gpu, winding(&[("rays", "slug")]).as_mut(), scene, &cam);
+        let by_slug = render(gpu, winding(&[("rays", "slug")]).as_mut(), scene, &cam);
         let area_params = [("aa".to_string(), "area".to_string())];
         let mut area = methods::create("winding", &area_params).unwrap();
-        let by_area = render(&gpu, area.as_mut(), scene, &cam);
+        let by_area = render(gpu, area.as_mut(), scene, &cam);
         // Half floats hold ¾ and 9/16 exactly and 0.71875 within 2.5e-4.
         let (got_slug, got_area) = (by_slug.get(i, j), by_area.get(i, j));
         assert!(
@@ -451,7 +451,7 @@ fn a_glyph_flat_across_a_ray_reads_its_own_bands() {
     let expected = reference::rasterize(&scene, &cam).unwrap();
     let gpu = gpu();
     for params in [&[][..], &[("samples", "4")], &[("rays", "1")]] {
-        let got = render(&gpu, winding(params).as_mut(), &scene, &cam);
+        let got = render(gpu, winding(params).as_mut(), &scene, &cam);
         let s = compare(&got, &expected).unwrap();
         assert_eq!(s.invalid_pixels, 0, "{params:?}: {s:?}");
         // The rays' claim, anywhere in the frame.
@@ -494,8 +494,8 @@ fn curve_counts_past_what_half_floats_hold_are_flagged() {
         let (scene, curves) = glyph(squares);
         let cam = framed(&scene, 1000.0, [1.0, 0.0, 0.0, 1.0], DVec2::new(0.5, 0.5));
         let mut method = winding(&params);
-        method.prepare(&gpu, &scene).unwrap();
-        let cost = method.curves_per_pixel(&gpu, &cam).unwrap().unwrap();
+        method.prepare(gpu, &scene).unwrap();
+        let cost = method.curves_per_pixel(gpu, &cam).unwrap().unwrap();
         if curves < 2048 {
             assert_eq!(cost.saturated, 0, "{curves} curves: {cost:?}");
             assert_eq!(cost.max, curves as u32, "{cost:?}");
@@ -565,7 +565,7 @@ fn the_two_rays_blend_continuously_as_their_weights_vanish() {
     }
     let inputs: Vec<[f32; 4]> = paths.concat();
     let gpu = gpu();
-    let values = combine_rays(&gpu, &inputs);
+    let values = combine_rays(gpu, &inputs);
     let mut worst = 0.0f32;
     for (k, pair) in inputs.windows(2).enumerate() {
         let (a, b) = (pair[0], pair[1]);
@@ -584,7 +584,7 @@ fn the_two_rays_blend_continuously_as_their_weights_vanish() {
     }
     println!("steepest slope of the blend per unit of sight: {worst:.2}");
     let settled = combine_rays(
-        &gpu,
+        gpu,
         &[
             [0.3, 1.0, 1.0, 0.0],
             [1.0, 0.3, 0.0, 1.0],

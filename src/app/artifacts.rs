@@ -74,7 +74,7 @@ impl Explorer {
             self.set_status("no pane shows a GPU method to find the worst pixel of".into());
             return;
         };
-        let ready = self.view.pane_size.is_some()
+        let ready = self.canvas.pane_size.is_some()
             && self.scene.is_built_for(&self.settings.scene)
             && self.panes[pane].is_built_for(&self.settings.panes[pane], self.scene.generation())
             && self.panes[pane].has_method();
@@ -93,7 +93,7 @@ impl Explorer {
     /// frame along that side, so its worst is the frame's.
     fn bring_case_worst_into_pane(&mut self, pane: usize) {
         let (Some(frame), Some((width, height))) =
-            (self.scene.case_camera().copied(), self.view.pane_size)
+            (self.scene.case_camera().copied(), self.canvas.pane_size)
         else {
             return;
         };
@@ -126,11 +126,11 @@ impl Explorer {
     }
 
     fn hovered_pane(&self) -> usize {
-        self.view.hovered.map_or(0, |(index, _, _)| index)
+        self.canvas.hovered.map_or(0, |(index, _, _)| index)
     }
 
     fn step_through_artifacts(&mut self, step: Option<bool>, pane: usize) {
-        let Some((width, height)) = self.view.pane_size else {
+        let Some((width, height)) = self.canvas.pane_size else {
             return;
         };
         let camera = self.settings.camera.camera(width, height);

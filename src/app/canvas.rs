@@ -1,4 +1,4 @@
-//! The central view: the panes laid out on whole pixels, the shared camera steered by
+//! The canvas, the central panel: the panes laid out on whole pixels, the shared camera steered by
 //! the pointer, each pane's paint callback, and what is drawn over the panes (labels
 //! and numbers, legends, outlines). When the view rests, each pane's coverage is read
 //! back once and the reference and errors are asked for in the background.
@@ -77,18 +77,18 @@ pub struct CanvasState {
 }
 
 impl Explorer {
-    pub(super) fn view(&mut self, ui: &mut egui::Ui) {
+    pub(super) fn show_canvas(&mut self, ui: &mut egui::Ui) {
         let area = ui.available_rect_before_wrap();
         let ppp = ui.ctx().pixels_per_point();
         let ((width, height), rects) = pane_rects(area, ppp, self.settings.layout.grid());
 
         self.frame_text(ui, (width, height));
         self.steer(ui, area, &rects, ppp, (width, height));
-        self.view.rects = rects.clone();
+        self.canvas.rects = rects.clone();
         let (camera, window) = self.settings.camera.pane_camera(width, height);
-        self.view.camera = Some(camera);
-        self.view.window = Some(window);
-        self.view.pane_size = Some((width, height));
+        self.canvas.camera = Some(camera);
+        self.canvas.window = Some(window);
+        self.canvas.pane_size = Some((width, height));
 
         let Some((gpu, _)) = self.gpu.clone() else {
             return;
@@ -114,12 +114,15 @@ impl Explorer {
         });
         let painter = ui.painter();
         painter.rect_filled(area, 0.0, ui.visuals().extreme_bg_color);
-        self.view.notes = vec![String::new(); rects.len()];
+        self.canvas.notes = vec![String::new(); rects.len()];
+        let now = ui.ctx().input(|i| i.time);
+        let moving = self.canvas.key.as_ref().is_none_or(|k| k.camera != camera)
+            || now - self.canvas.changed_at < REST_SECONDS;
         for index in order {
             let rect = rects[index];
             painter.rect_filled(rect, 0.0, color(self.settings.background));
-            let (paint, note) = self.pane_paint(index, &camera, rect);
-            self.view.notes[index] = note;
+            let (paint, note) = self.pane_paint(index, &camera, rect, moving);
+            self.canvas.notes[index] = note;
             if let Some(paint) = paint {
                 painter.add(egui_wgpu::Callback::new_paint_callback(rect, paint));
             }
@@ -185,7 +188,7 @@ impl Explorer {
                 .camera
                 .pan(DVec2::new(f64::from(d.x), f64::from(d.y)) / block);
         }
-        self.view.hovered = None;
+        self.canvas.hovered = None;
         let Some(pointer) = response.hover_pos() else {
             return;
         };
@@ -208,7 +211,7 @@ impl Explorer {
                 i.is_scrolling(),
             )
         });
-        self.view.magnifying_scroll &= scrolling;
+        self.canvas.magnifying_scroll &= scrolling;
         // Alt + wheel, from the wheel's own events (unsmoothed, each with its modifiers):
         // the magnifier, one notch a doubling, about the cursor.
         let magnify_scroll: f32 = ui.input(|i| {
@@ -224,7 +227,7 @@ impl Explorer {
                 .sum()
         });
         if magnify_scroll != 0.0 {
-            self.view.magnifying_scroll = true;
+            self.canvas.magnifying_scroll = true;
             let factor = if magnify_scroll > 0.0 {
                 window.factor * 2
             } else {
@@ -233,7 +236,7 @@ impl Explorer {
             self.settings
                 .camera
                 .magnify_about(factor, cursor, width, height);
-        } else if !alt && !self.view.magnifying_scroll {
+        } else if !alt && !self.canvas.magnifying_scroll {
             let factor = f64::from(pinch) * (f64::from(scroll) * WHEEL_ZOOM_PER_POINT).exp();
             if factor != 1.0 {
                 let anchor = self.settings.camera.untilted(under, width, height);
@@ -241,7 +244,7 @@ impl Explorer {
             }
         }
         // The pixel of the drawn image (the window's, when magnified) under the cursor.
-        self.view.hovered = pixel_under(
+        self.canvas.hovered = pixel_under(
             pointer,
             *rect,
             ppp,
@@ -271,6 +274,7 @@ impl Explorer {
         index: usize,
         camera: &Camera,
         rect: egui::Rect,
+        moving: bool,
     ) -> (Option<PanePaint>, String) {
         let settings = &self.settings.panes[index];
         let pane = &self.panes[index];
@@ -293,7 +297,8 @@ impl Explorer {
             difference_scale: self.settings.difference_scale,
             display: self.settings.display,
             darkening,
-            block: self.view.window.map_or(1, |w| w.factor),
+            block: self.canvas.window.map_or(1, |w| w.factor),
+            moving,
             rect,
         };
         let waiting = "error: shown once the view rests and the reference is ready".to_string();
@@ -327,10 +332,24 @@ impl Explorer {
                     note,
                 )
             }
-            PaneSource::Method { .. } => {
+            PaneSource::Method { name, .. } => {
                 if !pane.has_method() {
                     return (None, String::new());
                 }
+                let surface = lock(&pane.surface);
+                if moving && surface.waits_for_rest() {
+                    let ms = surface.last_encode_ms.unwrap_or_default();
+                    let note = format!(
+                        "{name}: a frame takes {ms:.0} ms on this device, so it is redrawn \
+                         when the view rests"
+                    );
+                    drop(surface);
+                    return (
+                        Some(paint(Some(*camera), None, None, CompositeMode::Coverage)),
+                        note,
+                    );
+                }
+                drop(surface);
                 match &settings.overlay {
                     PaneOverlay::Method(_) => (
                         Some(paint(
@@ -391,10 +410,10 @@ impl Explorer {
         let settings = &self.settings.panes[index];
         let painter = ui.painter_at(rect);
         let mut notes: Vec<String> = Vec::new();
-        let block = self.view.window.map_or(1, |w| w.factor);
+        let block = self.canvas.window.map_or(1, |w| w.factor);
         if block >= VALUES_FROM
             && let Some((captured, image)) = &self.panes[index].capture
-            && Some(*captured) == self.view.camera
+            && Some(*captured) == self.canvas.camera
         {
             // The error overlay writes each pixel's error under its coverage.
             let reference = (settings.overlay == PaneOverlay::Error)
@@ -428,8 +447,8 @@ impl Explorer {
         if let Some(problem) = self.pane_problem(index) {
             notes.push(problem);
         }
-        if !self.view.notes[index].is_empty() {
-            notes.push(self.view.notes[index].clone());
+        if !self.canvas.notes[index].is_empty() {
+            notes.push(self.canvas.notes[index].clone());
         }
         if let Some(scene_problem) = self.scene.problem() {
             notes.push(scene_problem);
@@ -516,7 +535,7 @@ impl Explorer {
             None => lines.push("error vs reference: …".into()),
         }
         if let Some((c, cost)) = &pane.curves
-            && Some(*c) == self.view.camera
+            && Some(*c) == self.canvas.camera
         {
             lines.push(format!(
                 "curves/px {:.2} mean, {} max",
@@ -563,6 +582,7 @@ impl Explorer {
                 display: DisplayMode::Linear,
                 darkening: CoverageAdjust::NONE,
                 block: 1,
+                moving: false,
                 rect: bar,
             };
             painter.add(egui_wgpu::Callback::new_paint_callback(bar, paint));
@@ -628,7 +648,7 @@ impl Explorer {
     /// Once the view has rested: reads each pane's coverage back once and asks the
     /// background worker for the reference, the errors and the curves per pixel.
     pub(super) fn settle(&mut self, ctx: &egui::Context) {
-        let (Some(camera), Some(scene)) = (self.view.camera, self.scene.scene().cloned()) else {
+        let (Some(camera), Some(scene)) = (self.canvas.camera, self.scene.scene().cloned()) else {
             return;
         };
         let Some((gpu, _)) = self.gpu.clone() else {
@@ -647,14 +667,14 @@ impl Explorer {
                 .collect(),
         };
         let now = ctx.input(|i| i.time);
-        if self.view.key.as_ref() != Some(&key) {
-            self.view.key = Some(key.clone());
-            self.view.changed_at = now;
+        if self.canvas.key.as_ref() != Some(&key) {
+            self.canvas.key = Some(key.clone());
+            self.canvas.changed_at = now;
         }
-        if self.view.analysed.as_ref() == Some(&key) {
+        if self.canvas.analysed.as_ref() == Some(&key) {
             return;
         }
-        let waited = now - self.view.changed_at;
+        let waited = now - self.canvas.changed_at;
         if waited < REST_SECONDS {
             ctx.request_repaint_after(std::time::Duration::from_secs_f64(REST_SECONDS - waited));
             return;
@@ -699,7 +719,7 @@ impl Explorer {
             counts,
             pane_generations,
         });
-        self.view.analysed = Some(key);
+        self.canvas.analysed = Some(key);
     }
 }
 

@@ -338,7 +338,7 @@ impl Explorer {
 
     /// The pixel inspector: coverage under the cursor in every pane and the reference.
     fn inspector_text(&self) -> String {
-        let Some((pane, x, y)) = self.view.hovered else {
+        let Some((pane, x, y)) = self.canvas.hovered else {
             return "pixel inspector: point at a pane".into();
         };
         let mut parts = vec![format!("pixel ({x}, {y}) in {}", pane_letter(pane))];

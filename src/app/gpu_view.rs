@@ -162,6 +162,9 @@ impl Compositor {
 
 /// One pane's GPU state, shared by the UI thread (which creates and prepares the
 /// method) and the paint callback (which draws it).
+/// A frame slower than this (ms) is not redrawn while the view moves.
+pub const SLOW_FRAME_MS: f64 = 100.0;
+
 pub struct PaneSurface {
     pub method: Option<Box<dyn Method>>,
     pub target: Option<CoverageTarget>,
@@ -171,6 +174,9 @@ pub struct PaneSurface {
     pub drawn: Option<(Camera, u64)>,
     /// Why the last frame could not be drawn.
     pub draw_error: Option<String>,
+    /// Wall time of the last frame's recording, ms (a peer that submits its own work
+    /// on a software device waits for it there).
+    pub last_encode_ms: Option<f64>,
     pub timer: FrameTimer,
     uniform: Option<wgpu::Buffer>,
     bind_group: Option<wgpu::BindGroup>,
@@ -192,6 +198,7 @@ impl PaneSurface {
             generation: 0,
             drawn: None,
             draw_error: None,
+            last_encode_ms: None,
             timer: FrameTimer::default(),
             uniform: None,
             bind_group: None,
@@ -203,6 +210,13 @@ impl PaneSurface {
         self.drawn == Some((*camera, self.generation))
     }
 
+    /// Whether the pane waits for the view to rest before drawing again: its last frame
+    /// took longer than [`SLOW_FRAME_MS`] (vello on a software device), so drawing it
+    /// while the view moves would stall every pane.
+    pub fn waits_for_rest(&self) -> bool {
+        self.drawn.is_some() && self.last_encode_ms.is_some_and(|ms| ms > SLOW_FRAME_MS)
+    }
+
     /// Draws the method for `camera` into a target of the camera's size, unless the
     /// target already shows exactly that.
     fn draw(
@@ -211,8 +225,9 @@ impl PaneSurface {
         encoder: &mut wgpu::CommandEncoder,
         camera: &Camera,
         always: bool,
+        moving: bool,
     ) {
-        if self.shows(camera) && !always {
+        if (self.shows(camera) || (moving && self.waits_for_rest())) && !always {
             return;
         }
         let Some(method) = self.method.as_mut() else {
@@ -236,7 +251,9 @@ impl PaneSurface {
         let slot = self.timer.begin(gpu, encoder);
         let start = std::time::Instant::now();
         let result = method.encode(gpu, encoder, target, camera);
-        self.timer.record_cpu(ms_since(start));
+        let encode_ms = ms_since(start);
+        self.timer.record_cpu(encode_ms);
+        self.last_encode_ms = Some(encode_ms);
         if let Some(slot) = slot {
             self.timer.end(encoder, slot);
         }
@@ -299,6 +316,8 @@ pub struct PanePaint {
     pub darkening: CoverageAdjust,
     /// Each texel drawn as a block of this many pixels a side (the magnifier).
     pub block: u32,
+    /// The view is moving: a slow pane keeps its last picture until it rests.
+    pub moving: bool,
     /// The pane, in points.
     pub rect: egui::Rect,
 }
@@ -317,7 +336,7 @@ impl egui_wgpu::CallbackTrait for PanePaint {
         let second = self.second.as_ref().and_then(Source::view);
         let mut surface = lock(&self.surface);
         if let Some(camera) = &self.camera {
-            surface.draw(gpu, encoder, camera, self.always);
+            surface.draw(gpu, encoder, camera, self.always, self.moving);
         }
         let first = first.or_else(|| surface.target.as_ref().map(|t| t.view.clone()));
         let first = match (self.mode, first) {

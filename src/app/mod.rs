@@ -49,7 +49,7 @@ use self::canvas::CanvasState;
 use self::font_dialog::FontDialog;
 use self::gpu_view::{Compositor, lock};
 use self::panes::{Catalog, Pane};
-use self::pareto::Sweep;
+use self::pareto::ParetoSweep;
 use self::scene_state::SceneState;
 use self::settings::{PANES, Settings, sanitize};
 use crate::camera::Camera;
@@ -108,8 +108,8 @@ pub struct Explorer {
     panes: Vec<Pane>,
     reference: ReferenceState,
     analysis: Analysis,
-    view: CanvasState,
-    sweep: Sweep,
+    canvas: CanvasState,
+    sweep: ParetoSweep,
     font_dialog: FontDialog,
     help_open: bool,
     /// The pixels the magnifier was last centred on by "worst pixel", to step on from.
@@ -147,7 +147,7 @@ impl Explorer {
 
     /// What a first start shows: the default side-by-side (a method beside the
     /// reference) with the text small, magnified on pane A's worst pixel
-    /// ([`view::OPENING`]).
+    /// ([`canvas::OPENING`]).
     pub fn open_as_on_a_first_start(&mut self) {
         self.auto_fit.opening = true;
     }
@@ -180,8 +180,8 @@ impl Explorer {
             panes: (0..PANES).map(|_| Pane::new()).collect(),
             reference: ReferenceState::default(),
             analysis,
-            view: CanvasState::default(),
-            sweep: Sweep::default(),
+            canvas: CanvasState::default(),
+            sweep: ParetoSweep::default(),
             font_dialog: FontDialog::default(),
             help_open: false,
             artifacts: None,
@@ -197,22 +197,22 @@ impl Explorer {
 
     /// The camera the panes share this frame, if the view has been laid out.
     pub fn camera(&self) -> Option<Camera> {
-        self.view.camera
+        self.canvas.camera
     }
 
     /// The pixels of a ×1 pane the panes draw this frame, and their magnification.
     pub fn magnified_window(&self) -> Option<crate::magnify::Window> {
-        self.view.window
+        self.canvas.window
     }
 
     /// A pane's size in pixels at ×1, once laid out.
     pub fn pane_pixels(&self) -> Option<(u32, u32)> {
-        self.view.pane_size
+        self.canvas.pane_size
     }
 
     /// Where the visible panes are on the screen, in points.
     pub fn pane_rects(&self) -> &[egui::Rect] {
-        &self.view.rects
+        &self.canvas.rects
     }
 
     /// The scene shown, if it could be built.
@@ -230,13 +230,13 @@ impl Explorer {
 
     /// Pane `index`'s coverage and error for the resting view, once worked out.
     pub fn pane_capture(&self, index: usize) -> Option<Arc<CoverageImage>> {
-        let camera = self.view.camera?;
+        let camera = self.canvas.camera?;
         let (c, image) = self.panes[index].capture.as_ref()?;
         (*c == camera).then(|| image.clone())
     }
 
     pub fn pane_error(&self, index: usize) -> Option<crate::metrics::ErrorStats> {
-        let camera = self.view.camera?;
+        let camera = self.canvas.camera?;
         let (c, stats) = self.panes[index].error.as_ref()?;
         (*c == camera).then_some(*stats)
     }
@@ -244,7 +244,7 @@ impl Explorer {
     /// Curves evaluated per pixel in pane `index` for the resting view, for methods that
     /// count them.
     pub fn pane_curves(&self, index: usize) -> Option<crate::methods::CurveCost> {
-        let camera = self.view.camera?;
+        let camera = self.canvas.camera?;
         let (c, cost) = self.panes[index].curves.as_ref()?;
         (*c == camera).then_some(*cost)
     }
@@ -270,8 +270,8 @@ impl Explorer {
     /// the view is what the settings say (nothing changed since it was laid out).
     fn view_settled(&self) -> bool {
         let up_to_date = self.scene.is_built_for(&self.settings.scene)
-            && self.view.camera.is_some_and(|c| {
-                self.view
+            && self.canvas.camera.is_some_and(|c| {
+                self.canvas
                     .pane_size
                     .is_some_and(|(w, h)| c == self.settings.camera.pane_camera(w, h).0)
             })
@@ -279,8 +279,8 @@ impl Explorer {
                 self.panes[i].is_built_for(&self.settings.panes[i], self.scene.generation())
             });
         up_to_date
-            && self.view.key.is_some()
-            && self.view.analysed == self.view.key
+            && self.canvas.key.is_some()
+            && self.canvas.analysed == self.canvas.key
             && !self.analysis.busy()
             && self.reference_is_current()
     }
@@ -294,7 +294,7 @@ impl Explorer {
     }
 
     fn reference_is_current(&self) -> bool {
-        match (self.reference.made_for, self.view.camera) {
+        match (self.reference.made_for, self.canvas.camera) {
             (Some((generation, camera)), Some(current)) => {
                 generation == self.scene.generation() && camera == current
             }
@@ -305,7 +305,7 @@ impl Explorer {
     /// The centre of what a pane shows, in its ×1 pixels (the magnified window's
     /// centre when magnified): what keys and sliders zoom and rotate about.
     fn view_centre(&self) -> DVec2 {
-        self.view.window.map_or(DVec2::ZERO, |w| {
+        self.canvas.window.map_or(DVec2::ZERO, |w| {
             DVec2::new(f64::from(w.x0), f64::from(w.y0))
                 + DVec2::new(f64::from(w.cols), f64::from(w.rows)) / 2.0
         })
@@ -313,7 +313,7 @@ impl Explorer {
 
     /// A pane's size in pixels, unmagnified.
     fn pane_size(&self) -> DVec2 {
-        self.view
+        self.canvas
             .pane_size
             .map_or(DVec2::ZERO, |(w, h)| DVec2::new(f64::from(w), f64::from(h)))
     }
@@ -352,7 +352,7 @@ impl Explorer {
         egui::Panel::bottom("status").show(ui, |ui| self.status_bar(ui));
         egui::CentralPanel::default()
             .frame(egui::Frame::NONE.fill(ui.visuals().extreme_bg_color))
-            .show(ui, |ui| self.view(ui));
+            .show(ui, |ui| self.show_canvas(ui));
         self.windows(&ctx);
         self.settle(&ctx);
         self.answer_worst_pixel_request(&ctx);

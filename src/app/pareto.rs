@@ -27,7 +27,7 @@ const WARMUP_FRAMES: usize = 3;
 const TIMED_FRAMES: usize = 9;
 
 impl Explorer {
-    pub fn sweep_points(&self) -> &[SweepPoint] {
+    pub fn sweep_points(&self) -> &[ParetoPoint] {
         &self.sweep.points
     }
 
@@ -35,11 +35,16 @@ impl Explorer {
         self.sweep.running()
     }
 
+    /// The combinations the last sweep could not measure, each with its reason.
+    pub fn sweep_problems(&self) -> &[String] {
+        &self.sweep.problems
+    }
+
     /// Starts the speed-vs-error sweep on the current scene and view and opens its window.
     pub fn start_sweep(&mut self, ctx: &egui::Context) {
         self.sweep.open = true;
         if let (Some((gpu, _)), Some(scene), Some(camera)) =
-            (&self.gpu, self.scene.scene(), self.view.camera)
+            (&self.gpu, self.scene.scene(), self.canvas.camera)
         {
             self.sweep
                 .start(ctx, gpu, &self.catalog, scene.clone(), camera);
@@ -49,7 +54,7 @@ impl Explorer {
 
 /// One measured combination.
 #[derive(Clone, Debug)]
-pub struct SweepPoint {
+pub struct ParetoPoint {
     pub method: &'static str,
     pub params: Vec<(String, String)>,
     /// Median GPU time of a frame, ms.
@@ -58,7 +63,7 @@ pub struct SweepPoint {
     pub max: f64,
 }
 
-impl SweepPoint {
+impl ParetoPoint {
     pub fn label(&self) -> String {
         let params: Vec<String> = self
             .params
@@ -70,7 +75,7 @@ impl SweepPoint {
 }
 
 enum Message {
-    Point(SweepPoint),
+    Point(ParetoPoint),
     Problem(String),
     Finished,
 }
@@ -84,10 +89,10 @@ struct Running {
 
 /// The sweep window's state.
 #[derive(Default)]
-pub struct Sweep {
+pub struct ParetoSweep {
     pub open: bool,
     running: Option<Running>,
-    pub points: Vec<SweepPoint>,
+    pub points: Vec<ParetoPoint>,
     pub problems: Vec<String>,
     /// The view the points were measured on.
     pub measured_on: String,
@@ -109,12 +114,12 @@ pub fn combinations(specs: &[ParamSpec]) -> Vec<Vec<(String, String)>> {
 }
 
 /// Indices of the points no other point beats on both time and error, fastest first.
-pub fn pareto_front(points: &[SweepPoint]) -> Vec<usize> {
+pub fn pareto_front(points: &[ParetoPoint]) -> Vec<usize> {
     let time_and_error: Vec<(f64, f64)> = points.iter().map(|p| (p.gpu_ms, p.mae_255)).collect();
     metrics::pareto_front(&time_and_error)
 }
 
-impl Sweep {
+impl ParetoSweep {
     pub fn running(&self) -> bool {
         self.running.is_some()
     }
@@ -219,7 +224,7 @@ impl Sweep {
     }
 
     /// The plot; returns a point the user clicked, to apply to the first pane.
-    pub fn plot(&self, ui: &mut egui::Ui) -> Option<SweepPoint> {
+    pub fn plot(&self, ui: &mut egui::Ui) -> Option<ParetoPoint> {
         let front = pareto_front(&self.points);
         let points = &self.points;
         let labels = move |position: &egui_plot::HoverPosition<'_>| -> Option<String> {
@@ -279,7 +284,7 @@ impl Sweep {
     }
 }
 
-fn unique_methods(points: &[SweepPoint]) -> Vec<&'static str> {
+fn unique_methods(points: &[ParetoPoint]) -> Vec<&'static str> {
     let mut names: Vec<&'static str> = Vec::new();
     for p in points {
         if !names.contains(&p.method) {
@@ -304,14 +309,14 @@ fn method_color(k: usize) -> egui::Color32 {
 }
 
 /// Where a point is drawn: log10 of its time and error (a perfect score sits at 1e-3/255).
-fn plotted(p: &SweepPoint) -> [f64; 2] {
+fn plotted(p: &ParetoPoint) -> [f64; 2] {
     [p.gpu_ms.max(1e-6).log10(), p.mae_255.max(1e-3).log10()]
 }
 
 /// The point drawn nearest to plot position (x, y).
-fn nearest(points: &[SweepPoint], x: f64, y: f64) -> Option<usize> {
+fn nearest(points: &[ParetoPoint], x: f64, y: f64) -> Option<usize> {
     (0..points.len()).min_by(|&a, &b| {
-        let d = |p: &SweepPoint| {
+        let d = |p: &ParetoPoint| {
             let [px, py] = plotted(p);
             (px - x).powi(2) + (py - y).powi(2)
         };
@@ -327,7 +332,7 @@ fn measure(
     reference: &CoverageImage,
     method: &'static str,
     params: Vec<(String, String)>,
-) -> Result<SweepPoint, crate::Error> {
+) -> Result<ParetoPoint, crate::Error> {
     let timing = FrameTiming {
         warmup: WARMUP_FRAMES,
         frames: TIMED_FRAMES,
@@ -345,7 +350,7 @@ fn measure(
         .stats
         .gpu_ms
         .ok_or_else(|| crate::Error::Gpu(format!("'{method}' drew no timed frame")))?;
-    Ok(SweepPoint {
+    Ok(ParetoPoint {
         method,
         params,
         gpu_ms,

@@ -47,7 +47,7 @@ pub fn run_to(options: &BenchOptions, out: &Path) -> Result<BenchResult, Error> 
     let write = |name: &str, text: String| std::fs::write(out.join(name), text).map_err(cannot);
     write("bench.md", report::markdown(&result))?;
     write("bench.json", report::json(&result))?;
-    if !result.cases.is_empty() {
+    if !result.measurements.is_empty() {
         write("bench.csv", report::csv(&result))?;
         plot::time_against_error(&result, &out.join("time-vs-error.svg"))?;
         plot::points_against_error(&result, &out.join("tessellation-points.svg"))?;

@@ -114,10 +114,9 @@ pub fn time_against_error(result: &BenchResult, path: &Path) -> Result<(), Error
         .scenes
         .iter()
         .filter(|s| {
-            result
-                .cases
-                .iter()
-                .any(|c| c.scene == s.name && c.view == s.view && time_and_error(c).is_some())
+            result.measurements.iter().any(|c| {
+                c.scene == s.name && c.scene_camera == s.scene_camera && time_and_error(c).is_some()
+            })
         })
         .collect();
     let columns = 2;
@@ -126,12 +125,12 @@ pub fn time_against_error(result: &BenchResult, path: &Path) -> Result<(), Error
     root.fill(&WHITE).map_err(plot_error)?;
     for (area, info) in root.split_evenly((rows, columns)).iter().zip(&panels) {
         let cases: Vec<&Measurement> = result
-            .cases
+            .measurements
             .iter()
-            .filter(|c| c.scene == info.name && c.view == info.view)
+            .filter(|c| c.scene == info.name && c.scene_camera == info.scene_camera)
             .collect();
         let all: Vec<(f64, f64)> = cases.iter().filter_map(|c| time_and_error(c)).collect();
-        let caption = match info.view {
+        let caption = match info.scene_camera {
             SceneCamera::Own => info.name.clone(),
             SceneCamera::Moved => format!("{}, after caching (zoom 2.5×, 30°)", info.name),
         };
@@ -165,11 +164,24 @@ pub fn time_against_error(result: &BenchResult, path: &Path) -> Result<(), Error
                     c.stroke_width(2),
                 ))
                 .map_err(plot_error)?;
-            chart
-                .draw_series(points.iter().map(|&p| Circle::new(p, 4, c.filled())))
-                .map_err(plot_error)?
-                .label(method)
-                .legend(move |(x, y)| Circle::new((x + 8, y), 4, c.filled()));
+            // The peers as triangles, glyphscope's own methods as discs.
+            if registry::find(method).is_ok_and(|m| m.is_peer()) {
+                chart
+                    .draw_series(
+                        points
+                            .iter()
+                            .map(|&p| TriangleMarker::new(p, 6, c.filled())),
+                    )
+                    .map_err(plot_error)?
+                    .label(format!("{method} (peer)"))
+                    .legend(move |(x, y)| TriangleMarker::new((x + 8, y), 6, c.filled()));
+            } else {
+                chart
+                    .draw_series(points.iter().map(|&p| Circle::new(p, 4, c.filled())))
+                    .map_err(plot_error)?
+                    .label(method)
+                    .legend(move |(x, y)| Circle::new((x + 8, y), 4, c.filled()));
+            }
         }
         draw_legend(&mut chart)?;
     }
@@ -183,12 +195,12 @@ pub fn points_against_error(result: &BenchResult, path: &Path) -> Result<(), Err
         .iter()
         .map(|info| {
             let points = result
-                .cases
+                .measurements
                 .iter()
-                .filter(|c| c.scene == info.name && c.view == info.view)
+                .filter(|c| c.scene == info.name && c.scene_camera == info.scene_camera)
                 .filter_map(|c| Some((c.mesh_points? as f64, c.error.mae_255.max(MAE_FLOOR))))
                 .collect();
-            let label = match info.view {
+            let label = match info.scene_camera {
                 SceneCamera::Own => info.name.clone(),
                 SceneCamera::Moved => format!("{} (moved)", info.name),
             };

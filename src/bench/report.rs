@@ -3,7 +3,8 @@
 
 use std::fmt::Write;
 
-use super::run::{BenchResult, Measurement, SceneCamera, SceneInfo};
+use super::run::{BenchResult, Measurement, Refusal, SceneCamera, SceneInfo, settings_text};
+use crate::methods::registry;
 
 /// Mean-error levels (1/255) at which the report names the fastest method.
 pub const ERROR_LEVELS: &[f64] = &[0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0];
@@ -14,10 +15,9 @@ pub fn ratio_to_baseline(result: &BenchResult, case: &Measurement) -> Option<f64
     if case.is_reference() {
         return None;
     }
-    let baseline = result
-        .cases
-        .iter()
-        .find(|c| c.scene == case.scene && c.view == case.view && c.is_baseline())?;
+    let baseline = result.measurements.iter().find(|c| {
+        c.scene == case.scene && c.scene_camera == case.scene_camera && c.is_baseline()
+    })?;
     Some(case.frame_ms? / baseline.frame_ms?)
 }
 
@@ -34,11 +34,19 @@ pub fn fastest_within<'a>(cases: &[&'a Measurement], level: f64) -> Option<&'a M
         .map(|(c, _)| c)
 }
 
+fn refusals_of<'a>(result: &'a BenchResult, info: &SceneInfo) -> Vec<&'a Refusal> {
+    result
+        .refusals
+        .iter()
+        .filter(|r| r.scene == info.name && r.scene_camera == info.scene_camera)
+        .collect()
+}
+
 fn cases_of<'a>(result: &'a BenchResult, info: &SceneInfo) -> Vec<&'a Measurement> {
     result
-        .cases
+        .measurements
         .iter()
-        .filter(|c| c.scene == info.name && c.view == info.view)
+        .filter(|c| c.scene == info.name && c.scene_camera == info.scene_camera)
         .collect()
 }
 
@@ -46,7 +54,7 @@ pub fn markdown(result: &BenchResult) -> String {
     let mut md = String::new();
     let clock = result.gpu_clock.as_deref().unwrap_or("not measured");
     let _ = writeln!(md, "# glyphscope bench\n");
-    if result.cases.is_empty() {
+    if result.measurements.is_empty() {
         let _ = writeln!(
             md,
             "Device: **{}**. GPU time per frame by {clock}.\n",
@@ -91,12 +99,13 @@ fn scene_sections(result: &BenchResult, clock: &str, md: &mut String) {
          + CPU time per frame, among the cases with no pixel off by more than 0.5.\n"
     );
     summary(result, md);
+    peers_summary(result, md);
     for info in &result.scenes {
         let cases = cases_of(result, info);
         if cases.is_empty() {
             continue;
         }
-        let view = match info.view {
+        let view = match info.scene_camera {
             SceneCamera::Own => String::new(),
             SceneCamera::Moved => format!(
                 ", after caching: zoomed {}×, turned {}°",
@@ -149,6 +158,32 @@ fn scene_sections(result: &BenchResult, clock: &str, md: &mut String) {
                 case.error.p99_255,
                 case.error.max,
                 case.error.pixels_over_05,
+            );
+        }
+        for refusal in refusals_of(result, info) {
+            let _ = writeln!(
+                md,
+                "| {} | {} | n/a — {} | | | | | | | | | | | |",
+                refusal.method,
+                settings_text(&refusal.params),
+                refusal.reason
+            );
+        }
+        for case in cases.iter().filter(|c| c.layout_offset.is_some()) {
+            let o = case.layout_offset.expect("filtered");
+            let _ = writeln!(
+                md,
+                "\n{}'s own layout against glyphscope's shaping, over {} glyphs ({} with \
+                 another glyph id): pens {:.3} px apart on average (max {:.3}) as laid out, \
+                 {:.3} px (max {:.3}) where it draws them after snapping to its pixel grid; \
+                 its errors above include that placement.",
+                case.method,
+                o.glyphs,
+                o.mismatched,
+                o.laid_out_mean_px,
+                o.laid_out_max_px,
+                o.placed_mean_px,
+                o.placed_max_px
             );
         }
         md.push_str(
@@ -219,7 +254,7 @@ fn summary(result: &BenchResult, md: &mut String) {
                 format!("{} ({ratio}×)", named(c))
             })
         });
-        let view = match info.view {
+        let view = match info.scene_camera {
             SceneCamera::Own => "own",
             SceneCamera::Moved => "moved",
         };
@@ -228,6 +263,73 @@ fn summary(result: &BenchResult, md: &mut String) {
             "| {} | {view} | {baseline} | {best} | {} | {} |",
             info.name, fastest[0], fastest[1]
         );
+    }
+    md.push('\n');
+}
+
+/// Winding's default beside each peer's default, per scene and view: GPU + CPU time per
+/// frame over the atlas's, and the error, or the peer's refusal.
+fn peers_summary(result: &BenchResult, md: &mut String) {
+    let peers: Vec<&str> = registry::METHODS
+        .iter()
+        .filter(|m| m.is_peer())
+        .map(|m| m.name)
+        .collect();
+    let ours = crate::methods::winding::INFO.name;
+    if !result
+        .measurements
+        .iter()
+        .any(|c| peers.contains(&c.method.as_str()))
+        && result.refusals.is_empty()
+    {
+        return;
+    }
+    let _ = write!(
+        md,
+        "## Winding against the peers
+
+Each at its default: × atlas (GPU + CPU per frame \
+         over the atlas's, this run) · MAE /255 · edge MAE /255 · max · pixels > 0.5, or \
+         why the peer cannot draw the view.\n\n| scene | view | {ours} |"
+    );
+    for peer in &peers {
+        let _ = write!(md, " {peer} |");
+    }
+    let _ = writeln!(md, "\n|---|---|---|{}", "---|".repeat(peers.len()));
+    for info in &result.scenes {
+        let cases = cases_of(result, info);
+        let refusals = refusals_of(result, info);
+        let cell = |method: &str| -> String {
+            if let Some(c) = cases
+                .iter()
+                .find(|c| c.method == method && c.settings() == "default")
+            {
+                format!(
+                    "{} · {:.2} · {:.2} · {:.3} · {}",
+                    ratio_to_baseline(result, c).map_or("—".into(), |r| format!("{r:.2}×")),
+                    c.error.mae_255,
+                    c.error.edge.mae_255,
+                    c.error.max,
+                    c.error.pixels_over_05
+                )
+            } else if let Some(r) = refusals
+                .iter()
+                .find(|r| r.method == method && settings_text(&r.params) == "default")
+            {
+                format!("n/a — {}", r.reason)
+            } else {
+                "not run".into()
+            }
+        };
+        let view = match info.scene_camera {
+            SceneCamera::Own => "own",
+            SceneCamera::Moved => "moved",
+        };
+        let _ = write!(md, "| {} | {view} | {} |", info.name, cell(ours));
+        for peer in &peers {
+            let _ = write!(md, " {} |", cell(peer));
+        }
+        md.push('\n');
     }
     md.push('\n');
 }
@@ -242,14 +344,14 @@ pub fn csv(result: &BenchResult) -> String {
          edge_max,edge_pixels_over_025,edge_pixels_over_05\n",
     );
     let opt = |v: Option<f64>| v.map_or(String::new(), |v| v.to_string());
-    for c in &result.cases {
+    for c in &result.measurements {
         let e = &c.error;
         let _ = writeln!(
             out,
             "{},{},{},\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\
              {},{},{},{}",
             c.scene,
-            serde_json::to_value(c.view)
+            serde_json::to_value(c.scene_camera)
                 .expect("a view serializes")
                 .as_str()
                 .unwrap_or(""),

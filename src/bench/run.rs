@@ -1,5 +1,6 @@
-//! Measuring: every case through [`measure::measure`], the function `render --stats` uses, with
-//! the reference rasterized once per scene and view and shared by every case.
+//! Measuring: every method at every setting through [`measure::measure`], the function
+//! `render --stats` uses, with the reference rasterized once per scene and camera and
+//! shared by every measurement.
 
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
@@ -16,8 +17,8 @@ use crate::methods::{self, atlas, winding};
 use crate::metrics::{self, ErrorStats};
 use crate::scene::Scene;
 
-/// How each case is timed: in `rounds` that interleave a view's cases, each round
-/// preparing the method anew and timing `per_round` frames after its warm-up. On a
+/// How each measurement is timed: in `rounds` that interleave a view's measurements,
+/// each round preparing the method anew and timing `per_round` frames after its warm-up. On a
 /// shared machine load comes and goes; interleaved, it falls on every method alike
 /// rather than on whichever ran at the time, and the median of the rounds' medians
 /// drops a round that a burst of load spoiled.
@@ -61,7 +62,7 @@ pub struct BenchOptions {
     pub scaling_points: Option<usize>,
 }
 
-/// Which view of a scene a case was measured in.
+/// Which camera a scene is measured through (its view: the scene seen through it).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum SceneCamera {
@@ -72,11 +73,12 @@ pub enum SceneCamera {
     Moved,
 }
 
-/// One scene in one view.
+/// One scene through one of its cameras.
 #[derive(Clone, Debug, Serialize)]
 pub struct SceneInfo {
     pub name: String,
-    pub view: SceneCamera,
+    #[serde(rename = "view")]
+    pub scene_camera: SceneCamera,
     pub about: String,
     pub width: u32,
     pub height: u32,
@@ -93,7 +95,8 @@ pub struct SceneInfo {
 #[derive(Clone, Debug, Serialize)]
 pub struct Measurement {
     pub scene: String,
-    pub view: SceneCamera,
+    #[serde(rename = "view")]
+    pub scene_camera: SceneCamera,
     pub method: String,
     pub params: Vec<(String, String)>,
     /// Median GPU time of a frame (the reference: its CPU time), ms.
@@ -117,23 +120,15 @@ pub struct Measurement {
     pub curves_per_pixel: Option<methods::CurveCost>,
     /// Outline points the meshes are built on (tessellation).
     pub mesh_points: Option<usize>,
+    /// A peer's own text layout against glyphscope's shaping (glyphon).
+    pub layout_offset: Option<methods::LayoutOffset>,
     pub error: ErrorStats,
 }
 
 impl Measurement {
     /// `k=v, k=v`, or `default`.
     pub fn settings(&self) -> String {
-        let shown: Vec<String> = self
-            .params
-            .iter()
-            .filter(|(k, _)| k != "cache_px_per_em")
-            .map(|(k, v)| format!("{k}={v}"))
-            .collect();
-        if shown.is_empty() {
-            "default".into()
-        } else {
-            shown.join(", ")
-        }
+        settings_text(&self.params)
     }
 
     /// Whether this is the baseline every time is divided by.
@@ -150,7 +145,7 @@ impl Measurement {
 /// One view of a scene, ready to measure methods in: its reference drawn once.
 struct ViewUnderTest<'a> {
     scene_name: &'a str,
-    view: SceneCamera,
+    scene_camera: SceneCamera,
     scene: Scene,
     camera: Camera,
     reference: Measured,
@@ -177,7 +172,7 @@ impl ViewUnderTest<'_> {
         };
         Ok(Measurement {
             scene: self.scene_name.to_owned(),
-            view: self.view,
+            scene_camera: self.scene_camera,
             method: method.name.to_owned(),
             params,
             gpu_ms: stats.gpu_ms.or(stats.cpu_render_ms),
@@ -191,9 +186,36 @@ impl ViewUnderTest<'_> {
             gpu_bytes: stats.gpu_bytes,
             curves_per_pixel: stats.curves_per_pixel,
             mesh_points: stats.mesh.as_ref().map(|m| m.points),
+            layout_offset: stats.layout_offset,
             error,
         })
     }
+}
+
+/// Parameters as `k=v, k=v`, or `default` (the atlas's cache size, the same for every
+/// case of a scene, left out).
+pub fn settings_text(params: &[(String, String)]) -> String {
+    let shown: Vec<String> = params
+        .iter()
+        .filter(|(k, _)| k != "cache_px_per_em")
+        .map(|(k, v)| format!("{k}={v}"))
+        .collect();
+    if shown.is_empty() {
+        "default".into()
+    } else {
+        shown.join(", ")
+    }
+}
+
+/// A view of a scene a peer refused to draw, and why (its documented limit).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Refusal {
+    pub scene: String,
+    #[serde(rename = "view")]
+    pub scene_camera: SceneCamera,
+    pub method: String,
+    pub params: Vec<(String, String)>,
+    pub reason: String,
 }
 
 /// Everything one run measured.
@@ -205,7 +227,10 @@ pub struct BenchResult {
     pub quick: bool,
     pub timing: Rounds,
     pub scenes: Vec<SceneInfo>,
-    pub cases: Vec<Measurement>,
+    #[serde(rename = "cases")]
+    pub measurements: Vec<Measurement>,
+    /// What a peer could not draw, with its reason: shown as "n/a — reason".
+    pub refusals: Vec<Refusal>,
     /// How each method is timed at each point of the scaling series.
     pub scaling_timing: FrameTiming,
     /// The scaling series' points, series after series.
@@ -337,7 +362,7 @@ fn settings_for(
     let is_baseline = method.role == registry::Role::Baseline;
     let mut all = method_settings::settings(method, quick);
     if view == SceneCamera::Moved && !is_baseline {
-        let kept = if quick && method.name != QUICK_MOVED_CONTRAST {
+        let kept = if quick && method.name != QUICK_MOVED_CONTRAST && !method.is_peer() {
             0
         } else {
             1
@@ -352,8 +377,8 @@ fn settings_for(
     all
 }
 
-/// In the view after caching, `--quick` keeps one method's default beside the atlas:
-/// the contrast.
+/// In the view after caching, `--quick` keeps one method's default beside the atlas and
+/// the peers: the contrast.
 const QUICK_MOVED_CONTRAST: &str = winding::NAME;
 
 /// Runs the bench, showing progress on stderr when it is a terminal.
@@ -406,7 +431,8 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
         quick: options.quick,
         timing,
         scenes: Vec::new(),
-        cases: Vec::new(),
+        measurements: Vec::new(),
+        refusals: Vec::new(),
         scaling_timing,
         scaling: Vec::new(),
     };
@@ -430,7 +456,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
             )?;
             result.scenes.push(SceneInfo {
                 name: bench_scene.name.into(),
-                view,
+                scene_camera: view,
                 about: bench_scene.about.into(),
                 width: camera.width,
                 height: camera.height,
@@ -442,7 +468,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
             });
             let here = ViewUnderTest {
                 scene_name: bench_scene.name,
-                view,
+                scene_camera: view,
                 scene,
                 camera,
                 reference,
@@ -467,7 +493,23 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
                         method.name,
                         settings.join(" ")
                     ));
-                    round.push(here.measure(&gpu, method, params.clone(), timing.per_round)?);
+                    match here.measure(&gpu, method, params.clone(), timing.per_round) {
+                        Ok(measured) => round.push(measured),
+                        // A peer's documented limit: a result, said once per view.
+                        Err(Error::Refused(reason)) => {
+                            let refusal = Refusal {
+                                scene: bench_scene.name.into(),
+                                scene_camera: view,
+                                method: method.name.into(),
+                                params: params.clone(),
+                                reason,
+                            };
+                            if !result.refusals.contains(&refusal) {
+                                result.refusals.push(refusal);
+                            }
+                        }
+                        Err(e) => return Err(e),
+                    }
                     progress.inc(1);
                 }
                 rounds.push(round);
@@ -476,7 +518,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
                 if result.gpu_clock.is_none() {
                     result.gpu_clock.clone_from(&case.gpu_clock);
                 }
-                result.cases.push(case);
+                result.measurements.push(case);
             }
         }
     }
@@ -544,7 +586,7 @@ mod tests {
     fn timed(gpu_ms: f64, range: (f64, f64), cpu_prepare_ms: f64) -> Measurement {
         Measurement {
             scene: "page".into(),
-            view: SceneCamera::Own,
+            scene_camera: SceneCamera::Own,
             method: crate::methods::winding::INFO.name.into(),
             params: Vec::new(),
             gpu_ms: Some(gpu_ms),
@@ -558,6 +600,7 @@ mod tests {
             gpu_bytes: 1,
             curves_per_pixel: None,
             mesh_points: None,
+            layout_offset: None,
             error: ErrorStats::default(),
         }
     }

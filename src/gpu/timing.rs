@@ -47,6 +47,15 @@ impl Timestamps {
         encoder.write_timestamp(&self.queries, index);
     }
 
+    /// Timestamps `index` and `index + 1` written at the start and end of a render pass.
+    pub fn pass_writes(&self, index: u32) -> wgpu::RenderPassTimestampWrites<'_> {
+        wgpu::RenderPassTimestampWrites {
+            query_set: &self.queries,
+            beginning_of_pass_write_index: Some(index),
+            end_of_pass_write_index: Some(index + 1),
+        }
+    }
+
     /// Records the resolve of every timestamp into [`Self::readable`].
     pub fn resolve(&self, encoder: &mut wgpu::CommandEncoder) {
         encoder.resolve_query_set(&self.queries, 0..self.count, &self.resolved, 0);

@@ -314,6 +314,7 @@ fn rasterize_glyphs(scene: &Scene, px_per_em: f64, phases: u32) -> Result<Vec<Bi
                 glyph: 0,
                 position: DVec2::ZERO,
             }],
+            source: None,
         };
         let frame = BitmapFrame::of(glyph, scene.units_per_em, px_per_em)?;
         for row in 0..steps {

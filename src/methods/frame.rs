@@ -61,10 +61,13 @@ fn check_frame(target: &CoverageTarget, camera: &Camera) -> Result<(), Error> {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FrameTime {
     /// The GPU work the method recorded, by timestamps (data it uploads with
-    /// `Queue::write_buffer` is copied before the encoder runs and is not in it).
+    /// `Queue::write_buffer` is copied before the encoder runs and is not in it), and
+    /// for a peer, what it submitted on its own less the harness's copy of its picture
+    /// ([`Method::peer_gpu_time`]).
     pub gpu_ms: f64,
     /// The CPU work of recording the frame: the method's `encode` — culling, sorting,
-    /// building meshes, writing instances — everything it does per frame.
+    /// building meshes, writing instances — everything it does per frame (for a method
+    /// that submits on its own, less the GPU time its submissions waited for).
     pub cpu_ms: f64,
 }
 
@@ -107,7 +110,7 @@ fn time_batch(
 ) -> Result<Vec<FrameTime>, Error> {
     gpu.catching_errors(&format!("timing '{}'", method.name()), || {
         let timestamps = Timestamps::new(gpu, "frame timestamps", 2 * frames);
-        let mut cpu_ms = Vec::with_capacity(frames as usize);
+        let mut frame_ms = Vec::with_capacity(frames as usize);
         for frame in 0..frames {
             let mut encoder = gpu
                 .device
@@ -117,18 +120,40 @@ fn time_batch(
             timestamps.write(&mut encoder, 2 * frame);
             let start = Instant::now();
             method.encode(gpu, &mut encoder, target, camera)?;
-            cpu_ms.push(ms_since(start));
+            let encode_ms = ms_since(start);
             timestamps.write(&mut encoder, 2 * frame + 1);
             gpu.queue.submit([encoder.finish()]);
             // One frame at a time, as `render_frame` draws them: no frame's work overlaps
             // the next one's timestamps.
             gpu.wait_idle()?;
+            let wall_ms = ms_since(start);
+            let own = method.peer_gpu_time(gpu)?;
+            frame_ms.push((encode_ms, own.map(|own| (own, wall_ms))));
         }
         let gpu_ms = timestamps.read_intervals(gpu)?;
         Ok(gpu_ms
             .into_iter()
-            .zip(cpu_ms)
-            .map(|(gpu_ms, cpu_ms)| FrameTime { gpu_ms, cpu_ms })
+            .zip(frame_ms)
+            .map(|(recorded_ms, (encode_ms, peer))| match peer {
+                None => FrameTime {
+                    gpu_ms: recorded_ms,
+                    cpu_ms: encode_ms,
+                },
+                // A peer: its own submissions count, the harness's copy does not. Where
+                // the driver executes a submission inside it (a software device),
+                // `encode` waited for that work, so the CPU time is the frame's wall time
+                // less all GPU time, if that is less.
+                Some((t, wall_ms)) => FrameTime {
+                    gpu_ms: (recorded_ms + t.submitted_ms - t.copy_ms).max(0.0),
+                    cpu_ms: if t.submitted_ms > 0.0 {
+                        encode_ms
+                            .min(wall_ms - recorded_ms - t.submitted_ms)
+                            .max(0.0)
+                    } else {
+                        encode_ms
+                    },
+                },
+            })
             .collect())
     })
 }

@@ -65,6 +65,47 @@ pub trait Method: Send {
     fn mesh_stats(&self) -> Option<MeshStats> {
         None
     }
+
+    /// For a peer, the GPU time of the last `encode` that the frame's timestamps do not
+    /// see as the peer's own: the work it submitted itself (vello's API submits its own
+    /// command buffers; timed by timestamps in submissions just before and after them),
+    /// and glyphscope's copy of its picture into the coverage target (timed in its pass),
+    /// which is the harness's, not the peer's. None for glyphscope's own methods.
+    fn peer_gpu_time(&mut self, _gpu: &GpuContext) -> Result<Option<PeerGpuTime>, Error> {
+        Ok(None)
+    }
+
+    /// For a peer that lays text out itself (glyphon): how far its glyphs' positions
+    /// lie from glyphscope's shaping, in pixels, measured glyph by glyph in the last
+    /// frame. Error figures include the difference; this says how much of them it is.
+    fn layout_offset(&self) -> Option<LayoutOffset> {
+        None
+    }
+}
+
+/// See [`Method::peer_gpu_time`], ms.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PeerGpuTime {
+    /// Work the peer submitted on its own queue submissions.
+    pub submitted_ms: f64,
+    /// The copy of its picture into the coverage target.
+    pub copy_ms: f64,
+}
+
+/// How far a peer's own text layout puts glyphs from glyphscope's shaping (pixels):
+/// as laid out, and as finally placed after the peer snaps them to its pixel grid.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct LayoutOffset {
+    /// Glyphs compared (those with ink, matched in order).
+    pub glyphs: usize,
+    /// Glyphs whose id differs from glyphscope's at the same place in the text.
+    pub mismatched: usize,
+    /// Pen positions as the peer's layout gives them.
+    pub laid_out_mean_px: f64,
+    pub laid_out_max_px: f64,
+    /// Pen positions where the peer draws the glyphs, after its own snapping.
+    pub placed_mean_px: f64,
+    pub placed_max_px: f64,
 }
 
 /// Meshes a method holds for the current scene (see [`Method::mesh_stats`]).
@@ -232,6 +273,7 @@ pub mod atlas;
 pub mod bounds;
 pub mod frame;
 pub mod instances;
+pub mod peers;
 pub mod registry;
 pub mod sdf_cells;
 pub mod tessellation;

@@ -20,6 +20,10 @@ pub enum Role {
     /// A check of the GPU path, not a way to draw text (`bounds`): drawn and tested,
     /// not benched.
     Diagnostic,
+    /// A renderer people use instead (vello, glyphon, vello_cpu), measured as it is:
+    /// benched beside the methods, run through the stability sweep as an observed row,
+    /// never claimed for.
+    Peer,
 }
 
 /// Makes a GPU method from its `--param`s.
@@ -51,9 +55,13 @@ impl MethodInfo {
         self.role == Role::Reference
     }
 
-    /// Whether the bench measures it (a drawing method or the baseline).
+    /// Whether the bench measures it (a drawing method, the baseline or a peer).
     pub fn is_benched(&self) -> bool {
-        matches!(self.role, Role::Method | Role::Baseline)
+        matches!(self.role, Role::Method | Role::Baseline | Role::Peer)
+    }
+
+    pub fn is_peer(&self) -> bool {
+        self.role == Role::Peer
     }
 }
 
@@ -191,6 +199,9 @@ pub const METHODS: &[&MethodInfo] = &[
     &super::xor_stencil::INFO,
     &super::tessellation::INFO,
     &super::atlas::INFO,
+    &super::peers::vello::INFO,
+    &super::peers::glyphon::INFO,
+    &super::peers::vello_cpu::INFO,
 ];
 
 /// The method called `name`, or an error listing the names there are.

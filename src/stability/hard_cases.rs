@@ -43,7 +43,7 @@ pub struct HardCase {
     pub size_px_per_em: f64,
     /// Applied before the sweep's rotation (e.g. a skew).
     pub matrix: DMat2,
-    pub view: Framing,
+    pub framing: Framing,
     pub world_offset: DVec2,
     /// What makes it hard in ways some methods document as their limits.
     pub traits: &'static [Trait],
@@ -62,7 +62,7 @@ impl HardCase {
         let (sin, cos) = rotation_deg.to_radians().sin_cos();
         let mut camera = Camera::new(1, 1, self.size_px_per_em, DVec2::ZERO);
         camera.matrix = Camera::matrix_from_rows(cos, -sin, sin, cos) * self.matrix;
-        match self.view {
+        match self.framing {
             Framing::Framed => {
                 let ink = camera.ink_bounds(&self.scene)?;
                 camera.origin = (DVec2::splat(MARGIN_PX) - ink.min).floor() + subpixel;
@@ -94,7 +94,7 @@ pub fn all() -> Vec<HardCase> {
         scene: synthetic_scene(Outline { contours }),
         size_px_per_em: SYNTHETIC_PX_PER_EM,
         matrix: DMat2::IDENTITY,
-        view: Framing::Framed,
+        framing: Framing::Framed,
         world_offset: DVec2::ZERO,
         traits: &[],
         full_turn: false,
@@ -128,7 +128,7 @@ pub fn all() -> Vec<HardCase> {
         scene,
         size_px_per_em,
         matrix: DMat2::IDENTITY,
-        view: Framing::Framed,
+        framing: Framing::Framed,
         world_offset: DVec2::ZERO,
         traits: &[],
         full_turn: false,
@@ -368,7 +368,7 @@ pub fn all() -> Vec<HardCase> {
             2.0,
         )),
         HardCase {
-            view: Framing::Window {
+            framing: Framing::Window {
                 side: 48,
                 focus: DVec2::new(bowl.min.x, (bowl.min.y + bowl.max.y) / 2.0),
             },
@@ -380,7 +380,7 @@ pub fn all() -> Vec<HardCase> {
             )
         },
         HardCase {
-            view: Framing::Window {
+            framing: Framing::Window {
                 side: 48,
                 focus: DVec2::new(bowl.min.x, (bowl.min.y + bowl.max.y) / 2.0),
             },

@@ -90,6 +90,8 @@ fn worst_location(o: &Outcome) -> String {
 
 fn verdict(o: &Outcome) -> &'static str {
     match (o.breaks_claim(), o.limitation) {
+        _ if o.refused.is_some() => "n/a",
+        _ if o.observed => "observed",
         (true, _) => "BROKEN",
         (false, false) => "ok",
         (false, true) => "limitation",
@@ -107,7 +109,24 @@ pub fn long_table(outcomes: &[Outcome]) -> String {
         let claim = match (o.limitation, o.bound) {
             (false, Some(b)) => format!("≤ {}, ≤ {}", b.max, b.mae_255),
             (true, Some(b)) => format!("limitation, ≤ {}, ≤ {}", b.max, b.mae_255),
+            (_, None) if o.observed => "none (a peer, observed)".to_owned(),
             (_, None) => "limitation".to_owned(),
+        };
+        if let (Some(reason), 0) = (&o.refused, o.frames) {
+            writeln!(
+                out,
+                "| {} | {} | n/a — {reason} | | | | | | {claim} | n/a |",
+                o.case, o.variant
+            )
+            .expect("writing to a String");
+            continue;
+        }
+        let claim = match &o.refused {
+            Some(reason) => format!(
+                "{claim}; {} cameras drawn, the rest n/a — {reason}",
+                o.frames
+            ),
+            None => claim,
         };
         writeln!(
             out,
@@ -150,13 +169,22 @@ pub fn matrix_table(outcomes: &[Outcome]) -> String {
                 .iter()
                 .find(|o| o.case == *case && o.variant == *variant)
                 .map_or("—".to_owned(), |o| {
+                    if o.refused.is_some() && o.frames == 0 {
+                        return "n/a".to_owned();
+                    }
+                    // Drawn through some cameras only.
+                    let part = if o.refused.is_some() {
+                        " (part n/a)"
+                    } else {
+                        ""
+                    };
                     let mark = match verdict(o) {
                         "BROKEN" => "!",
                         "limitation" => "*",
                         _ => "",
                     };
                     format!(
-                        "{:.2} · {:.3} · {}{mark}",
+                        "{:.2} · {:.3} · {}{mark}{part}",
                         o.mae_255, o.max, o.artifact_pixels
                     )
                 });
@@ -219,9 +247,14 @@ pub fn margin_table(outcomes: &[Outcome]) -> String {
 
 /// Writes, under `dir`, each (case, variant)'s worst frame and its signed error map
 /// (red: too much coverage, blue: too little, full at 0.5), the tables (with each
-/// claim's margin) as Markdown, the outcomes as JSON, and the worst cameras as the CSV
-/// the CI grid reads ([`worst_cameras`]).
-pub fn write_report(dir: &Path, outcomes: &[Outcome]) -> Result<(), Error> {
+/// claim's margin) as Markdown, the outcomes as JSON, and — for the full sweep of every
+/// case and method, measured on `full_sweep_device` — the worst cameras as the CSV the
+/// CI grid reads ([`worst_cameras`]).
+pub fn write_report(
+    dir: &Path,
+    outcomes: &[Outcome],
+    full_sweep_device: Option<&str>,
+) -> Result<(), Error> {
     let output = |path: &Path, e: &dyn std::fmt::Display| {
         Error::Output(format!("cannot write '{}': {e}", path.display()))
     };
@@ -246,8 +279,11 @@ pub fn write_report(dir: &Path, outcomes: &[Outcome]) -> Result<(), Error> {
     );
     let path = dir.join("stability.md");
     std::fs::write(&path, markdown).map_err(|e| output(&path, &e))?;
-    let path = dir.join("worst-cameras.csv");
-    std::fs::write(&path, worst_cameras::to_csv(outcomes)).map_err(|e| output(&path, &e))?;
+    if let Some(device) = full_sweep_device {
+        let path = dir.join("worst-cameras.csv");
+        let csv = worst_cameras::to_csv(outcomes, device);
+        std::fs::write(&path, csv).map_err(|e| output(&path, &e))?;
+    }
     let path = dir.join("stability.json");
     let json = serde_json::to_string_pretty(outcomes).expect("outcomes serialize");
     std::fs::write(&path, json + "\n").map_err(|e| output(&path, &e))?;
@@ -274,13 +310,16 @@ mod tests {
             limitation: bound.is_none(),
             bound: bound.map(|max| within(max, 2.0)),
             failure: None,
+            refused: None,
+            observed: false,
             worst_images: None,
         }
     }
 
-    /// The file the full sweep writes reads back as the cameras it was written from,
-    /// and a sweep that finds an error on a pair the file lacks, or more error than the
-    /// file lists, or NaN, shows the file stale.
+    /// The file the full sweep writes reads back as the cameras it was written from
+    /// (an infinite error included), and a sweep that finds an error on a pair the
+    /// file lacks, more or less error than the file lists, or NaN, shows it stale; so
+    /// does a listed pair that did not run.
     #[test]
     fn worst_cameras_round_trip_and_go_stale() {
         let worst = Outcome {
@@ -291,9 +330,17 @@ mod tests {
             },
             ..outcome(0.123_456_789, Some(0.5))
         };
+        let invalid = Outcome {
+            case: "b-case",
+            ..outcome(f64::INFINITY, None)
+        };
+        let outcomes = [worst.clone(), outcome(0.0, None), invalid.clone()];
         let csv: &'static str =
-            Box::leak(worst_cameras::to_csv(&[worst.clone(), outcome(0.0, None)]).into_boxed_str());
-        let cameras = worst_cameras::parse(csv).unwrap();
+            Box::leak(worst_cameras::to_csv(&outcomes, "some GPU").into_boxed_str());
+        assert!(csv.contains("# device: some GPU\n"));
+        let mut cameras = worst_cameras::parse(csv).unwrap();
+        assert_eq!(cameras.len(), 2);
+        assert_eq!(cameras.pop().map(|c| c.max), Some(f64::INFINITY));
         assert_eq!(
             cameras,
             [worst_cameras::WorstCamera {
@@ -304,23 +351,28 @@ mod tests {
                 max: 0.123_456_789,
             }]
         );
-        assert!(worst_cameras::stale_entries(&cameras, &[worst.clone()]).is_empty());
+        assert!(worst_cameras::stale_entries(&cameras, std::slice::from_ref(&worst)).is_empty());
         let step = worst_cameras::STALE_TOLERANCE;
-        for (max, variant) in [
-            (0.123_456_789 + 1.5 * step, "a-method"),
-            (f64::NAN, "a-method"),
-            (0.01, "another-method"),
+        for max in [
+            0.123_456_789 + 1.5 * step,
+            0.123_456_789 - 1.5 * step,
+            f64::NAN,
         ] {
             let found = Outcome {
-                variant,
+                worst: worst.worst,
                 ..outcome(max, Some(0.5))
             };
-            assert_eq!(
-                worst_cameras::stale_entries(&cameras, &[found]).len(),
-                1,
-                "{max} {variant}"
-            );
+            let stale = worst_cameras::stale_entries(&cameras, &[found]);
+            assert_eq!(stale.len(), 1, "{max}: {stale:?}");
         }
+        let elsewhere = Outcome {
+            variant: "another-method",
+            ..outcome(0.01, Some(0.5))
+        };
+        let stale = worst_cameras::stale_entries(&cameras, &[elsewhere]);
+        assert_eq!(stale.len(), 2, "{stale:?}");
+        assert!(stale[0].contains("no worst camera is listed"), "{stale:?}");
+        assert!(stale[1].contains("no such pair ran"), "{stale:?}");
     }
 
     #[test]

@@ -134,6 +134,11 @@ pub struct Outcome {
     pub bound: Option<Bound>,
     /// A failure to prepare or draw, which breaks any claim.
     pub failure: Option<String>,
+    /// Why a peer could not draw some of the cameras (its documented limit): the
+    /// figures are over the others (none, when `frames` is 0). Never a failure.
+    pub refused: Option<String>,
+    /// A row with no claim at all (a peer's): measured and shown, never judged.
+    pub observed: bool,
     /// The worst frame and its reference (not serialized).
     #[serde(skip)]
     pub worst_images: Option<(CoverageImage, CoverageImage)>,
@@ -155,6 +160,8 @@ impl Outcome {
             limitation: variant.claim.is_limitation(case.traits),
             bound: variant.claim.bound(case.traits),
             failure: None,
+            refused: None,
+            observed: variant.claim.bound.is_none() && variant.claim.limitation.is_none(),
             worst_images: None,
         }
     }
@@ -217,7 +224,10 @@ pub fn run(
                 let mut outcome = Outcome::new(case, variant);
                 let method = methods::create(variant.method, &variant.params())
                     .and_then(|mut m| m.prepare(gpu, &case.scene).map(|()| m))
-                    .map_err(|e| outcome.failure = Some(format!("prepare: {e}")))
+                    .map_err(|e| match e {
+                        Error::Refused(reason) => outcome.refused = Some(reason),
+                        e => outcome.failure = Some(format!("prepare: {e}")),
+                    })
                     .ok();
                 (method, outcome)
             })
@@ -229,6 +239,12 @@ pub fn run(
                 let Some(m) = method else { continue };
                 let image = match frame::render_image(gpu, m.as_mut(), &camera) {
                     Ok(image) => image,
+                    // A peer's limit at this camera (glyphon: a turn): said, and the
+                    // other cameras still drawn.
+                    Err(Error::Refused(reason)) => {
+                        outcome.refused = Some(reason);
+                        continue;
+                    }
                     Err(e) => {
                         outcome.failure = Some(format!(
                             "drawing at {rotation_deg}°, offset {subpixel}: {e}"

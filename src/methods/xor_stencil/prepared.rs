@@ -83,6 +83,7 @@ impl Prepared {
             units_per_em: scene.units_per_em,
             glyphs: scene.glyphs.clone(),
             instances: order.iter().map(|&i| scene.instances[i]).collect(),
+            source: None,
         };
         let instances = Instances::new(gpu, &scene);
         let geometry = Geometry::new(gpu, &scene, 0);

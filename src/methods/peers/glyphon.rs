@@ -1,0 +1,355 @@
+//! `glyphon`: the common wgpu text renderer, a peer — cosmic-text shapes and lays out
+//! the scene's text, swash rasterizes each glyph into a texture atlas, one instanced
+//! quad draws each glyph. It is given the same font bytes (alone in its font system),
+//! the scene's text, its size in pixels and a line height equal to glyphscope's; its
+//! text area is placed so that its first baseline starts where the scene's does. Where
+//! its layout then puts each glyph, against glyphscope's shaping, is measured
+//! ([`Method::layout_offset`]) and stated beside its error figures, which include it.
+//!
+//! An atlas draws translation and uniform scale only: any other camera is refused, as
+//! is a scene that is not text in a font (synthetic outlines, a glyph by id) and a font
+//! varied on an axis other than weight (cosmic-text sets `wght` alone).
+
+use std::sync::Arc;
+
+use glam::DVec2;
+use glyphon::{
+    Attrs, Buffer, Cache, Color, ColorMode, Family, FontSystem, Metrics, Resolution, Shaping,
+    SwashCache, TextArea, TextAtlas, TextBounds, TextRenderer, Viewport, Weight,
+};
+
+use super::{PeerImage, observed};
+use crate::Error;
+use crate::camera::Camera;
+use crate::gpu::{CoverageTarget, GpuContext};
+use crate::methods::registry::{MethodInfo, Role, bench_at};
+use crate::methods::{
+    LayoutOffset, Method, Params, PeerGpuTime, not_prepared, reject_unknown_params,
+};
+use crate::scene::Scene;
+
+/// `glyphon`'s row in the registry.
+pub const INFO: MethodInfo = MethodInfo {
+    name: NAME,
+    summary: "peer: glyphon 0.12, the common wgpu text renderer (cosmic-text layout, swash \
+              rasterization, a glyph atlas); translation and uniform scale only",
+    role: Role::Peer,
+    shader: Some(super::SHADER),
+    params: &[],
+    colour: [23, 190, 207],
+    bench: &[bench_at(&[], true)],
+    claims: &[observed(NAME)],
+    create: Some(|params| Ok(Box::new(Glyphon::new(params)?))),
+};
+
+pub const NAME: &str = "glyphon";
+
+pub struct Glyphon {
+    prepared: Option<Prepared>,
+    image: Option<PeerImage>,
+    /// The last frame's text area top-left (exact, drawn) and camera, for
+    /// [`Method::layout_offset`].
+    last_frame: Option<(DVec2, DVec2, Camera)>,
+}
+
+struct Prepared {
+    font_system: FontSystem,
+    swash: SwashCache,
+    atlas: TextAtlas,
+    viewport: Viewport,
+    renderer: TextRenderer,
+    buffer: Buffer,
+    family: String,
+    weight: Weight,
+    text: String,
+    scene: Scene,
+    /// Lines advance by this many font units (glyphscope's shaping).
+    line_advance_units: f64,
+}
+
+impl Glyphon {
+    pub fn new(params: &Params) -> Result<Glyphon, Error> {
+        reject_unknown_params(NAME, params, &[])?;
+        Ok(Glyphon {
+            prepared: None,
+            image: None,
+            last_frame: None,
+        })
+    }
+}
+
+/// The font size, in pixels, glyphon draws `camera` at: the camera's map must be a
+/// uniform scale (and translation); anything else is refused.
+fn font_size_px(camera: &Camera, units_per_em: f64) -> Result<f64, Error> {
+    if camera.tilt_deg != 0.0 {
+        return Err(Error::Refused(format!(
+            "glyphon draws translation and uniform scale only: a tilt ({}°) needs perspective",
+            camera.tilt_deg
+        )));
+    }
+    let m = camera.matrix;
+    let scale = m.x_axis.x;
+    let uniform = m.x_axis.y == 0.0 && m.y_axis.x == 0.0 && m.y_axis.y == scale && scale > 0.0;
+    if !uniform {
+        return Err(Error::Refused(format!(
+            "glyphon draws translation and uniform scale only: the camera's matrix \
+             [{:.3} {:.3}; {:.3} {:.3}] turns, skews or mirrors",
+            m.x_axis.x, m.y_axis.x, m.x_axis.y, m.y_axis.y
+        )));
+    }
+    Ok(camera.scale(units_per_em) * scale * units_per_em)
+}
+
+impl Prepared {
+    /// Lays the text out at `font_size` pixels per em if it is not already.
+    fn lay_out(&mut self, font_size: f64) {
+        let line_height = self.line_advance_units / self.scene.units_per_em * font_size;
+        let metrics = Metrics::new(font_size as f32, line_height as f32);
+        if self.buffer.metrics() != metrics {
+            self.buffer.set_metrics(metrics);
+            let attrs = Attrs::new()
+                .family(Family::Name(&self.family))
+                .weight(self.weight);
+            self.buffer
+                .set_text(&self.text, &attrs, Shaping::Advanced, None);
+            self.buffer.shape_until_scroll(&mut self.font_system, false);
+        }
+    }
+
+    /// Each glyph of glyphon's layout: its id, its pen as laid out from the exact
+    /// top-left `area`, and its pen where glyphon draws it from the top-left `drawn` —
+    /// x in quarter-pixel bins, the area's y truncated and the line's baseline rounded
+    /// to whole pixels, as its `prepare` places glyphs.
+    fn laid_out(&self, area: DVec2, drawn: DVec2) -> Vec<(u16, DVec2, DVec2)> {
+        let mut out = Vec::new();
+        for run in self.buffer.layout_runs() {
+            for g in run.glyphs {
+                let pen = DVec2::new(
+                    f64::from(g.x + g.font_size * g.x_offset),
+                    f64::from(run.line_y + g.y - g.font_size * g.y_offset),
+                );
+                let physical = g.physical((drawn.x as f32, drawn.y as f32), 1.0);
+                let placed = DVec2::new(
+                    f64::from(physical.x) + f64::from(physical.cache_key.x_bin.as_float()),
+                    f64::from(physical.y) + f64::from(run.line_y.round()),
+                );
+                out.push((g.glyph_id, area + pen, placed));
+            }
+        }
+        out
+    }
+
+    /// The text area's top-left that puts glyphon's first baseline at the scene's
+    /// origin as `camera` sees it, its top on the nearest whole pixel: glyphon truncates
+    /// the area's top (and draws each line's baseline at its rounded offset), so a
+    /// whole top is where its first baseline lands nearest the scene's.
+    /// Also returns the exact top-left, where the layout's own positions are measured
+    /// from: (exact, drawn).
+    fn area_origin(&self, camera: &Camera) -> (DVec2, DVec2) {
+        let origin = camera
+            .glyph_to_image(self.scene.units_per_em, DVec2::ZERO)
+            .z_axis
+            .truncate();
+        let first_baseline = self.buffer.layout_runs().next().map_or(0.0, |r| r.line_y);
+        let exact = origin - DVec2::new(0.0, f64::from(first_baseline));
+        let top = origin.y - f64::from(first_baseline.round());
+        (exact, DVec2::new(origin.x, top.round()))
+    }
+}
+
+impl Method for Glyphon {
+    fn name(&self) -> &'static str {
+        NAME
+    }
+
+    fn prepare(&mut self, gpu: &GpuContext, scene: &Scene) -> Result<(), Error> {
+        let refuse = |why: &str| {
+            Err(Error::Refused(format!(
+                "glyphon draws a font's text only: {why}"
+            )))
+        };
+        let Some(source) = &scene.source else {
+            return refuse("this scene's outlines come from no font");
+        };
+        let Some(text) = &source.text else {
+            return refuse("this scene is one glyph drawn by its id, not text");
+        };
+        let variations = source.font.variations();
+        if let Some((tag, _)) = variations.iter().find(|(tag, _)| tag.trim() != "wght") {
+            return Err(Error::Refused(format!(
+                "glyphon (cosmic-text) varies fonts by weight only: '{tag}' is set"
+            )));
+        }
+        // The scene's font alone: no system font to fall back on or be matched instead.
+        let bytes: Arc<dyn AsRef<[u8]> + Send + Sync> = Arc::new(source.font.data());
+        let mut db = glyphon::fontdb::Database::new();
+        db.load_font_source(glyphon::fontdb::Source::Binary(bytes));
+        let mut font_system = FontSystem::new_with_locale_and_db("en-US".into(), db);
+        let face = font_system.db().faces().next().ok_or_else(|| {
+            Error::Font(format!(
+                "glyphon's font database cannot read '{}'",
+                source.font.name()
+            ))
+        })?;
+        let family = face
+            .families
+            .first()
+            .map(|f| f.0.clone())
+            .unwrap_or_default();
+        let weight = variations
+            .iter()
+            .find(|(tag, _)| tag.trim() == "wght")
+            .map_or(face.weight, |&(_, w)| Weight(w.round() as u16));
+        let cache = Cache::new(&gpu.device);
+        let mut atlas = TextAtlas::with_color_mode(
+            &gpu.device,
+            &gpu.queue,
+            &cache,
+            super::PEER_FORMAT,
+            ColorMode::Web,
+        );
+        let renderer = TextRenderer::new(
+            &mut atlas,
+            &gpu.device,
+            wgpu::MultisampleState::default(),
+            None,
+        );
+        let viewport = Viewport::new(&gpu.device, &cache);
+        // No wrapping: each line of the text is one line of the layout.
+        let mut buffer = Buffer::new(&mut font_system, Metrics::new(1.0, 1.0));
+        buffer.set_size(None, None);
+        let (ascender, descender, line_gap) = source.font.line_metrics();
+        self.prepared = Some(Prepared {
+            font_system,
+            swash: SwashCache::new(),
+            atlas,
+            viewport,
+            renderer,
+            buffer,
+            family,
+            weight,
+            text: text.clone(),
+            scene: scene.clone(),
+            line_advance_units: ascender - descender + line_gap,
+        });
+        Ok(())
+    }
+
+    fn encode(
+        &mut self,
+        gpu: &GpuContext,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &CoverageTarget,
+        camera: &Camera,
+    ) -> Result<(), Error> {
+        let prepared = self.prepared.as_mut().ok_or_else(|| not_prepared(NAME))?;
+        let font_size = font_size_px(camera, prepared.scene.units_per_em)?;
+        // swash rasterizes each glyph whole into the atlas: one larger than the atlas's
+        // largest texture cannot be drawn (and swash's rasterizer does not survive it).
+        let largest = prepared
+            .scene
+            .glyphs
+            .iter()
+            .map(|g| g.bounds.size().max_element())
+            .fold(0.0, f64::max)
+            * font_size
+            / prepared.scene.units_per_em;
+        let atlas_side = f64::from(gpu.max_texture_side());
+        if largest + 2.0 > atlas_side {
+            return Err(Error::Refused(format!(
+                "glyphon rasterizes whole glyphs into its atlas: a glyph here is {largest:.0} \
+                 px across, past the largest atlas texture ({atlas_side} px)"
+            )));
+        }
+        prepared.lay_out(font_size);
+        let (exact, area) = prepared.area_origin(camera);
+        prepared.viewport.update(
+            &gpu.queue,
+            Resolution {
+                width: target.width,
+                height: target.height,
+            },
+        );
+        let text_area = TextArea {
+            buffer: &prepared.buffer,
+            left: area.x as f32,
+            top: area.y as f32,
+            scale: 1.0,
+            bounds: TextBounds::default(),
+            default_color: Color::rgb(255, 255, 255),
+            custom_glyphs: &[],
+        };
+        prepared
+            .renderer
+            .prepare(
+                &gpu.device,
+                &gpu.queue,
+                &mut prepared.font_system,
+                &mut prepared.atlas,
+                &prepared.viewport,
+                [text_area],
+                &mut prepared.swash,
+            )
+            .map_err(|e| Error::Gpu(format!("glyphon cannot prepare the text: {e}")))?;
+        let image = PeerImage::sized(self.image.take(), gpu, NAME, target.width, target.height);
+        {
+            let mut pass = image.clearing_pass(encoder, NAME);
+            prepared
+                .renderer
+                .render(&prepared.atlas, &prepared.viewport, &mut pass)
+                .map_err(|e| Error::Gpu(format!("glyphon cannot draw: {e}")))?;
+        }
+        image.copy_into(encoder, target);
+        self.image = Some(image);
+        self.last_frame = Some((exact, area, *camera));
+        Ok(())
+    }
+
+    fn peer_gpu_time(&mut self, gpu: &GpuContext) -> Result<Option<PeerGpuTime>, Error> {
+        super::gpu_time(self.image.as_ref(), gpu, 0.0)
+    }
+
+    /// Only the texture glyphon draws into: its atlas's size is not in its API.
+    fn gpu_bytes(&self) -> u64 {
+        self.image.as_ref().map_or(0, PeerImage::bytes)
+    }
+
+    fn layout_offset(&self) -> Option<LayoutOffset> {
+        let prepared = self.prepared.as_ref()?;
+        let (exact, drawn, camera) = self.last_frame.as_ref()?;
+        let scene = &prepared.scene;
+        let ink: std::collections::HashSet<u16> = scene.glyphs.iter().map(|g| g.id).collect();
+        let theirs = prepared
+            .laid_out(*exact, *drawn)
+            .into_iter()
+            .filter(|(id, _, _)| ink.contains(id));
+        let ours = scene.instances.iter().map(|i| {
+            let pen = camera
+                .glyph_to_image(scene.units_per_em, i.position)
+                .z_axis
+                .truncate();
+            (scene.glyphs[i.glyph as usize].id, pen)
+        });
+        let (mut glyphs, mut mismatched) = (0, 0);
+        let (mut laid_out, mut placed) = ((0.0, 0.0f64), (0.0, 0.0f64));
+        let add = |sum_max: &mut (f64, f64), distance: f64| {
+            sum_max.0 += distance;
+            sum_max.1 = sum_max.1.max(distance);
+        };
+        for ((their_id, pen, drawn), (our_id, ours)) in theirs.zip(ours) {
+            glyphs += 1;
+            mismatched += usize::from(their_id != our_id);
+            add(&mut laid_out, pen.distance(ours));
+            add(&mut placed, drawn.distance(ours));
+        }
+        let mean = |sum: f64| if glyphs > 0 { sum / glyphs as f64 } else { 0.0 };
+        Some(LayoutOffset {
+            glyphs,
+            mismatched,
+            laid_out_mean_px: mean(laid_out.0),
+            laid_out_max_px: laid_out.1,
+            placed_mean_px: mean(placed.0),
+            placed_max_px: placed.1,
+        })
+    }
+}

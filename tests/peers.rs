@@ -1,0 +1,236 @@
+//! The peers (vello, glyphon, vello_cpu) drawn through their public APIs: where they
+//! draw, what they refuse, how their time is taken, and vello_cpu as an independent
+//! check of the reference.
+
+mod common;
+
+use std::time::Instant;
+
+use glam::DVec2;
+use glyphscope::Error;
+use glyphscope::camera::Camera;
+use glyphscope::font::Font;
+use glyphscope::gpu::CoverageTarget;
+use glyphscope::measure::{self, FrameTiming};
+use glyphscope::methods::{self, frame, peers, registry};
+use glyphscope::metrics;
+use glyphscope::reference;
+use glyphscope::scene::Scene;
+use glyphscope::view_args::ViewArgs;
+
+const ONE_FRAME: FrameTiming = FrameTiming {
+    warmup: 0,
+    frames: 1,
+};
+
+/// vello_cpu flattens curves to lines within 0.25 px (its `flatten.rs`: `TOL`) and
+/// writes 8-bit premultiplied pixels. A chord within 0.25 px of its curve changes a
+/// pixel's coverage by at most the area between them inside the pixel: at most 0.25
+/// px across a length of at most √2 px (the pixel's diagonal); the 8-bit store adds at
+/// most one step. So on glyphs without overlapping contours (where area coverage is
+/// exact) no pixel of vello_cpu's may differ from an exact reference by more than
+/// 0.25·√2 + 1/255 — a bound set from vello_cpu's documented precision alone, which
+/// checks the reference against a rasterizer written by other people.
+const VELLO_CPU_BOUND: f64 = 0.25 * std::f64::consts::SQRT_2 + 1.0 / 255.0;
+
+fn views() -> Vec<(&'static str, ViewArgs)> {
+    let text = |t: &str, size| ViewArgs::text(t, size);
+    vec![
+        ("DejaVu at 8 px/em", text("Hamburgefonstiv", 8.0)),
+        ("DejaVu at 16 px/em", text("Hamburgefonstiv ag", 16.0)),
+        ("DejaVu at 40 px/em", text("ag&Qx", 40.0)),
+        (
+            "DejaVu turned 30°",
+            ViewArgs {
+                matrix: Some([0.866, -0.5, 0.5, 0.866]),
+                ..text("Rotated", 40.0)
+            },
+        ),
+        (
+            "Latin Modern cubics at 24 px/em",
+            ViewArgs {
+                font: Some("fonts/lmroman10-regular.otf".into()),
+                ..text("Quixotic", 24.0)
+            },
+        ),
+    ]
+}
+
+#[test]
+fn vello_cpu_agrees_with_the_reference_within_its_flattening_tolerance() {
+    let gpu = common::gpu();
+    let info = registry::find(peers::vello_cpu::NAME).unwrap();
+    for quality in ["speed", "quality"] {
+        for (what, view) in views() {
+            let (scene, camera) = view.build().unwrap();
+            let exact = reference::rasterize(&scene, &camera).unwrap();
+            let params = [("mode".to_string(), quality.to_string())];
+            let drawn = measure::measure(Some(gpu), &scene, &camera, info, &params, ONE_FRAME)
+                .unwrap_or_else(|e| panic!("{what}: {e}"));
+            let error = metrics::compare(&drawn.image, &exact).unwrap();
+            println!(
+                "vello-cpu mode={quality} on {what}: max {:.3}, MAE {:.2}/255, edge MAE {:.2}/255",
+                error.max, error.mae_255, error.edge.mae_255
+            );
+            assert!(
+                error.max <= VELLO_CPU_BOUND,
+                "{what}, mode={quality}: off by {:.3} at {:?}, past {VELLO_CPU_BOUND:.3}",
+                error.max,
+                error.worst_pixel
+            );
+            assert!(error.edge.pixels > 0, "{what}: no edge drawn");
+        }
+    }
+}
+
+/// Each peer draws the text, where the reference has ink; vello (area anti-aliasing,
+/// flattening within 0.25 px as vello_cpu does) keeps to vello_cpu's bound too.
+#[test]
+fn every_peer_draws_text_where_the_reference_does() {
+    let gpu = common::gpu();
+    let (scene, camera) = ViewArgs::text("Hamburgefonstiv ag", 24.0).build().unwrap();
+    let exact = reference::rasterize(&scene, &camera).unwrap();
+    for info in registry::METHODS.iter().filter(|m| m.is_peer()) {
+        let drawn = measure::measure(Some(gpu), &scene, &camera, info, &[], ONE_FRAME)
+            .unwrap_or_else(|e| panic!("{}: {e}", info.name));
+        let (ink, exact_ink) = (drawn.image.sum(), exact.sum());
+        assert!(
+            (ink - exact_ink).abs() < 0.05 * exact_ink,
+            "{}: {ink} px of ink, the reference {exact_ink}",
+            info.name
+        );
+        let error = metrics::compare(&drawn.image, &exact).unwrap();
+        println!(
+            "{}: max {:.3}, MAE {:.2}/255",
+            info.name, error.max, error.mae_255
+        );
+        if info.name != peers::glyphon::NAME {
+            assert!(error.max <= VELLO_CPU_BOUND, "{}: {}", info.name, error.max);
+        }
+    }
+}
+
+/// What a peer cannot draw is an `Error::Refused` that names the peer and its limit,
+/// in one line: a tilt for every peer (perspective), a turn for glyphon (an atlas
+/// places bitmaps), a scene with no font or no text for glyphon, an axis other than
+/// weight for glyphon.
+#[test]
+fn peers_refuse_what_their_apis_cannot_draw() {
+    let gpu = common::gpu();
+    let refused = |name: &str, scene: &Scene, camera: &Camera| -> String {
+        let mut method = methods::create(name, &[]).unwrap();
+        let result = method
+            .prepare(gpu, scene)
+            .and_then(|()| frame::render_image(gpu, method.as_mut(), camera).map(|_| ()));
+        match result {
+            Err(Error::Refused(reason)) => {
+                assert!(reason.contains(name) && !reason.contains('\n'), "{reason}");
+                reason
+            }
+            other => panic!("{name}: {other:?}"),
+        }
+    };
+    let (text, upright) = ViewArgs::text("Tilted", 24.0).build().unwrap();
+    let tilted = Camera {
+        tilt_deg: 20.0,
+        ..upright
+    };
+    for info in registry::METHODS.iter().filter(|m| m.is_peer()) {
+        assert!(refused(info.name, &text, &tilted).contains("tilt"));
+    }
+    let turned = Camera {
+        matrix: Camera::matrix_from_rows(0.866, -0.5, 0.5, 0.866),
+        ..upright
+    };
+    assert!(refused(peers::glyphon::NAME, &text, &turned).contains("uniform scale"));
+    let synthetic = common::single(common::polygons(&[&[
+        (0.0, 0.0),
+        (100.0, 0.0),
+        (0.0, 100.0),
+    ]]));
+    assert!(refused(peers::glyphon::NAME, &synthetic, &upright).contains("no font"));
+    let one_glyph = Scene::from_glyph_id(&Font::default_font(), 36).unwrap();
+    assert!(refused(peers::glyphon::NAME, &one_glyph, &upright).contains("id"));
+    let condensed = ViewArgs {
+        font: Some("fonts/Inter-roman.var.ttf".into()),
+        variation: vec![("opsz".into(), 32.0)],
+        ..ViewArgs::text("Inter", 24.0)
+    };
+    if let Ok((scene, camera)) = condensed.build() {
+        assert!(refused(peers::glyphon::NAME, &scene, &camera).contains("weight"));
+    }
+    // The linebender peers fill synthetic outlines as paths: no refusal there.
+    for name in [peers::vello::NAME, peers::vello_cpu::NAME] {
+        let mut method = methods::create(name, &[]).unwrap();
+        method.prepare(gpu, &synthetic).unwrap();
+        let image = frame::render_image(gpu, method.as_mut(), &upright).unwrap();
+        assert!(image.sum() > 0.0, "{name}");
+    }
+}
+
+/// vello submits its own command buffers; the time the frame loop takes for them comes
+/// from timestamps in submissions just before and after. With the queue drained first,
+/// that time cannot exceed the frame's wall time (a timer that counted something else
+/// would), and it is not nothing.
+#[test]
+fn vellos_own_submissions_are_timed_within_the_frames_wall_time() {
+    let gpu = common::gpu();
+    if !gpu.has_timestamps() {
+        return;
+    }
+    let (scene, camera) = ViewArgs::text("Hamburgefonstiv", 32.0).build().unwrap();
+    let mut method = methods::create(peers::vello::NAME, &[]).unwrap();
+    method.prepare(gpu, &scene).unwrap();
+    let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
+    // Shaders compile on the first frame.
+    frame::render_frame(gpu, method.as_mut(), &target, &camera).unwrap();
+    method.peer_gpu_time(gpu).unwrap();
+    for _ in 0..3 {
+        let start = Instant::now();
+        frame::render_frame(gpu, method.as_mut(), &target, &camera).unwrap();
+        let wall_ms = start.elapsed().as_secs_f64() * 1e3;
+        let time = method.peer_gpu_time(gpu).unwrap().expect("a peer's time");
+        println!(
+            "vello: submitted {:.3} ms, copy {:.3} ms, wall {wall_ms:.3} ms",
+            time.submitted_ms, time.copy_ms
+        );
+        assert!(time.submitted_ms > 0.0);
+        assert!(
+            time.submitted_ms + time.copy_ms <= wall_ms,
+            "{time:?} > {wall_ms}"
+        );
+    }
+}
+
+/// glyphon lays the text out itself (cosmic-text); with the same font, size and line
+/// height its pens fall where glyphscope's shaping puts them, and where it draws them
+/// after its own snapping they are at most a quarter-pixel bin's half (x) and a
+/// rounded top plus a rounded baseline (y) away: √(⅛² + 1²) px.
+#[test]
+fn glyphon_lays_the_text_out_where_glyphscope_shapes_it() {
+    let gpu = common::gpu();
+    let view = ViewArgs {
+        origin: Some(DVec2::new(3.3, 20.6)),
+        ..ViewArgs::text(
+            "Hamburgefonstiv\nPack my box with five dozen liquor jugs.",
+            18.0,
+        )
+    };
+    let (scene, camera) = view.build().unwrap();
+    let info = registry::find(peers::glyphon::NAME).unwrap();
+    let drawn = measure::measure(Some(gpu), &scene, &camera, info, &[], ONE_FRAME).unwrap();
+    let offset = drawn
+        .stats
+        .layout_offset
+        .expect("glyphon measures its layout");
+    println!("{offset:?}");
+    assert_eq!(offset.glyphs, scene.instances.len());
+    assert_eq!(offset.mismatched, 0);
+    assert!(offset.laid_out_max_px < 0.01, "{offset:?}");
+    let snapping = (1.0f64 / 64.0 + 1.0).sqrt();
+    assert!(offset.placed_max_px <= snapping, "{offset:?}");
+    assert!(
+        offset.placed_max_px > 0.0,
+        "the origin is off the pixel grid"
+    );
+}
