@@ -125,8 +125,13 @@ fn quick_bench_outputs_agree_with_render() {
     // The Markdown holds a row per case plus the fastest-per-level tables.
     let md = std::fs::read_to_string(out.join("bench.md")).unwrap();
     assert!(md.contains("× atlas") && md.contains("Fastest at each error level"));
+    // A row per case, and one per view a peer refused, with its reason: none left out.
+    let refusals = json["refusals"].as_array().unwrap();
+    assert!(!refusals.is_empty(), "glyphon cannot draw the moved view");
     let csv = std::fs::read_to_string(out.join("bench.csv")).unwrap();
-    assert_eq!(csv.lines().count(), cases.len() + 1);
+    assert_eq!(csv.lines().count(), cases.len() + refusals.len() + 1);
+    let refused_rows = csv.lines().filter(|l| l.contains("\"n/a: ")).count();
+    assert_eq!(refused_rows, refusals.len());
 
     // One case rerun by `render` from the command line the bench reports: the same
     // error. The atlas after caching takes its cache size as a parameter like any other.

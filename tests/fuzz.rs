@@ -8,6 +8,7 @@
 mod common;
 
 use glam::{DMat2, DVec2};
+use glyphscope::Error;
 use glyphscope::camera::{Camera, MAX_SIZE_PX_PER_EM};
 use glyphscope::font::{Font, SHIPPED_FONTS};
 use glyphscope::geometry::{Contour, Outline, Segment};
@@ -210,8 +211,18 @@ proptest! {
         for info in registry::METHODS.iter().filter(|m| !m.is_reference()) {
             let name = info.name;
             let mut method = (info.create.unwrap())(&[]).unwrap();
-            method.prepare(common::gpu(), &scene).unwrap();
-            let image = frame::render_image(common::gpu(), method.as_mut(), &camera).unwrap();
+            let drawn = method
+                .prepare(common::gpu(), &scene)
+                .and_then(|()| frame::render_image(common::gpu(), method.as_mut(), &camera));
+            let image = match drawn {
+                Ok(image) => image,
+                // A peer's documented limit (glyphon draws no outline without a font).
+                Err(Error::Refused(reason)) if info.is_peer() => {
+                    prop_assert!(reason.contains(name), "{reason}");
+                    continue;
+                }
+                Err(e) => panic!("{name}: {e}"),
+            };
             prop_assert!(image.data.iter().all(in_range), "{name}: coverage out of [0, 1]");
         }
     }

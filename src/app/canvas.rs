@@ -19,7 +19,7 @@ use super::settings::{Layout, PaneOverlay, PaneSource};
 use crate::camera::Camera;
 use crate::gpu::shaders::COST_SCALE_CURVES;
 use crate::magnify::{VALUES_FROM, Window, block_labels};
-use crate::methods::Overlay;
+use crate::methods::{Overlay, registry};
 
 /// Space between panes, points.
 const GAP: f32 = 2.0;
@@ -522,6 +522,18 @@ impl Explorer {
             None => gpu_time,
         };
         drop(surface);
+        // A peer's live figures are the pane's frame as recorded here (the copy of its
+        // picture in, vello's own submissions under CPU): `render --stats` separates
+        // them.
+        let is_peer = match &self.settings.panes[index].source {
+            PaneSource::Method { name, .. } => registry::find(name).is_ok_and(|m| m.is_peer()),
+            PaneSource::Difference { .. } => false,
+        };
+        let time = if is_peer {
+            format!("{time} (as drawn here; render --stats times the peer alone)")
+        } else {
+            time
+        };
         lines.push(format!(
             "{time} · {} · prepare {:.0} ms",
             bytes(pane.gpu_bytes),

@@ -160,11 +160,11 @@ impl Compositor {
     }
 }
 
-/// One pane's GPU state, shared by the UI thread (which creates and prepares the
-/// method) and the paint callback (which draws it).
 /// A frame slower than this (ms) is not redrawn while the view moves.
 pub const SLOW_FRAME_MS: f64 = 100.0;
 
+/// One pane's GPU state, shared by the UI thread (which creates and prepares the
+/// method) and the paint callback (which draws it).
 pub struct PaneSurface {
     pub method: Option<Box<dyn Method>>,
     pub target: Option<CoverageTarget>,

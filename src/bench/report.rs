@@ -286,11 +286,10 @@ fn peers_summary(result: &BenchResult, md: &mut String) {
     }
     let _ = write!(
         md,
-        "## Winding against the peers
-
-Each at its default: × atlas (GPU + CPU per frame \
+        "## Winding against the peers\n\nEach at its default: × atlas (GPU + CPU per frame \
          over the atlas's, this run) · MAE /255 · edge MAE /255 · max · pixels > 0.5, or \
-         why the peer cannot draw the view.\n\n| scene | view | {ours} |"
+         why the peer cannot draw the view. The peers draw into 8-bit textures: up to \
+         1/510 per edge pixel is their floor.\n\n| scene | view | {ours} |"
     );
     for peer in &peers {
         let _ = write!(md, " {peer} |");
@@ -334,14 +333,15 @@ Each at its default: × atlas (GPU + CPU per frame \
     md.push('\n');
 }
 
-/// One line per case; `settings` quoted, since it holds commas.
+/// One line per measurement, and one per view a peer refused (its reason in the last
+/// column); `settings` quoted, since it holds commas.
 pub fn csv(result: &BenchResult) -> String {
     let mut out = String::from(
         "scene,view,method,settings,gpu_ms,gpu_ms_min,gpu_ms_max,cpu_frame_ms,frame_ms,\
          ratio_to_atlas,cpu_prepare_ms,cpu_render_ms,mesh_build_ms,gpu_bytes,\
          curves_per_pixel_mean,curves_per_pixel_max,mesh_points,mae_255,p99_255,rmse_255,max,\
          pixels_over_025,pixels_over_05,pixels,invalid_pixels,edge_pixels,edge_mae_255,\
-         edge_max,edge_pixels_over_025,edge_pixels_over_05\n",
+         edge_max,edge_pixels_over_025,edge_pixels_over_05,refused\n",
     );
     let opt = |v: Option<f64>| v.map_or(String::new(), |v| v.to_string());
     for c in &result.measurements {
@@ -349,7 +349,7 @@ pub fn csv(result: &BenchResult) -> String {
         let _ = writeln!(
             out,
             "{},{},{},\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\
-             {},{},{},{}",
+             {},{},{},{},",
             c.scene,
             serde_json::to_value(c.scene_camera)
                 .expect("a view serializes")
@@ -384,6 +384,22 @@ pub fn csv(result: &BenchResult) -> String {
             e.edge.max,
             e.edge.pixels_over_025,
             e.edge.pixels_over_05,
+        );
+    }
+    // What a peer could not draw: a row with its reason, never left out.
+    for r in &result.refusals {
+        let _ = writeln!(
+            out,
+            "{},{},{},\"{}\",{}\"n/a: {}\"",
+            r.scene,
+            serde_json::to_value(r.scene_camera)
+                .expect("a view serializes")
+                .as_str()
+                .unwrap_or(""),
+            r.method,
+            settings_text(&r.params),
+            ",".repeat(26),
+            r.reason.replace('"', "'")
         );
     }
     out

@@ -90,7 +90,8 @@ fn worst_location(o: &Outcome) -> String {
 
 fn verdict(o: &Outcome) -> &'static str {
     match (o.breaks_claim(), o.limitation) {
-        _ if o.refused.is_some() => "n/a",
+        _ if o.observed && o.failure.is_some() => "failed (observed)",
+        _ if o.refused.is_some() && o.frames == 0 => "n/a",
         _ if o.observed => "observed",
         (true, _) => "BROKEN",
         (false, false) => "ok",

@@ -200,9 +200,12 @@ impl Outcome {
         self
     }
 
-    /// Whether the measurement breaks the claim (a failure always does).
+    /// Whether the measurement breaks the claim (a failure always does). An observed
+    /// row (a peer's) has no claim to break: its failures are shown, never judged.
     pub fn breaks_claim(&self) -> bool {
-        self.failure.is_some() || self.bound.is_some_and(|b| !b.holds(self.max, self.mae_255))
+        !self.observed
+            && (self.failure.is_some()
+                || self.bound.is_some_and(|b| !b.holds(self.max, self.mae_255)))
     }
 }
 

@@ -13,6 +13,7 @@
 use std::sync::Arc;
 
 use glam::DVec2;
+use glyphon::cosmic_text::CacheKeyFlags;
 use glyphon::{
     Attrs, Buffer, Cache, Color, ColorMode, Family, FontSystem, Metrics, Resolution, Shaping,
     SwashCache, TextArea, TextAtlas, TextBounds, TextRenderer, Viewport, Weight,
@@ -24,7 +25,8 @@ use crate::camera::Camera;
 use crate::gpu::{CoverageTarget, GpuContext};
 use crate::methods::registry::{MethodInfo, Role, bench_at};
 use crate::methods::{
-    LayoutOffset, Method, Params, PeerGpuTime, not_prepared, reject_unknown_params,
+    LayoutOffset, Method, ParamSpec, Params, PeerGpuTime, not_prepared, param,
+    reject_unknown_params,
 };
 use crate::scene::Scene;
 
@@ -35,16 +37,25 @@ pub const INFO: MethodInfo = MethodInfo {
               rasterization, a glyph atlas); translation and uniform scale only",
     role: Role::Peer,
     shader: Some(super::SHADER),
-    params: &[],
+    params: PARAMS,
     colour: [23, 190, 207],
-    bench: &[bench_at(&[], true)],
+    bench: &[bench_at(&[], true), bench_at(&[("hint", "off")], false)],
     claims: &[observed(NAME)],
     create: Some(|params| Ok(Box::new(Glyphon::new(params)?))),
 };
 
 pub const NAME: &str = "glyphon";
 
+const PARAMS: &[ParamSpec] = &[ParamSpec {
+    key: "hint",
+    choices: &["on", "off"],
+    range: None,
+    help: "swash's hinting of the glyph bitmaps (cosmic-text's DISABLE_HINTING flag when \
+           off): on is glyphon's default; off draws the outlines as they are.",
+}];
+
 pub struct Glyphon {
+    hint: bool,
     prepared: Option<Prepared>,
     image: Option<PeerImage>,
     /// The last frame's text area top-left (exact, drawn) and camera, for
@@ -61,6 +72,10 @@ struct Prepared {
     buffer: Buffer,
     family: String,
     weight: Weight,
+    /// Whether swash hints the glyphs (glyphon's default).
+    hint: bool,
+    /// The metrics the buffer was last laid out at.
+    laid_out_at: Option<Metrics>,
     text: String,
     scene: Scene,
     /// Lines advance by this many font units (glyphscope's shaping).
@@ -69,12 +84,54 @@ struct Prepared {
 
 impl Glyphon {
     pub fn new(params: &Params) -> Result<Glyphon, Error> {
-        reject_unknown_params(NAME, params, &[])?;
+        reject_unknown_params(NAME, params, &["hint"])?;
+        let hint = match param(params, "hint").unwrap_or("on") {
+            "on" => true,
+            "off" => false,
+            other => {
+                return Err(Error::Input(format!(
+                    "glyphon has no hint '{other}': it takes on or off"
+                )));
+            }
+        };
         Ok(Glyphon {
+            hint,
             prepared: None,
             image: None,
             last_frame: None,
         })
+    }
+}
+
+/// The weight cosmic-text is to set for a font varied by `variations` with `axes`: the
+/// `wght` value, or the axis's own default when none is set (cosmic-text always sets
+/// `wght` from the weight it is given); None for a font without a weight axis. Refused:
+/// any other axis set, which cosmic-text cannot set, and a fractional weight, which it
+/// cannot express.
+pub fn weight_for(
+    variations: &[(String, f32)],
+    axes: &[crate::font::Axis],
+) -> Result<Option<Weight>, Error> {
+    if let Some((tag, _)) = variations.iter().find(|(tag, _)| tag.trim() != "wght") {
+        return Err(Error::Refused(format!(
+            "glyphon (cosmic-text) varies fonts by weight only: '{}' is set",
+            tag.trim()
+        )));
+    }
+    let set = variations
+        .iter()
+        .find(|(tag, _)| tag.trim() == "wght")
+        .map(|v| v.1);
+    let default = axes
+        .iter()
+        .find(|a| a.tag.trim() == "wght")
+        .map(|a| a.default);
+    match set.or(default) {
+        Some(w) if w.fract() != 0.0 => Err(Error::Refused(format!(
+            "glyphon (cosmic-text) takes whole weights only: wght {w}"
+        ))),
+        Some(w) => Ok(Some(Weight(w as u16))),
+        None => Ok(None),
     }
 }
 
@@ -101,19 +158,31 @@ fn font_size_px(camera: &Camera, units_per_em: f64) -> Result<f64, Error> {
 }
 
 impl Prepared {
-    /// Lays the text out at `font_size` pixels per em if it is not already.
+    /// Lays the text out at `font_size` pixels per em if it is not already: the text
+    /// is set once, a new size only changes the metrics, as an application zooming
+    /// its text would.
     fn lay_out(&mut self, font_size: f64) {
         let line_height = self.line_advance_units / self.scene.units_per_em * font_size;
         let metrics = Metrics::new(font_size as f32, line_height as f32);
-        if self.buffer.metrics() != metrics {
-            self.buffer.set_metrics(metrics);
+        if self.laid_out_at == Some(metrics) {
+            return;
+        }
+        if self.laid_out_at.is_none() {
+            let flags = if self.hint {
+                CacheKeyFlags::empty()
+            } else {
+                CacheKeyFlags::DISABLE_HINTING
+            };
             let attrs = Attrs::new()
                 .family(Family::Name(&self.family))
-                .weight(self.weight);
+                .weight(self.weight)
+                .cache_key_flags(flags);
             self.buffer
                 .set_text(&self.text, &attrs, Shaping::Advanced, None);
-            self.buffer.shape_until_scroll(&mut self.font_system, false);
         }
+        self.buffer.set_metrics(metrics);
+        self.buffer.shape_until_scroll(&mut self.font_system, false);
+        self.laid_out_at = Some(metrics);
     }
 
     /// Each glyph of glyphon's layout: its id, its pen as laid out from the exact
@@ -174,17 +243,12 @@ impl Method for Glyphon {
         let Some(text) = &source.text else {
             return refuse("this scene is one glyph drawn by its id, not text");
         };
-        let variations = source.font.variations();
-        if let Some((tag, _)) = variations.iter().find(|(tag, _)| tag.trim() != "wght") {
-            return Err(Error::Refused(format!(
-                "glyphon (cosmic-text) varies fonts by weight only: '{tag}' is set"
-            )));
-        }
+        let weight = weight_for(&source.font.variations(), &source.font.axes())?;
         // The scene's font alone: no system font to fall back on or be matched instead.
         let bytes: Arc<dyn AsRef<[u8]> + Send + Sync> = Arc::new(source.font.data());
         let mut db = glyphon::fontdb::Database::new();
         db.load_font_source(glyphon::fontdb::Source::Binary(bytes));
-        let mut font_system = FontSystem::new_with_locale_and_db("en-US".into(), db);
+        let font_system = FontSystem::new_with_locale_and_db("en-US".into(), db);
         let face = font_system.db().faces().next().ok_or_else(|| {
             Error::Font(format!(
                 "glyphon's font database cannot read '{}'",
@@ -196,10 +260,8 @@ impl Method for Glyphon {
             .first()
             .map(|f| f.0.clone())
             .unwrap_or_default();
-        let weight = variations
-            .iter()
-            .find(|(tag, _)| tag.trim() == "wght")
-            .map_or(face.weight, |&(_, w)| Weight(w.round() as u16));
+        // A font with no weight axis: the face's own weight, which cosmic-text matches.
+        let weight = weight.unwrap_or(face.weight);
         let cache = Cache::new(&gpu.device);
         let mut atlas = TextAtlas::with_color_mode(
             &gpu.device,
@@ -216,7 +278,7 @@ impl Method for Glyphon {
         );
         let viewport = Viewport::new(&gpu.device, &cache);
         // No wrapping: each line of the text is one line of the layout.
-        let mut buffer = Buffer::new(&mut font_system, Metrics::new(1.0, 1.0));
+        let mut buffer = Buffer::new_empty(Metrics::new(1.0, 1.0));
         buffer.set_size(None, None);
         let (ascender, descender, line_gap) = source.font.line_metrics();
         self.prepared = Some(Prepared {
@@ -228,6 +290,8 @@ impl Method for Glyphon {
             buffer,
             family,
             weight,
+            hint: self.hint,
+            laid_out_at: None,
             text: text.clone(),
             scene: scene.clone(),
             line_advance_units: ascender - descender + line_gap,
@@ -290,7 +354,13 @@ impl Method for Glyphon {
                 [text_area],
                 &mut prepared.swash,
             )
-            .map_err(|e| Error::Gpu(format!("glyphon cannot prepare the text: {e}")))?;
+            .map_err(|e| match e {
+                glyphon::PrepareError::AtlasFull => Error::Refused(format!(
+                    "glyphon's atlas cannot hold the glyphs in view at {font_size:.0} px/em \
+                     (its largest texture is {} px a side)",
+                    gpu.max_texture_side()
+                )),
+            })?;
         let image = PeerImage::sized(self.image.take(), gpu, NAME, target.width, target.height);
         {
             let mut pass = image.clearing_pass(encoder, NAME);
@@ -299,6 +369,9 @@ impl Method for Glyphon {
                 .render(&prepared.atlas, &prepared.viewport, &mut pass)
                 .map_err(|e| Error::Gpu(format!("glyphon cannot draw: {e}")))?;
         }
+        // As glyphon's own examples do after each frame: glyphs not drawn in it may be
+        // evicted, so the atlas does not fill up with every size and bin ever drawn.
+        prepared.atlas.trim();
         image.copy_into(encoder, target);
         self.image = Some(image);
         self.last_frame = Some((exact, area, *camera));

@@ -2,7 +2,7 @@
 //! through their public APIs, at their own settings, on the same device and against the
 //! same reference — `vello` (linebender's GPU compute renderer), `glyphon` (the common
 //! wgpu text renderer: cosmic-text layout, swash rasterization, a glyph atlas) and
-//! `vello-cpu` (linebender's CPU sparse-strips rasterizer, egui's own).
+//! `vello-cpu` (linebender's CPU sparse-strips rasterizer, which egui uses too).
 //!
 //! Each draws white on transparent black into a texture of its own (the format its API
 //! renders to); one pass here copies that texture's alpha — linear coverage, no sRGB

@@ -58,7 +58,9 @@ pub struct Vello {
     renderer: Option<Renderer>,
     prepared: Option<LinebenderScene>,
     image: Option<PeerImage>,
-    /// The last frame's timestamps around vello's own submissions.
+    /// Timestamps around vello's own submissions, written anew each frame: what lies
+    /// between them is the span of `render_to_texture` — vello's recording on the CPU
+    /// (resolving the scene, encoding its passes) and then its GPU work.
     timestamps: Option<Timestamps>,
 }
 
@@ -173,11 +175,11 @@ impl Method for Vello {
             height: target.height,
             antialiasing_method: self.aa,
         };
-        let timestamps = gpu
-            .has_timestamps()
-            .then(|| Timestamps::new(gpu, "vello's submissions", 2));
+        if self.timestamps.is_none() && gpu.has_timestamps() {
+            self.timestamps = Some(Timestamps::new(gpu, "vello's submissions", 2));
+        }
         let stamp = |index: u32| {
-            if let Some(t) = &timestamps {
+            if let Some(t) = &self.timestamps {
                 let mut e = gpu.device.create_command_encoder(&Default::default());
                 t.write(&mut e, index);
                 gpu.queue.submit([e.finish()]);
@@ -189,14 +191,13 @@ impl Method for Vello {
             .render_to_texture(&gpu.device, &gpu.queue, &vello_scene, &image.view, &params)
             .map_err(|e| Error::Gpu(format!("vello failed: {e}")))?;
         stamp(1);
-        self.timestamps = timestamps;
         image.copy_into(encoder, target);
         self.image = Some(image);
         Ok(())
     }
 
     fn peer_gpu_time(&mut self, gpu: &GpuContext) -> Result<Option<PeerGpuTime>, Error> {
-        let submitted_ms = match self.timestamps.take() {
+        let submitted_ms = match &self.timestamps {
             Some(t) => t.read_intervals(gpu)?.first().copied().unwrap_or(0.0),
             None => 0.0,
         };

@@ -1,10 +1,10 @@
-//! `vello-cpu`: linebender's CPU sparse-strips rasterizer (vello_cpu, the rasterizer
-//! egui itself draws its glyphs with), a peer. The scene's glyphs are drawn with
+//! `vello-cpu`: linebender's CPU sparse-strips rasterizer (vello_cpu; egui draws its own
+//! glyphs with an earlier version), a peer. The scene's glyphs are drawn with
 //! `RenderContext::glyph_run` from the same font bytes and variation coordinates, by
 //! glyph id at glyphscope's shaped positions, under the camera's affine map, unhinted,
 //! on one thread; a scene of synthetic outlines is filled as paths. The whole
-//! rasterization is the frame's CPU time; the GPU's part is the upload's copy into the
-//! coverage target.
+//! rasterization is the frame's CPU time; the pixmap's upload runs before the frame,
+//! untimed, and the copy into the coverage target is the harness's.
 
 use ::vello::peniko::Fill;
 use glam::{DMat2, DVec2};
@@ -24,7 +24,7 @@ use crate::scene::Scene;
 /// `vello-cpu`'s row in the registry.
 pub const INFO: MethodInfo = MethodInfo {
     name: NAME,
-    summary: "peer: linebender's vello_cpu 0.3, CPU sparse strips (egui's rasterizer), \
+    summary: "peer: linebender's vello_cpu 0.3, CPU sparse strips (as egui uses), \
               glyphs from the same font bytes, one thread",
     role: Role::Peer,
     shader: Some(super::SHADER),
@@ -50,6 +50,7 @@ pub struct VelloCpu {
     prepared: Option<LinebenderScene>,
     image: Option<PeerImage>,
     resources: Resources,
+    context: Option<RenderContext>,
     /// The last frame's pixels, kept to reuse the allocation.
     pixmap: Option<Pixmap>,
 }
@@ -71,6 +72,7 @@ impl VelloCpu {
             prepared: None,
             image: None,
             resources: Resources::new(),
+            context: None,
             pixmap: None,
         })
     }
@@ -79,7 +81,14 @@ impl VelloCpu {
     fn rasterize(&mut self, camera: &Camera, pixmap: &mut Pixmap) -> Result<(), Error> {
         let prepared = self.prepared.as_ref().ok_or_else(|| not_prepared(NAME))?;
         let (width, height) = (pixmap.width(), pixmap.height());
-        let mut ctx = RenderContext::new(width, height);
+        // One context kept across frames, as an application would: reset, or resized.
+        let ctx = match &mut self.context {
+            Some(ctx) if (ctx.width(), ctx.height()) == (width, height) => {
+                ctx.reset();
+                ctx
+            }
+            context => context.insert(RenderContext::new(width, height)),
+        };
         ctx.set_paint(WHITE);
         ctx.set_fill_rule(Fill::NonZero);
         match prepared {
