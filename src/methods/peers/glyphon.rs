@@ -80,6 +80,8 @@ struct Prepared {
     scene: Scene,
     /// Lines advance by this many font units (glyphscope's shaping).
     line_advance_units: f64,
+    /// The widest or tallest glyph's control box, font units.
+    largest_glyph_units: f64,
 }
 
 impl Glyphon {
@@ -295,6 +297,11 @@ impl Method for Glyphon {
             text: text.clone(),
             scene: scene.clone(),
             line_advance_units: ascender - descender + line_gap,
+            largest_glyph_units: scene
+                .glyphs
+                .iter()
+                .map(|g| g.bounds.size().max_element())
+                .fold(0.0, f64::max),
         });
         Ok(())
     }
@@ -310,14 +317,7 @@ impl Method for Glyphon {
         let font_size = font_size_px(camera, prepared.scene.units_per_em)?;
         // swash rasterizes each glyph whole into the atlas: one larger than the atlas's
         // largest texture cannot be drawn (and swash's rasterizer does not survive it).
-        let largest = prepared
-            .scene
-            .glyphs
-            .iter()
-            .map(|g| g.bounds.size().max_element())
-            .fold(0.0, f64::max)
-            * font_size
-            / prepared.scene.units_per_em;
+        let largest = prepared.largest_glyph_units * font_size / prepared.scene.units_per_em;
         let atlas_side = f64::from(gpu.max_texture_side());
         if largest + 2.0 > atlas_side {
             return Err(Error::Refused(format!(
