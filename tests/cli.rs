@@ -798,7 +798,11 @@ fn render_case_draws_a_named_view_and_refuses_mixing() {
 /// and writes no image.
 #[test]
 fn render_draws_the_peers_and_refuses_what_they_cannot_draw() {
-    for peer in ["vello", "glyphon", "vello-cpu"] {
+    let peers = glyphscope::methods::registry::METHODS
+        .iter()
+        .filter(|m| m.is_peer())
+        .map(|m| m.name);
+    for peer in peers {
         let (out, err, stats) = (
             scratch(&format!("{peer}.png")),
             scratch(&format!("{peer}-err.png")),
