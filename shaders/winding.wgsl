@@ -66,7 +66,15 @@ override SLUG: bool = false;      // rays=slug: two rays combined as Slug's shad
 override SAMPLES: u32 = 0u;       // 1, 4 (2×2 sub-pixels tiling the pixel), 0: auto
 override EVEN_ODD: bool = false;  // fill rule; nonzero by default
 override USE_BANDS: bool = true;  // false: every curve of the glyph for every ray
-override OVERLAY: u32 = 0u;       // 0 none, 1 curve classes, 2 cost heat map, 3 count
+override OVERLAY: u32 = 0u;       // 0 none, 1 curve classes, 2 cost heat map, 3 count,
+                                  // 4 and 5 the cost breakdown's counts
+// aa=area cut short, for the cost breakdown (src/methods/winding/cost.rs) to time each
+// stage by the difference from the one before: 0 writes 1 at once (rasterizing, the
+// quads), 1 stops after the per-fragment setup (derivatives, the pixel's frame, its
+// band), 2 after the band walk (each curve loaded, mapped and sorted into its zone,
+// no term), 3 adds the terms of the curves right of the pixel but not those across it,
+// 4 is the whole shader.
+override STAGE: u32 = 4u;
 
 // One quad per instance over the glyph's control-point bounds.
 @vertex
@@ -102,6 +110,9 @@ fn fill(winding: f32) -> f32 {
 
 @fragment
 fn fs_main(in: GlyphQuad) -> @location(0) vec4<f32> {
+    if STAGE == 0u {
+        return vec4<f32>(1.0);
+    }
     let g = glyphs[in.glyph];
     // One pixel step in local units, x and y: the footprint under the full transform,
     // perspective included.
@@ -135,6 +146,15 @@ fn fs_main(in: GlyphQuad) -> @location(0) vec4<f32> {
         // Counting pass: the number of curves evaluated, exact in the half-float target
         // up to 2048 (kit::EXACT_COUNT_LIMIT); counts past it are reported as at least that.
         return vec4<f32>(f32(evaluated), 0.0, 0.0, coverage);
+    }
+    // The cost breakdown's two counting passes, summed over overlapping quads by the
+    // additive target: the curves visited by zone, and the fragments by what they
+    // found (`breakdown_tally`, set by aa=area).
+    if OVERLAY == 4u {
+        return vec4<f32>(f32(evaluated), f32(breakdown_tally.x), f32(breakdown_tally.y), coverage);
+    }
+    if OVERLAY == 5u {
+        return vec4<f32>(1.0, f32(coverage == 0.0), f32(coverage == 1.0), f32(breakdown_tally.z));
     }
     return vec4<f32>(coverage);
 }

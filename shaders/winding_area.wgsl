@@ -286,6 +286,11 @@ fn area_band(g: Glyph, centre: vec2<f32>, half_height: f32) -> Band {
     return bands[first + index];
 }
 
+// What aa=area found in this fragment, for the cost breakdown's counting passes
+// (OVERLAY 4 and 5): the curves it visited wholly right of the pixel, those across it,
+// and 1 where it integrated the sub-pixel grid.
+var<private> breakdown_tally: vec3<u32>;
+
 struct AreaWinding {
     // F, the winding number averaged over the pixel.
     winding: f32,
@@ -309,6 +314,11 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
     // the band is sorted so that every later one lies behind it too.
     let near_end = direction * centre.x - 0.5 * (abs(jx.x) + abs(jy.x));
     let start = select(band.by_max, band.by_min, direction < 0.0);
+    if STAGE == 1u {
+        // Setup only: the result must still depend on it.
+        result.winding = f32(band.count) + near_end + frame.slope;
+        return result;
+    }
     var across = 0u;
     var marked = false;
     for (var i = 0u; i < band.count; i++) {
@@ -320,10 +330,17 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
         result.evaluated++;
         let q = Bezier(frame_map(frame, c.p0p1.xy - centre), frame_map(frame, c.p0p1.zw - centre), frame_map(frame, c.p2_max.xy - centre));
         let zone = area_zone(q, frame.slope);
+        if STAGE == 2u {
+            // The walk without its terms.
+            result.winding += f32(zone);
+            continue;
+        }
         if zone == ZONE_RIGHT {
             result.winding += area_below(q.p2.y, frame.slope) - area_below(q.p0.y, frame.slope);
-        } else if zone == ZONE_ACROSS {
+            breakdown_tally.x++;
+        } else if zone == ZONE_ACROSS && STAGE != 3u {
             result.winding += across_term(q, frame.slope);
+            breakdown_tally.y++;
             across++;
             marked = marked || c.overlaps != 0.0;
         }
@@ -349,6 +366,7 @@ fn area_pixel(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Cove
         }
         evaluated = whole.evaluated;
     }
+    breakdown_tally.z = 1u;
     let step = 1.0 / f32(AREA_GRID);
     var value = 0.0;
     for (var k = 0u; k < AREA_GRID * AREA_GRID; k++) {

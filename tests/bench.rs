@@ -122,9 +122,26 @@ fn quick_bench_outputs_agree_with_render() {
             assert!(case["gpu_bytes"].as_u64().unwrap() > 0, "{what}");
         }
     }
+    // Where winding's time goes: a breakdown per view, its stages timed.
+    let costs = json["winding_costs"].as_array().unwrap();
+    assert_eq!(costs.len(), 2, "{costs:?}");
+    for cost in costs {
+        let counts = &cost["counts"];
+        let count = |key: &str| counts[key].as_u64().unwrap();
+        assert!(count("fragments") >= count("covered_pixels"), "{cost}");
+        assert!(count("covered_pixels") > 0 && count("quads") > 0, "{cost}");
+        assert!(
+            count("visited") >= count("right") + count("across"),
+            "{cost}"
+        );
+        let stages = cost["stage_gpu_ms"].as_array().unwrap();
+        assert_eq!(stages.len(), 5);
+        assert!(stages.iter().all(|ms| number(ms, "stage") > 0.0), "{cost}");
+    }
     // The Markdown holds a row per case plus the fastest-per-level tables.
     let md = std::fs::read_to_string(out.join("bench.md")).unwrap();
     assert!(md.contains("× atlas") && md.contains("Fastest at each error level"));
+    assert!(md.contains("## Where winding's time goes") && md.contains("| headlines | moved |"));
     // A row per case, and one per view a peer refused, with its reason: none left out.
     let refusals = json["refusals"].as_array().unwrap();
     assert!(!refusals.is_empty(), "glyphon cannot draw the moved view");

@@ -401,3 +401,37 @@ fn the_default_integrates_and_a_ray_count_casts_rays() {
         Antialiasing::Rays
     );
 }
+
+/// The cost breakdown's counts on a 6 × 4 px square placed a quarter pixel off the grid,
+/// worked by hand: its quad, grown by half a pixel, holds 7 × 5 pixel centres; the
+/// 5 × 3 pixels wholly inside are covered exactly 1 and none is left empty. Every pixel
+/// walks towards the nearer side and visits the one vertical edge on that side (the
+/// horizontal edges run along the bands and are left out): across the pixel in the two
+/// columns the edges pass through, wholly right of it (in the walk's direction) in the
+/// other five. The shader cut short after the quads writes 1 in each fragment.
+#[test]
+fn the_cost_breakdown_counts_what_a_square_makes() {
+    use glyphscope::methods::winding::{CostCounts, Stage, Winding};
+    let scene = single(polygons(&[&rect(0.0, 0.0, 6.0, 4.0)]));
+    let mut cam = unit_camera(12, 10);
+    cam.origin += DVec2::new(2.25, -2.25);
+    let mut whole = Winding::staged(&[], Stage::Full).unwrap();
+    whole.prepare(gpu(), &scene).unwrap();
+    let counts = whole.cost_counts(gpu(), &cam).unwrap();
+    let expected = CostCounts {
+        quads: 1,
+        fragments: 35,
+        covered_pixels: 35,
+        coverage_zero: 0,
+        coverage_one: 15,
+        grid: 0,
+        visited: 35,
+        right: 25,
+        across: 10,
+    };
+    assert_eq!(counts, expected);
+    assert_eq!(counts.no_term(), 0);
+    let mut quads = Winding::staged(&[], Stage::Quads).unwrap();
+    let image = render(&mut quads, &scene, &cam);
+    assert_eq!(image.sum(), 35.0);
+}

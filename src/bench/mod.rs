@@ -5,6 +5,7 @@
 //! - [`sweep`]: the settings each method is measured at;
 //! - [`run`]: measuring, through the same function as `render --stats`;
 //! - [`scaling`]: how each method's cost grows with the glyphs and with the size;
+//! - [`winding_cost`]: where `winding`'s default spends a frame, stage by stage;
 //! - [`report`] and [`plot`]: Markdown, CSV, JSON and SVG plots.
 
 pub mod method_settings;
@@ -13,6 +14,7 @@ pub mod report;
 pub mod run;
 pub mod scaling;
 pub mod scenes;
+pub mod winding_cost;
 
 use std::path::Path;
 

@@ -63,6 +63,7 @@ pub fn markdown(result: &BenchResult) -> String {
     } else {
         scene_sections(result, clock, &mut md);
     }
+    super::winding_cost::markdown(result, &mut md);
     super::scaling::markdown(&result.scaling, result.scaling_timing, &mut md);
     md
 }
@@ -254,10 +255,7 @@ fn summary(result: &BenchResult, md: &mut String) {
                 format!("{} ({ratio}×)", named(c))
             })
         });
-        let view = match info.scene_camera {
-            SceneCamera::Own => "own",
-            SceneCamera::Moved => "moved",
-        };
+        let view = info.scene_camera.name();
         let _ = writeln!(
             md,
             "| {} | {view} | {baseline} | {best} | {} | {} |",
@@ -320,10 +318,7 @@ fn peers_summary(result: &BenchResult, md: &mut String) {
                 "not run".into()
             }
         };
-        let view = match info.scene_camera {
-            SceneCamera::Own => "own",
-            SceneCamera::Moved => "moved",
-        };
+        let view = info.scene_camera.name();
         let _ = write!(md, "| {} | {view} | {} |", info.name, cell(ours));
         for peer in &peers {
             let _ = write!(md, " {} |", cell(peer));

@@ -8,6 +8,7 @@ use serde::Serialize;
 use super::method_settings;
 use super::scaling::{self, ScalingPoint, Series};
 use super::scenes::{self, BenchScene};
+use super::winding_cost::{self, WindingCost};
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::GpuContext;
@@ -71,6 +72,16 @@ pub enum SceneCamera {
     /// After caching: zoomed 2.5× and turned 30°; the atlas keeps the cache made for
     /// the scene's own size.
     Moved,
+}
+
+impl SceneCamera {
+    /// As the report's tables name it.
+    pub fn name(self) -> &'static str {
+        match self {
+            SceneCamera::Own => "own",
+            SceneCamera::Moved => "moved",
+        }
+    }
 }
 
 /// One scene through one of its cameras.
@@ -235,6 +246,8 @@ pub struct BenchResult {
     pub scaling_timing: FrameTiming,
     /// The scaling series' points, series after series.
     pub scaling: Vec<ScalingPoint>,
+    /// Where `winding`'s time goes, per scene and view, where `winding` was measured.
+    pub winding_costs: Vec<WindingCost>,
 }
 
 /// `names` in order, each once: a name given twice is measured once.
@@ -435,6 +448,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
         refusals: Vec::new(),
         scaling_timing,
         scaling: Vec::new(),
+        winding_costs: Vec::new(),
     };
     for bench_scene in chosen {
         let (_, own_camera) = bench_scene.args.build()?;
@@ -513,6 +527,20 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
                     progress.inc(1);
                 }
                 rounds.push(round);
+            }
+            if methods.iter().any(|m| m.name == winding::NAME) {
+                progress.set_message(format!(
+                    "{} ({view:?}): where winding's time goes",
+                    bench_scene.name
+                ));
+                let view_name = (bench_scene.name, view);
+                result.winding_costs.push(winding_cost::measure(
+                    &gpu,
+                    view_name,
+                    &here.scene,
+                    &here.camera,
+                    timing,
+                )?);
             }
             for case in combine_rounds(rounds) {
                 if result.gpu_clock.is_none() {

@@ -244,21 +244,31 @@ impl<'a> PipelineBuilder<'a> {
 /// to red and its coverage to alpha (the method's counting output).
 pub fn count_curves(
     gpu: &GpuContext,
-    (width, height): (u32, u32),
+    size: (u32, u32),
     draw: impl FnOnce(&mut wgpu::CommandEncoder, &CoverageTarget) -> Result<(), Error>,
 ) -> Result<CurveCost, Error> {
+    let texels = counting_pass(gpu, size, draw)?;
+    Ok(tally(
+        texels.iter().filter(|t| t[3] > 0.0).map(|t| t[0]),
+        1.0,
+    ))
+}
+
+/// The texels `draw` leaves in a fresh target of `width` × `height`, as written: a
+/// counting output's raw per-pixel sums (the target adds overlapping quads up).
+pub fn counting_pass(
+    gpu: &GpuContext,
+    (width, height): (u32, u32),
+    draw: impl FnOnce(&mut wgpu::CommandEncoder, &CoverageTarget) -> Result<(), Error>,
+) -> Result<Vec<[f32; 4]>, Error> {
     let target = CoverageTarget::new(gpu, width, height)?;
-    gpu.catching_errors("counting curves per pixel", || {
+    gpu.catching_errors("counting per pixel", || {
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         draw(&mut encoder, &target)?;
         gpu.queue.submit([encoder.finish()]);
         gpu.wait_idle()
     })?;
-    let texels = target.read_texels(gpu)?;
-    Ok(tally(
-        texels.iter().filter(|t| t[3] > 0.0).map(|t| t[0]),
-        1.0,
-    ))
+    target.read_texels(gpu)
 }
 
 /// The largest count the counting passes hold exactly: their target is

@@ -24,9 +24,11 @@
 
 pub mod area;
 mod bands;
+pub mod cost;
 mod overlaps;
 
 pub use bands::{BandCount, GlyphData, Layout, MAX_BANDS};
+pub use cost::{CostCounts, Stage};
 
 use super::instances::Instances;
 use super::registry::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at, within};
@@ -303,6 +305,9 @@ enum Output {
     Overlay(Overlay),
     /// Curves evaluated per pixel in red, for `curves_per_pixel`.
     CurveCount,
+    /// The cost breakdown's counting passes ([`cost`]).
+    CurveTally,
+    FragmentTally,
 }
 
 impl Output {
@@ -312,12 +317,16 @@ impl Output {
             Output::Overlay(Overlay::CurveClasses) => 1.0,
             Output::Overlay(_) => 2.0,
             Output::CurveCount => 3.0,
+            Output::CurveTally => 4.0,
+            Output::FragmentTally => 5.0,
         }
     }
 }
 
 pub struct Winding {
     settings: Settings,
+    /// Where the shader stops: [`Stage::Full`] but for the cost breakdown.
+    stage: Stage,
     layout: Option<(wgpu::BindGroupLayout, wgpu::PipelineLayout)>,
     /// The drawing pipeline, and the counting one once `curves_per_pixel` asks.
     pipelines: Vec<(Output, wgpu::RenderPipeline)>,
@@ -335,6 +344,7 @@ impl Winding {
     pub fn new(params: &Params) -> Result<Winding, Error> {
         Ok(Winding {
             settings: Settings::from_params(params)?,
+            stage: Stage::Full,
             layout: None,
             pipelines: Vec::new(),
             prepared: None,
@@ -367,6 +377,7 @@ impl Winding {
             ("EVEN_ODD", f64::from(u8::from(s.even_odd))),
             ("USE_BANDS", f64::from(u8::from(s.bands.is_some()))),
             ("OVERLAY", output.constant()),
+            ("STAGE", self.stage.constant()),
         ];
         let module = SHADER.module(&gpu.device);
         let layout = &self.layout(gpu).1;
@@ -377,7 +388,8 @@ impl Winding {
         &self.pipelines.last().expect("just pushed").1
     }
 
-    /// Records the draw of every visible instance with `output`'s pipeline.
+    /// Records the draw of every visible instance with `output`'s pipeline; returns how
+    /// many instances it draws.
     fn draw(
         &mut self,
         gpu: &GpuContext,
@@ -385,7 +397,7 @@ impl Winding {
         target: &CoverageTarget,
         camera: &Camera,
         output: Output,
-    ) -> Result<(), Error> {
+    ) -> Result<u32, Error> {
         let prepared = self
             .prepared
             .as_mut()
@@ -400,7 +412,7 @@ impl Winding {
             pass.set_bind_group(1, &prepared.bind_group, &[]);
             pass.draw(0..4, 0..visible);
         }
-        Ok(())
+        Ok(visible)
     }
 }
 
@@ -453,7 +465,7 @@ impl Method for Winding {
             .settings
             .overlay
             .map_or(Output::Coverage, Output::Overlay);
-        self.draw(gpu, encoder, target, camera, output)
+        self.draw(gpu, encoder, target, camera, output).map(drop)
     }
 
     fn gpu_bytes(&self) -> u64 {
@@ -471,6 +483,7 @@ impl Method for Winding {
     ) -> Result<Option<CurveCost>, Error> {
         kit::count_curves(gpu, (camera.width, camera.height), |encoder, target| {
             self.draw(gpu, encoder, target, camera, Output::CurveCount)
+                .map(drop)
         })
         .map(Some)
     }

@@ -1,0 +1,128 @@
+//! Where `aa=area`'s time goes: the counts behind a frame's cost and the shader cut
+//! short after each of its stages, for the bench's breakdown
+//! (`crate::bench::winding_cost`).
+//!
+//! Two counting passes draw the frame as usual but write, summed per pixel over the
+//! quads that reach it: the curves visited, those wholly right of the pixel and those
+//! across it (`OVERLAY` 4), and the fragments, those whose coverage came out exactly 0
+//! or 1, and those that integrated the sub-pixel grid (`OVERLAY` 5). A [`Stage`] cuts
+//! the shader short so that each stage's time is the difference from the one before.
+
+use super::{Output, Winding};
+use crate::Error;
+use crate::camera::Camera;
+use crate::gpu::{GpuContext, kit};
+use crate::methods::Params;
+
+/// Where the fragment shader stops (`STAGE` in winding.wgsl).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Stage {
+    /// Writes 1 at once: rasterizing the quads and blending.
+    Quads,
+    /// After the per-fragment setup: derivatives, the pixel's frame, its band.
+    Setup,
+    /// After the band walk: each visited curve loaded, mapped into the pixel's frame and
+    /// sorted into its zone, no term added.
+    Walk,
+    /// With the terms of the curves wholly right of the pixel, not those across it.
+    Right,
+    /// The whole shader: terms, fill rule, the sub-pixel grid where it is needed.
+    Full,
+}
+
+impl Stage {
+    /// In the order the shader runs them.
+    pub const ALL: [Stage; 5] = [
+        Stage::Quads,
+        Stage::Setup,
+        Stage::Walk,
+        Stage::Right,
+        Stage::Full,
+    ];
+
+    pub(super) fn constant(self) -> f64 {
+        match self {
+            Stage::Quads => 0.0,
+            Stage::Setup => 1.0,
+            Stage::Walk => 2.0,
+            Stage::Right => 3.0,
+            Stage::Full => 4.0,
+        }
+    }
+}
+
+/// One frame's counts, summed over its pixels.
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+pub struct CostCounts {
+    /// Glyph quads drawn.
+    pub quads: u64,
+    pub fragments: u64,
+    /// Pixels with coverage above 0.
+    pub covered_pixels: u64,
+    /// Fragments whose coverage came out exactly 0, exactly 1.
+    pub coverage_zero: u64,
+    pub coverage_one: u64,
+    /// Fragments that integrated the sub-pixel grid (three winding levels may meet).
+    pub grid: u64,
+    /// Band entries visited (each sub-pixel's walk counted where the grid ran).
+    pub visited: u64,
+    /// Visited curves wholly right of the pixel (their term: the pixel's area between
+    /// their end heights), and across it (the full integral); the rest add nothing.
+    pub right: u64,
+    pub across: u64,
+}
+
+impl CostCounts {
+    /// `count` per fragment.
+    pub fn per_fragment(&self, count: u64) -> f64 {
+        count as f64 / self.fragments.max(1) as f64
+    }
+
+    /// Visited curves that added no term: below, above or left of the pixel.
+    pub fn no_term(&self) -> u64 {
+        self.visited.saturating_sub(self.right + self.across)
+    }
+}
+
+impl Winding {
+    /// `winding` with `params`, its shader stopping after `stage`.
+    pub fn staged(params: &Params, stage: Stage) -> Result<Winding, Error> {
+        let mut winding = Winding::new(params)?;
+        winding.stage = stage;
+        Ok(winding)
+    }
+
+    /// The counts of a frame through `camera` (prepared, `aa=area`).
+    pub fn cost_counts(&mut self, gpu: &GpuContext, camera: &Camera) -> Result<CostCounts, Error> {
+        let size = (camera.width, camera.height);
+        let mut quads = 0;
+        let curves = kit::counting_pass(gpu, size, |encoder, target| {
+            quads = self.draw(gpu, encoder, target, camera, Output::CurveTally)?;
+            Ok(())
+        })?;
+        let fragments = kit::counting_pass(gpu, size, |encoder, target| {
+            self.draw(gpu, encoder, target, camera, Output::FragmentTally)
+                .map(drop)
+        })?;
+        // Each texel's sums, exact below kit::EXACT_COUNT_LIMIT (a pixel visits far fewer
+        // curves than that on the bench's scenes); rounded, since they are integers.
+        let sum = |texels: &[[f32; 4]], channel: usize| -> u64 {
+            texels
+                .iter()
+                .map(|t| f64::from(t[channel]).round() as u64)
+                .sum()
+        };
+        Ok(CostCounts {
+            quads: u64::from(quads),
+            fragments: sum(&fragments, 0),
+            covered_pixels: curves.iter().filter(|t| t[3] > 0.0).count() as u64,
+            coverage_zero: sum(&fragments, 1),
+            coverage_one: sum(&fragments, 2),
+            grid: sum(&fragments, 3),
+            visited: sum(&curves, 0),
+            right: sum(&curves, 1),
+            across: sum(&curves, 2),
+        })
+    }
+}
