@@ -1,8 +1,8 @@
 //! The figure of `winding aa=area` in docs/methods/winding.md: one quadratic curve
 //! against one pixel, in the frame the integral runs in, coloured by the zone each part
-//! of it lies in, with the curve's term from the CPU mirror. Left: a camera that neither rotates nor skews
-//! the glyph (the pixel is a square); right: rotated 20° (in the band frame the pixel
-//! is a parallelogram with vertical sides).
+//! of it lies in, with the curve's term from the CPU mirror. Left: a camera that neither
+//! rotates nor skews the glyph (the pixel is a square); right: rotated 20° (in the
+//! frame, which keeps the glyph's axes, the pixel is a turned square).
 //!
 //!     cargo run --release --example area_zones -- docs/area-zones.svg
 
@@ -57,14 +57,18 @@ fn main() {
         let to_local = to_image.inverse();
         let frame = PixelFrame::new(to_local.x_axis, to_local.y_axis, 1.0).expect("a pixel");
         let in_frame = curve.map(|p| frame.map(p));
-        let term = area::curve_term(in_frame, frame.slope);
+        let term: f64 = area::monotone_pieces(in_frame)
+            .into_iter()
+            .flatten()
+            .map(|piece| area::curve_term(piece, &frame))
+            .sum();
         let x0 = k as f64 * (PANEL_W + 30.0);
         let title = if degrees == 0.0 {
             "no rotation: the pixel is a square".to_string()
         } else {
-            format!("rotated {degrees}°: slope {:.2}", frame.slope)
+            format!("rotated {degrees}°: the pixel turns with it")
         };
-        panel(&mut svg, x0, frame.slope, &in_frame, &title, term);
+        panel(&mut svg, x0, &frame, &in_frame, &title, term);
     }
     for (i, (colour, what)) in INK.iter().enumerate() {
         let (x, y) = (10.0, TOP + PANEL_H + 22.0 + i as f64 * 18.0);
@@ -88,27 +92,35 @@ fn main() {
     println!("wrote {path}");
 }
 
-/// The chord of the pixel at height `v`: its left and right ends, if it has one.
-fn chord(v: f64, slope: f64) -> Option<(f64, f64)> {
-    let [v0, v1, v2, v3] = area::levels(slope);
-    if v < v0 || v > v3 {
-        return None;
+/// Where the side from corner `p` up to corner `q` is at height `v`.
+fn along(p: DVec2, q: DVec2, v: f64) -> f64 {
+    if q.y == p.y {
+        p.x.min(q.x)
+    } else {
+        p.x + (q.x - p.x) * (v - p.y) / (q.y - p.y)
     }
-    let left = if v <= v2 {
-        -0.5
-    } else {
-        -0.5 + (v - v2) / slope
-    };
-    let right = if v >= v1 {
-        0.5
-    } else {
-        -0.5 + (v - v0) / slope
-    };
-    Some((left, right))
 }
 
-fn zone_of(p: DVec2, slope: f64) -> usize {
-    match chord(p.y, slope) {
+/// The chord of the pixel at height `v`: its left and right ends, if it has one. The
+/// left side runs from the bottom corner through `left` to the top one, the right side
+/// through the opposite corner.
+fn chord(v: f64, f: &PixelFrame) -> Option<(f64, f64)> {
+    let (bottom, top, left) = (f.bottom, -f.bottom, f.left);
+    if v < bottom.y || v > top.y {
+        return None;
+    }
+    let side = |middle: DVec2| {
+        if v <= middle.y {
+            along(bottom, middle, v)
+        } else {
+            along(middle, top, v)
+        }
+    };
+    Some((side(left), side(-left)))
+}
+
+fn zone_of(p: DVec2, f: &PixelFrame) -> usize {
+    match chord(p.y, f) {
         None => 0,
         Some((left, _)) if p.x < left => 1,
         Some((_, right)) if p.x > right => 3,
@@ -116,7 +128,7 @@ fn zone_of(p: DVec2, slope: f64) -> usize {
     }
 }
 
-fn panel(svg: &mut String, x0: f64, slope: f64, curve: &Bezier, title: &str, term: f64) {
+fn panel(svg: &mut String, x0: f64, f: &PixelFrame, curve: &Bezier, title: &str, term: f64) {
     let at = |p: DVec2| {
         (
             x0 + (p.x - U_RANGE.0) * SCALE,
@@ -133,7 +145,7 @@ fn panel(svg: &mut String, x0: f64, slope: f64, curve: &Bezier, title: &str, ter
             .collect();
         format!("<polygon points='{}' fill='{fill}'/>\n", list.join(" "))
     };
-    let [v0, v1, v2, v3] = area::levels(slope);
+    let (bottom, top, left) = (f.bottom, -f.bottom, f.left);
     let (lo, hi) = U_RANGE;
     let corner = |u: f64, v: f64| DVec2::new(u, v);
     svg.push_str(&polygon(
@@ -145,34 +157,15 @@ fn panel(svg: &mut String, x0: f64, slope: f64, curve: &Bezier, title: &str, ter
         ],
         OUTSIDE,
     ));
-    // The rows, then the pixel's left chain (up its left side and top) and right chain.
+    // The rows left of the pixel's left side, the pixel, the rows right of its right
+    // side.
     svg.push_str(&polygon(
-        &[
-            corner(lo, v0),
-            corner(-0.5, v0),
-            corner(-0.5, v2),
-            corner(0.5, v3),
-            corner(lo, v3),
-        ],
+        &[corner(lo, bottom.y), bottom, left, top, corner(lo, top.y)],
         LEFT,
     ));
+    svg.push_str(&polygon(&[bottom, -left, top, left], ACROSS));
     svg.push_str(&polygon(
-        &[
-            corner(-0.5, v0),
-            corner(0.5, v1),
-            corner(0.5, v3),
-            corner(-0.5, v2),
-        ],
-        ACROSS,
-    ));
-    svg.push_str(&polygon(
-        &[
-            corner(-0.5, v0),
-            corner(hi, v0),
-            corner(hi, v3),
-            corner(0.5, v3),
-            corner(0.5, v1),
-        ],
+        &[bottom, corner(hi, bottom.y), corner(hi, top.y), top, -left],
         RIGHT,
     ));
     // The curve, each short piece in its zone's ink.
@@ -185,7 +178,7 @@ fn panel(svg: &mut String, x0: f64, slope: f64, curve: &Bezier, title: &str, ter
             point(s as f64 / steps as f64),
             point((s + 1) as f64 / steps as f64),
         );
-        let colour = INK[zone_of((a + b) * 0.5, slope)].0;
+        let colour = INK[zone_of((a + b) * 0.5, f)].0;
         let ((xa, ya), (xb, yb)) = (at(a), at(b));
         writeln!(
             svg,

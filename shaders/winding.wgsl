@@ -65,6 +65,10 @@ override RAYS: u32 = 2u;          // 1: along x only; 2: x and y, combined by we
 override SLUG: bool = false;      // rays=slug: two rays combined as Slug's shader does
 override SAMPLES: u32 = 0u;       // 1, 4 (2×2 sub-pixels tiling the pixel), 0: auto
 override EVEN_ODD: bool = false;  // fill rule; nonzero by default
+override AXIS: bool = false;      // aa=area: the instances' axes are the image's (no
+                                  // rotation, skew or tilt): the pixel is a square
+override GRID: bool = true;       // aa=area: the draw's glyphs may need the sub-pixel
+                                  // grid (some curves marked as overlapping)
 override USE_BANDS: bool = true;  // false: every curve of the glyph for every ray
 override OVERLAY: u32 = 0u;       // 0 none, 1 curve classes, 2 cost heat map, 3 count,
                                   // 4 and 5 the cost breakdown's counts

@@ -3,15 +3,22 @@
 //
 // By Green's theorem the pixel-averaged winding number is a sum over curves,
 // F = Σ_curves ∫ G dv, G the length of the pixel's horizontal chord left of a point, in
-// a frame where the glyph's rows stay rows (for the bands) and the pixel is the
-// parallelogram {(σ, slope·σ + τ) : |σ|, |τ| ≤ ½}: exact under rotation, skew and
+// a frame that keeps the glyph's axes (its rows stay rows, for the bands) and scales
+// the pixel, a parallelogram there, to area 1: exact under rotation, skew and
 // mirroring. A curve wholly right of the pixel adds the pixel's area between its end
-// heights, one wholly left, below or above it nothing (`area_zone`); one across it is
-// split where u or v turns into monotone pieces, each cut at the pixel's columns and
-// corner heights by one root and integrated in closed form (`across_term`). Coverage
-// is fill(F), exact wherever the pixel holds two adjacent winding levels; where a
-// curve marked as overlapping meets another in the pixel (three levels may meet), the
-// mean over a grid of sub-pixels, each integrated the same way (`area_pixel`).
+// heights, one wholly left, below or above it nothing (`area_zone`). The prep splits
+// every curve where x or y turns, so each is monotone in both and meets the pixel's
+// bounding box in one stretch: cut out, it adds four ramp integrals, one per segment of
+// the pixel's sides (`across_term`), or where the pixel is a rectangle (`AXIS`), one
+// integral (`across_axis`); the part right of the pixel adds its area between heights.
+// Coverage is fill(F), exact wherever the pixel holds two adjacent winding levels;
+// where a curve marked as overlapping meets another in the pixel (three levels may
+// meet), the mean over a grid of sub-pixels, each integrated the same way
+// (`area_pixel`; only in draws of glyphs with marked curves, `GRID`).
+//
+// Every branch a lane of a SIMD group takes, the group runs (on a software device,
+// all of them): the terms are written without loops, each curve once through the same
+// straight code.
 //
 // Mirrored function for function, in f64, by src/methods/winding/area.rs, whose
 // comments derive it.
@@ -22,68 +29,81 @@ struct Bezier {
     p2: vec2<f32>,
 }
 
-// Local offsets from the pixel's centre → the pixel's frame (see `frame_map`).
+// Local offsets from the pixel's centre → the pixel's frame (see `frame_map`): local
+// axes kept (x mirrored towards the walk), scaled so that the pixel, the parallelogram
+// spanned by its one-pixel steps, has area 1; u stays monotone along a curve monotone
+// in x. Its corners are ±`bottom` (the lowest and the highest) and ±`left`: the
+// boundary runs from the bottom corner to the top one on the left through `left`, on
+// the right through −`left`. It spans u in [−`reach`, `reach`].
 struct PixelFrame {
     direction: f32,
-    shear: f32,
-    u_scale: f32,
-    v_scale: f32,
-    slope: f32,
+    scale: f32,
+    bottom: vec2<f32>,
+    left: vec2<f32>,
+    reach: f32,
     // False for a pixel that covers no area.
     valid: bool,
 }
 
 fn pixel_frame(jx_local: vec2<f32>, jy_local: vec2<f32>, direction: f32) -> PixelFrame {
-    let jx = vec2<f32>(direction * jx_local.x, jx_local.y);
-    let jy = vec2<f32>(direction * jy_local.x, jy_local.y);
-    // `b` becomes the vertical sides: the step with more height, so the other one's
-    // slope is at most 1.
-    let swap = abs(jx.y) > abs(jy.y);
-    let a = select(jx, jy, swap);
-    let b = select(jy, jx, swap);
-    let det = a.x * b.y - a.y * b.x;
+    var jx = vec2<f32>(direction * jx_local.x, jx_local.y);
+    var jy = vec2<f32>(direction * jy_local.x, jy_local.y);
+    if AXIS {
+        // The instance's axes are the image's: each step runs along one local axis, and
+        // what the derivatives show of the other is interpolation's rounding.
+        jx = select(vec2<f32>(0.0, jx.y), vec2<f32>(jx.x, 0.0), abs(jx.x) >= abs(jx.y));
+        jy = select(vec2<f32>(0.0, jy.y), vec2<f32>(jy.x, 0.0), abs(jy.x) > abs(jy.y));
+    }
+    let det = abs(jx.x * jy.y - jx.y * jy.x);
     var f: PixelFrame;
-    if det == 0.0 || b.y == 0.0 {
+    if !(det > 0.0) {
         return f;
     }
     f.direction = direction;
-    f.shear = b.x / b.y;
-    f.u_scale = abs(b.y) / abs(det);
-    let a_u = (a.x - f.shear * a.y) * f.u_scale;
-    let a_v = a.y / abs(b.y);
-    f.v_scale = select(1.0, -1.0, a_u * a_v < 0.0) / abs(b.y);
-    f.slope = abs(a_u * a_v);
+    f.scale = inverseSqrt(det);
+    let a = 0.5 * f.scale * jx;
+    let b = 0.5 * f.scale * jy;
+    // Each half-step taken downwards gives the lowest corner; one of them upwards, a
+    // middle one; of that one and its opposite, the one left of the diagonal from the
+    // bottom corner to the top one (through the centre) is on the left side.
+    let a_down = select(a, -a, a.y > 0.0);
+    let b_down = select(b, -b, b.y > 0.0);
+    f.bottom = a_down + b_down;
+    let middle = a_down - b_down;
+    f.left = select(-middle, middle, middle.x * f.bottom.y > middle.y * f.bottom.x);
+    f.reach = max(abs(f.bottom.x), abs(middle.x));
     f.valid = true;
     return f;
 }
 
 fn frame_map(f: PixelFrame, offset: vec2<f32>) -> vec2<f32> {
-    let x = f.direction * offset.x;
-    return vec2<f32>((x - f.shear * offset.y) * f.u_scale, offset.y * f.v_scale);
+    return vec2<f32>(f.direction * offset.x, offset.y) * f.scale;
 }
 
-// The heights of the pixel's four corners, lowest first.
-fn frame_levels(slope: f32) -> vec4<f32> {
-    let h = 0.5 * slope;
-    return vec4<f32>(-0.5 - h, -0.5 + h, 0.5 - h, 0.5 + h);
-}
-
-// Area of the pixel below height `v`.
-fn area_below(v: f32, slope: f32) -> f32 {
-    let levels = frame_levels(slope);
-    if v <= levels.x {
+// Area of the pixel below height `v`: its chord grows from 0 at the bottom corner to
+// its full width at the lower of the middle corners, stays there up to the higher one,
+// and shrinks to 0 at the top.
+fn area_below(v: f32, f: PixelFrame) -> f32 {
+    let low = f.bottom.y;
+    let middle = abs(f.left.y);
+    // The chord's full width: the area over the height between a middle corner and
+    // the far end.
+    let width = 1.0 / (middle - low);
+    // The height over which the chord grows (and shrinks).
+    let rise = -(middle + low);
+    if v <= low {
         return 0.0;
     }
-    if v >= levels.w {
+    if v >= -low {
         return 1.0;
     }
-    if v < levels.y {
-        return (v - levels.x) * (v - levels.x) / (2.0 * slope);
+    if v < -middle {
+        return 0.5 * width * (v - low) * (v - low) / rise;
     }
-    if v > levels.z {
-        return 1.0 - (levels.w - v) * (levels.w - v) / (2.0 * slope);
+    if v > middle {
+        return 1.0 - 0.5 * width * (v + low) * (v + low) / rise;
     }
-    return v - levels.y + 0.5 * slope;
+    return width * (v + middle + 0.5 * rise);
 }
 
 const ZONE_OUTSIDE: u32 = 0u;
@@ -92,14 +112,13 @@ const ZONE_ACROSS: u32 = 2u;
 
 // Where a curve's control points lie against the pixel: outside its heights or left of
 // it (no term), wholly right of it (its area between the ends' heights), or across.
-fn area_zone(c: Bezier, slope: f32) -> u32 {
-    let levels = frame_levels(slope);
+fn area_zone(c: Bezier, f: PixelFrame) -> u32 {
     let lo = min(min(c.p0, c.p1), c.p2);
     let hi = max(max(c.p0, c.p1), c.p2);
-    if hi.y <= levels.x || lo.y >= levels.w || hi.x <= -0.5 {
+    if hi.y <= f.bottom.y || lo.y >= -f.bottom.y || hi.x <= -f.reach {
         return ZONE_OUTSIDE;
     }
-    if lo.x >= 0.5 {
+    if lo.x >= f.reach {
         return ZONE_RIGHT;
     }
     return ZONE_ACROSS;
@@ -119,16 +138,6 @@ fn xs(c: Bezier) -> vec3<f32> {
 
 fn ys(c: Bezier) -> vec3<f32> {
     return vec3<f32>(c.p0.y, c.p1.y, c.p2.y);
-}
-
-// Where a quadratic (control values) turns, or 1 when it does not inside (0, 1).
-fn turn(c: vec3<f32>) -> f32 {
-    let denominator = c.x - 2.0 * c.y + c.z;
-    if denominator == 0.0 {
-        return 1.0;
-    }
-    let t = (c.x - c.y) / denominator;
-    return select(1.0, t, t > 0.0 && t < 1.0);
 }
 
 // The parameter where a quadratic monotone on [0, 1] takes `value` (0 or 1 when it
@@ -159,103 +168,119 @@ fn integral_x_dy(x: vec3<f32>, y: vec3<f32>) -> f32 {
     return (x.x * (3.0 * d0 + d1) + 2.0 * x.y * (d0 + d1) + x.z * (d0 + 3.0 * d1)) / 6.0;
 }
 
-// ∫ ramp(ℓ(t)) y′(t) dt over a quadratic piece (ℓ its x, y its y), split where ℓ
-// turns so that each part crosses ℓ = 0 once at most.
-fn ramp_integral(c: Bezier) -> f32 {
-    let t = turn(xs(c));
-    var total = 0.0;
-    var a = 0.0;
-    var b = t;
-    loop {
-        let part = subcurve(c, a, b);
-        let l = xs(part);
-        var low = 0.0;
-        var high = 1.0;
-        if l.x < 0.0 || l.z < 0.0 {
-            if l.z > l.x {
-                low = t_at(l, 0.0);
-            } else {
-                high = t_at(l, 0.0);
-            }
-        }
-        if high > low && (l.x > 0.0 || l.z > 0.0) {
-            let positive = subcurve(part, low, high);
-            total += integral_x_dy(xs(positive), ys(positive));
-        }
-        if b >= 1.0 {
-            break;
-        }
-        a = b;
-        b = 1.0;
-    }
-    return total;
+// The curve at t.
+fn point_at(c: Bezier, t: f32) -> vec2<f32> {
+    return blossom(c, t, t);
 }
 
-// ∫ G dv along a piece monotone in u and v within the pixel's columns (|u| ≤ ½): with
-// α = u + ½, α between heights v0 and v2, plus ramp(α − (v − v2)/slope) across the top
-// side, less ramp(α − (v − v0)/slope) across the bottom one.
-fn inside_term(c: Bezier, slope: f32) -> f32 {
-    let levels = frame_levels(slope);
-    // The slabs: between v0 and v2 (upright), across the top side, across the bottom.
-    let lows = vec3<f32>(levels.x, levels.z, levels.x);
-    let highs = vec3<f32>(levels.z, levels.w, levels.y);
-    let v = ys(c);
-    var term = 0.0;
-    let slabs = select(1u, 3u, slope > 0.0);
-    for (var k = 0u; k < slabs; k++) {
-        let low = lows[k];
-        let high = highs[k];
-        let a = t_at(v, low);
-        let b = t_at(v, high);
-        if max(a, b) <= min(a, b) {
-            continue;
-        }
-        let s = subcurve(c, min(a, b), max(a, b));
-        let y = ys(s);
-        var l = xs(s) + 0.5;
-        if k > 0u {
-            l -= (y - low) / slope;
-        }
-        let part = ramp_integral(Bezier(vec2<f32>(l.x, y.x), vec2<f32>(l.y, y.y), vec2<f32>(l.z, y.z)));
-        term += select(part, -part, k == 2u);
-    }
-    return term;
-}
-
-// ∫ G dv along a piece monotone in u and v: right of the pixel by its area, inside its
-// columns by `inside_term`, left of it nothing.
-fn piece_term(c: Bezier, slope: f32) -> f32 {
+// ∫ G dv along a curve across the pixel when the pixel is a rectangle (`AXIS`), G the
+// length of its chord left of u: u − left inside its columns, their width right of
+// them, 0 left. A curve monotone in u and v meets the rectangle in one stretch, [the
+// later entry, the earlier exit]; right of it, it adds the width times the height it
+// climbs within the rows.
+fn across_axis(c: Bezier, f: PixelFrame) -> f32 {
     let u = xs(c);
-    let t_left = t_at(u, -0.5);
-    let t_right = t_at(u, 0.5);
+    let v = ys(c);
+    let left = -f.reach;
+    let low = f.bottom.y;
+    let tv = vec2<f32>(t_at(v, low), t_at(v, -low));
+    let tu = vec2<f32>(t_at(u, left), t_at(u, -left));
+    let rows = vec2<f32>(min(tv.x, tv.y), max(tv.x, tv.y));
+    let enter = max(rows.x, min(tu.x, tu.y));
+    let inside = subcurve(c, enter, max(enter, min(rows.y, max(tu.x, tu.y))));
     let increasing = u.z >= u.x;
-    let right_from = select(0.0, t_right, increasing);
-    let right_to = select(t_right, 1.0, increasing);
-    var term = 0.0;
-    if right_to > right_from {
-        term += area_below(blossom(c, right_to, right_to).y, slope) - area_below(blossom(c, right_from, right_from).y, slope);
-    }
-    if max(t_left, t_right) > min(t_left, t_right) {
-        term += inside_term(subcurve(c, min(t_left, t_right), max(t_left, t_right)), slope);
-    }
-    return term;
+    let right_from = select(0.0, tu.y, increasing);
+    let right_to = select(tu.y, 1.0, increasing);
+    let climbed = clamp(point_at(c, right_to).y, low, -low) - clamp(point_at(c, right_from).y, low, -low);
+    return integral_x_dy(xs(inside) - left, ys(inside)) - 2.0 * left * climbed;
 }
 
-// ∫ G dv along a curve across the pixel, split where u or v turns.
-fn across_term(c: Bezier, slope: f32) -> f32 {
-    let t_u = turn(xs(c));
-    let t_v = turn(ys(c));
-    let splits = vec3<f32>(min(t_u, t_v), max(t_u, t_v), 1.0);
-    var term = 0.0;
-    var a = 0.0;
-    for (var k = 0u; k < 3u && a < 1.0; k++) {
-        let b = splits[k];
-        if b > a {
-            term += piece_term(subcurve(c, a, b), slope);
-        }
-        a = b;
+// ∫ ramp(ℓ) v′ dt over t in [t0, t1], ℓ = u − k·v − offset, for a piece given by the
+// monomial coefficients (t², t, 1) of u and v. Taken about t0, so that nothing outside
+// [t0, t1] (where ℓ may be large: k is large for an edge near level) enters the sums.
+// ℓ may turn: its roots cut the stretch in three, each wholly on one side, added where
+// ℓ is positive.
+fn ramp_over(u: vec3<f32>, v: vec3<f32>, k: f32, offset: f32, t0: f32, t1: f32) -> f32 {
+    let m = u - k * v;
+    // ℓ(t0 + τ) and v′(t0 + τ) as polynomials in τ.
+    let l = vec3<f32>(m.x, 2.0 * m.x * t0 + m.y, (m.x * t0 + m.y) * t0 + m.z - offset);
+    let d = 2.0 * v.x;
+    let e = d * t0 + v.y;
+    // The roots by the stable form of the quadratic formula, past the stretch for one
+    // that does not exist (ℓ of one sign, or a line).
+    let span = t1 - t0;
+    let discriminant = l.y * l.y - 4.0 * l.x * l.z;
+    let root = sqrt(max(discriminant, 0.0));
+    let q = -0.5 * (l.y + select(-root, root, l.y >= 0.0));
+    var roots = vec2<f32>(select(span, l.z / q, q != 0.0), select(span, q / l.x, l.x != 0.0));
+    roots = select(roots, vec2<f32>(span), discriminant < 0.0);
+    let cuts = vec4<f32>(0.0, clamp(min(roots.x, roots.y), 0.0, span), clamp(max(roots.x, roots.y), 0.0, span), span);
+    // ℓ·v′, a cubic, and its antiderivative at the cuts.
+    let cubic = vec4<f32>(l.x * d, l.x * e + l.y * d, l.y * e + l.z * d, l.z * e) * vec4<f32>(0.25, 1.0 / 3.0, 0.5, 1.0);
+    let h = (((cubic.x * cuts + cubic.y) * cuts + cubic.z) * cuts + cubic.w) * cuts;
+    let mids = 0.5 * (cuts.xyz + cuts.yzw);
+    let sign = (l.x * mids + l.y) * mids + l.z;
+    let parts = h.yzw - h.xyz;
+    return dot(select(vec3<f32>(0.0), parts, sign > vec3<f32>(0.0)), vec3<f32>(1.0));
+}
+
+// Monomial coefficients (t², t, 1) of a quadratic given by its control values.
+fn monomial(c: vec3<f32>) -> vec3<f32> {
+    return vec3<f32>(c.x - 2.0 * c.y + c.z, 2.0 * (c.y - c.x), c.x);
+}
+
+// ∫ ramp(u − edge(v)) v′ dt over the heights of the pixel's edge from corner `p` to
+// corner `q`, along the piece (monomials `u`, `v`) whose parameters at those heights
+// are `tp` and `tq`. An edge near level runs far in u for little height: its ramp is
+// taken of ℓ scaled down by its slope (ramp(a·ℓ) = a·ramp(ℓ) for a > 0), so that no
+// large multiple of v is subtracted from anything.
+fn edge_ramp(u: vec3<f32>, v: vec3<f32>, p: vec2<f32>, q: vec2<f32>, tp: f32, tq: f32) -> f32 {
+    let run = q.x - p.x;
+    let rise = q.y - p.y;
+    if !(rise > 0.0) {
+        // A level edge spans no height.
+        return 0.0;
     }
-    return term;
+    // ℓ = u − p.x − (v − p.y)·run/rise, taken as ℓ·a with a = rise/max(|run|, rise)
+    // (positive: the edges run upwards from the bottom corner), which multiplies no
+    // coordinate by more than 1.
+    let a = rise / max(abs(run), rise);
+    let b = run / max(abs(run), rise);
+    return ramp_over(a * u, v, b, a * p.x - b * p.y, min(tp, tq), max(tp, tq)) / a;
+}
+
+// ∫ G dv along a curve across the pixel, G = ramp(u − lo(v)) − ramp(u − hi(v)) with lo
+// and hi the pixel's left and right edges, each two segments between the bottom and
+// top corners. Right of the pixel's columns G is the whole chord (the pixel's area
+// between heights), left of them 0. The stretch within the pixel's bounding box (one
+// stretch: u and v are monotone, the prep splits curves where x or y turns) is cut out
+// first, so u and v stay within a pixel, and integrated as four ramps, one per edge
+// segment.
+fn across_term(c: Bezier, f: PixelFrame) -> f32 {
+    let u = xs(c);
+    let v = ys(c);
+    let low = f.bottom.y;
+    let tu = vec2<f32>(t_at(u, -f.reach), t_at(u, f.reach));
+    let tv = vec2<f32>(t_at(v, low), t_at(v, -low));
+    let increasing = u.z >= u.x;
+    let right_from = select(0.0, tu.y, increasing);
+    let right_to = select(tu.y, 1.0, increasing);
+    let right = area_below(point_at(c, right_to).y, f) - area_below(point_at(c, right_from).y, f);
+    let enter = max(min(tu.x, tu.y), min(tv.x, tv.y));
+    let box = subcurve(c, enter, max(enter, min(max(tu.x, tu.y), max(tv.x, tv.y))));
+    let bv = ys(box);
+    // The parameters on the box's piece where v is at the corners' heights.
+    let rising = bv.z >= bv.x;
+    let t = vec4<f32>(select(1.0, 0.0, rising), t_at(bv, f.left.y), t_at(bv, -f.left.y), select(0.0, 1.0, rising));
+    let pu = monomial(xs(box));
+    let pv = monomial(bv);
+    let bottom = f.bottom;
+    let top = -f.bottom;
+    return right
+        + edge_ramp(pu, pv, bottom, f.left, t.x, t.y)
+        + edge_ramp(pu, pv, f.left, top, t.y, t.w)
+        - edge_ramp(pu, pv, bottom, -f.left, t.x, t.z)
+        - edge_ramp(pu, pv, -f.left, top, t.z, t.w);
 }
 
 // How far aa=area's bands reach beyond their boundaries, in bands (AREA_REACH in
@@ -316,7 +341,7 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
     let start = select(band.by_max, band.by_min, direction < 0.0);
     if STAGE == 1u {
         // Setup only: the result must still depend on it.
-        result.winding = f32(band.count) + near_end + frame.slope;
+        result.winding = f32(band.count) + near_end + frame.scale;
         return result;
     }
     var across = 0u;
@@ -329,17 +354,21 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
         }
         result.evaluated++;
         let q = Bezier(frame_map(frame, c.p0p1.xy - centre), frame_map(frame, c.p0p1.zw - centre), frame_map(frame, c.p2_max.xy - centre));
-        let zone = area_zone(q, frame.slope);
+        let zone = area_zone(q, frame);
         if STAGE == 2u {
             // The walk without its terms.
             result.winding += f32(zone);
             continue;
         }
         if zone == ZONE_RIGHT {
-            result.winding += area_below(q.p2.y, frame.slope) - area_below(q.p0.y, frame.slope);
+            result.winding += area_below(q.p2.y, frame) - area_below(q.p0.y, frame);
             breakdown_tally.x++;
         } else if zone == ZONE_ACROSS && STAGE != 3u {
-            result.winding += across_term(q, frame.slope);
+            if AXIS {
+                result.winding += across_axis(q, frame);
+            } else {
+                result.winding += across_term(q, frame);
+            }
             breakdown_tally.y++;
             across++;
             marked = marked || c.overlaps != 0.0;
@@ -356,12 +385,13 @@ const AREA_GRID: u32 = 4u;
 
 // aa=area's coverage of the pixel: fill(F), or where three winding levels may meet in
 // it (or always, with SAMPLES = 4), the mean over a grid of sub-pixels, each integrated
-// exactly the same way (never with SAMPLES = 1).
+// exactly the same way (never with SAMPLES = 1, nor in a draw of glyphs without marked
+// curves: `GRID`).
 fn area_pixel(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Coverage {
     var evaluated = 0u;
     if SAMPLES != 4u {
         let whole = area_winding(g, centre, jx, jy);
-        if SAMPLES == 1u || !whole.mixed {
+        if !GRID || !whole.mixed {
             return Coverage(fill(whole.winding), whole.evaluated);
         }
         evaluated = whole.evaluated;

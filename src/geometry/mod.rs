@@ -202,6 +202,15 @@ pub fn project(m: &DMat3, p: DVec2) -> DVec2 {
     DVec2::new(v.x / v.z, v.y / v.z)
 }
 
+/// Whether a homography maps local axes onto image axes: a scale (mirrors and quarter
+/// turns included) and a translation, no rotation between, no skew, no perspective.
+/// Then a pixel, taken back to local coordinates, is an axis-aligned rectangle.
+pub fn keeps_axes(to_image: &DMat3) -> bool {
+    let (x, y) = (to_image.x_axis, to_image.y_axis);
+    let affine = x.z == 0.0 && y.z == 0.0;
+    affine && ((x.y == 0.0 && y.x == 0.0) || (x.x == 0.0 && y.y == 0.0))
+}
+
 /// An upper bound of the local→image scale over `local` (Frobenius norm of the
 /// Jacobian of the homography, maximised over the rectangle's corners: w is affine, so
 /// its minimum is at a corner, and so is the largest image-space distance).

@@ -2,11 +2,10 @@
 //! `shaders/winding_area.wgsl`, function for function, so that the shader's
 //! formulation is checked here against closed forms. [`pixel_winding`] is the shader's
 //! `area_winding` over every curve (no bands), and [`curve_term`] the zone test in its
-//! loop; [`PixelFrame`] is `pixel_frame` and `frame_map`, [`levels`] `frame_levels`,
-//! [`zone`] `area_zone`, `monotone_pieces` the splits in `across_term`; the rest keep
-//! their names. [`fill`] is `fill` in `shaders/winding.wgsl`. The shader's `area_pixel`
-//! (fill(F), or the mean over a grid of sub-pixels where contours overlap) has no
-//! mirror here.
+//! loop; [`PixelFrame`] is `pixel_frame` and `frame_map`, [`zone`] `area_zone`; the
+//! rest keep their names. [`fill`] is `fill` in `shaders/winding.wgsl`. The shader's
+//! `area_pixel` (fill(F), or the mean over a grid of sub-pixels where contours overlap)
+//! has no mirror here.
 //!
 //! # The integral
 //!
@@ -23,32 +22,36 @@
 //! early exit pick the curves: a glyph's bands are horizontal in its local coordinates.
 //!
 //! P is the pixel square taken back into local coordinates by the Jacobian at the
-//! pixel: a parallelogram. Horizontal lines must stay horizontal for the bands, so the
-//! frame the integral runs in is the local one sheared and scaled (never rotated): one
-//! pair of P's sides becomes vertical at u = ±½ and the area 1, and the other pair
-//! slants with slope `s` in [0, 1] (0 when the camera neither rotates nor skews the
-//! glyph):
+//! pixel: a parallelogram. The frame the integral runs in keeps the local axes (x
+//! mirrored when the walk goes towards −x) and scales them so that |P| = 1: horizontal
+//! lines stay horizontal, for the bands, and a curve monotone in x stays monotone in u.
+//! P's corners are ±b (the lowest and the highest) and ±m; its boundary runs from the
+//! bottom corner b to the top one −b through one of ±m on the left and the other on the
+//! right, so the chord at height v is [lo(v), hi(v)] with lo and hi each two segments,
+//! and
 //!
 //! ```text
-//! P = {(σ, s·σ + τ) : |σ|, |τ| ≤ ½},   heights v0 < v1 ≤ v2 < v3 = ∓½ ∓ s/2.
+//! G(u, v) = ramp(u − lo(v)) − ramp(u − hi(v)),   ramp(x) = max(x, 0),
 //! ```
 //!
-//! Under a rotation, skew or mirror this is exact; under a perspective tilt the
-//! Jacobian is the homography's linearisation at the pixel. In this frame:
+//! for v between the bottom and top corners. Under a rotation, skew or mirror this is
+//! exact; under a perspective tilt the Jacobian is the homography's linearisation at
+//! the pixel. Every curve is split where x or y turns when the glyph is prepared
+//! ([`monotone_pieces`]), so u and v are monotone along it and it meets P's bounding box
+//! in one stretch. In the frame:
 //!
-//! - right of P (u ≥ ½) G is the chord, so the curve adds `area_below(v_end) −
-//!   area_below(v_start)`;
-//! - inside P's columns (|u| ≤ ½), with α = u + ½, G = α between v0 and v2, less
-//!   ramp(α − (v − v0)/s) below v1 (the bottom side), plus ramp(α − (v − v2)/s) above
-//!   v2 (the top side, where G would otherwise be 0);
-//! - left of P, G = 0.
+//! - right of P's columns (u ≥ `reach`) G is the whole chord, so that part of the curve
+//!   adds `area_below(v_end) − area_below(v_start)`;
+//! - left of them G = 0;
+//! - the stretch within P's bounding box, cut out of the curve (blossoming) so that
+//!   every value in it is within a pixel or so of P, adds four ramp integrals, one per
+//!   segment of lo and hi, each over that segment's heights ([`edge_ramp`]): ℓ = u −
+//!   edge(v) is a quadratic in t whose roots cut the heights' stretch into parts of one
+//!   sign, and ∫ ℓ v′ dt over each is a cubic's antiderivative ([`ramp_over`]).
 //!
-//! Each curve is split where u or v turns, so every piece crosses each of those lines
-//! at most once; a piece is cut at u = ±½ and at the heights v0…v3 by one root each,
-//! and ∫ ℓ dv over a quadratic piece (ℓ linear in the coordinates) is closed form
-//! ([`integral_x_dy`]). Pieces are cut out of their curve first (blossoming), so every
-//! integral runs over points within a pixel or so of P: nothing far away is subtracted
-//! from anything.
+//! Where P's axes are the image's (no rotation, skew or tilt), P is a rectangle and the
+//! stretch within it is integrated at once ([`across_axis`], the shader's `AXIS`
+//! variant): the same integral, fewer terms.
 //!
 //! Coverage is `fill(F)`: min(|F|, 1) for nonzero, a triangle wave for even-odd — exact
 //! wherever the winding inside the pixel takes two adjacent values, which every pixel
@@ -60,17 +63,20 @@ use glam::DVec2;
 pub type Bezier = [DVec2; 3];
 
 /// The frame one pixel is integrated in: local offsets from the pixel's centre,
-/// mirrored to the band direction, sheared and scaled so the pixel is the canonical P.
+/// mirrored to the band direction and scaled so that the pixel P has area 1.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PixelFrame {
     /// ±1: local x is mirrored when the bands are walked towards −x.
     direction: f64,
-    /// u = (x_f − shear·y) · u_scale, v = y · v_scale, with x_f = direction · x.
-    shear: f64,
-    u_scale: f64,
-    v_scale: f64,
-    /// The slope of P's slanted sides, in [0, 1].
-    pub slope: f64,
+    /// u = direction · x · scale, v = y · scale.
+    scale: f64,
+    /// P's lowest corner (the highest is its opposite).
+    pub bottom: DVec2,
+    /// The corner the left side of P passes through from the bottom corner to the top
+    /// one (the right side passes through its opposite).
+    pub left: DVec2,
+    /// P spans u in [−reach, reach].
+    pub reach: f64,
 }
 
 impl PixelFrame {
@@ -80,74 +86,77 @@ impl PixelFrame {
     pub fn new(jx: DVec2, jy: DVec2, direction: f64) -> Option<PixelFrame> {
         let mirror = |v: DVec2| DVec2::new(direction * v.x, v.y);
         let (jx, jy) = (mirror(jx), mirror(jy));
-        // `b` becomes the vertical sides: the step with more height, so the other
-        // one's slope is at most 1.
-        let (a, b) = if jx.y.abs() > jy.y.abs() {
-            (jy, jx)
-        } else {
-            (jx, jy)
-        };
-        let det = a.perp_dot(b);
-        if det == 0.0 || b.y == 0.0 {
+        let det = jx.perp_dot(jy).abs();
+        if det.is_nan() || det == 0.0 {
             return None;
         }
-        let shear = b.x / b.y;
-        let u_scale = b.y.abs() / det.abs();
-        // `a` maps to (±1, a.y / |b.y|); flip v so that P's sides slope upwards.
-        let a_u = (a.x - shear * a.y) * u_scale;
-        let a_v = a.y / b.y.abs();
-        let flip = if a_u * a_v < 0.0 { -1.0 } else { 1.0 };
+        let scale = 1.0 / det.sqrt();
+        let (a, b) = (0.5 * scale * jx, 0.5 * scale * jy);
+        // Both half-steps taken downwards reach the lowest corner; one of them upwards,
+        // a middle one. Of that one and its opposite, the one left of the diagonal from
+        // the bottom corner to the top one (through the centre) is on the left side.
+        let down = |v: DVec2| if v.y > 0.0 { -v } else { v };
+        let bottom = down(a) + down(b);
+        let middle = down(a) - down(b);
+        let left = if middle.x * bottom.y > middle.y * bottom.x {
+            middle
+        } else {
+            -middle
+        };
         Some(PixelFrame {
             direction,
-            shear,
-            u_scale,
-            v_scale: flip / b.y.abs(),
-            slope: (a_u * a_v).abs(),
+            scale,
+            bottom,
+            left,
+            reach: bottom.x.abs().max(middle.x.abs()),
         })
     }
 
     /// A local offset from the pixel's centre in this frame.
     pub fn map(&self, offset: DVec2) -> DVec2 {
-        let x = self.direction * offset.x;
-        DVec2::new(
-            (x - self.shear * offset.y) * self.u_scale,
-            offset.y * self.v_scale,
-        )
+        DVec2::new(self.direction * offset.x, offset.y) * self.scale
+    }
+
+    /// Whether P is a rectangle (its axes the frame's): the shader's `AXIS` variant.
+    pub fn is_rectangle(&self) -> bool {
+        self.left.y == self.bottom.y || self.left.y == -self.bottom.y
     }
 }
 
-/// The heights of the four corners of P with sides sloping by `slope`, lowest first.
-pub fn levels(slope: f64) -> [f64; 4] {
-    let h = 0.5 * slope;
-    [-0.5 - h, -0.5 + h, 0.5 - h, 0.5 + h]
-}
-
-/// Area of P below height `v`: 0 under P, 1 over it, quadratic across each slanted side.
-pub fn area_below(v: f64, slope: f64) -> f64 {
-    let [v0, v1, v2, v3] = levels(slope);
-    if v <= v0 {
+/// Area of P below height `v`: its chord grows from 0 at the bottom corner to its full
+/// width at the lower middle corner, stays there up to the higher one, and shrinks to 0
+/// at the top.
+pub fn area_below(v: f64, f: &PixelFrame) -> f64 {
+    let low = f.bottom.y;
+    let middle = f.left.y.abs();
+    let width = 1.0 / (middle - low);
+    // The height over which the chord grows (and shrinks).
+    let rise = -(middle + low);
+    if v <= low {
         0.0
-    } else if v >= v3 {
+    } else if v >= -low {
         1.0
-    } else if v < v1 {
-        // Only reached when slope > 0: v0 < v < v1.
-        (v - v0) * (v - v0) / (2.0 * slope)
-    } else if v > v2 {
-        1.0 - (v3 - v) * (v3 - v) / (2.0 * slope)
+    } else if v < -middle {
+        // Only reached when rise > 0.
+        0.5 * width * (v - low) * (v - low) / rise
+    } else if v > middle {
+        1.0 - 0.5 * width * (v + low) * (v + low) / rise
     } else {
-        v - v1 + 0.5 * slope
+        width * (v + middle + 0.5 * rise)
     }
 }
 
 /// The pixel-averaged winding number F of the pixel centred on local point `centre`
-/// (steps `jx`, `jy`), over every curve of a glyph: every curve is visited, no bands.
+/// (steps `jx`, `jy`), over every curve of a glyph: every curve is visited, no bands;
+/// each is first split where x or y turns, as the glyph's preparation does.
 pub fn pixel_winding(curves: &[Bezier], centre: DVec2, jx: DVec2, jy: DVec2) -> f64 {
     let Some(frame) = PixelFrame::new(jx, jy, 1.0) else {
         return 0.0;
     };
     curves
         .iter()
-        .map(|c| curve_term(c.map(|p| frame.map(p - centre)), frame.slope))
+        .flat_map(|&c| monotone_pieces(c).into_iter().flatten())
+        .map(|c| curve_term(c.map(|p| frame.map(p - centre)), &frame))
         .sum()
 }
 
@@ -169,40 +178,170 @@ pub enum Zone {
     Outside,
     /// Wholly right of P: P's area between its end heights.
     Right,
-    /// Its bounds meet P's: the full integral.
+    /// Its bounds meet P's bounding box: the full integral.
     Across,
 }
 
 /// The zone of a curve's control points (a curve lies within their hull).
-pub fn zone(c: &Bezier, slope: f64) -> Zone {
-    let [v0, _, _, v3] = levels(slope);
+pub fn zone(c: &Bezier, f: &PixelFrame) -> Zone {
     let min = c[0].min(c[1]).min(c[2]);
     let max = c[0].max(c[1]).max(c[2]);
-    if max.y <= v0 || min.y >= v3 || max.x <= -0.5 {
+    if max.y <= f.bottom.y || min.y >= -f.bottom.y || max.x <= -f.reach {
         Zone::Outside
-    } else if min.x >= 0.5 {
+    } else if min.x >= f.reach {
         Zone::Right
     } else {
         Zone::Across
     }
 }
 
-/// ∫ G dv along one curve, in a pixel frame of slope `slope`.
-pub fn curve_term(c: Bezier, slope: f64) -> f64 {
-    match zone(&c, slope) {
+/// ∫ G dv along one curve monotone in u and v, in a pixel frame.
+pub fn curve_term(c: Bezier, f: &PixelFrame) -> f64 {
+    match zone(&c, f) {
         Zone::Outside => 0.0,
-        Zone::Right => area_below(c[2].y, slope) - area_below(c[0].y, slope),
-        Zone::Across => across_term(c, slope),
+        Zone::Right => area_below(c[2].y, f) - area_below(c[0].y, f),
+        Zone::Across => across_term(c, f),
     }
 }
 
-/// ∫ G dv along a curve across P, split where u or v turns.
-fn across_term(c: Bezier, slope: f64) -> f64 {
-    monotone_pieces(c)
-        .into_iter()
-        .flatten()
-        .map(|piece| piece_term(piece, slope))
+/// The stretch where a monotone quadratic (control values) runs from `low` to `high`:
+/// its parameters there, in order along the curve.
+fn stretch(c: [f64; 3], low: f64, high: f64) -> (f64, f64) {
+    let (a, b) = (t_at(c, low), t_at(c, high));
+    (a.min(b), a.max(b))
+}
+
+/// Where u runs past P's right side, along a curve monotone in u: the parameters.
+fn right_of(u: [f64; 3], reach: f64) -> (f64, f64) {
+    let t = t_at(u, reach);
+    if u[2] >= u[0] { (t, 1.0) } else { (0.0, t) }
+}
+
+/// ∫ G dv along a curve across P when P is a rectangle ([`PixelFrame::is_rectangle`]):
+/// G is u − left inside its columns, their width right of them, 0 left. A curve
+/// monotone in u and v meets the rectangle in one stretch, [the later entry, the
+/// earlier exit]; right of it, it adds the width times the height it climbs within the
+/// rows.
+pub fn across_axis(c: Bezier, f: &PixelFrame) -> f64 {
+    let (u, v) = (c.map(|p| p.x), c.map(|p| p.y));
+    let (left, low) = (-f.reach, f.bottom.y);
+    let rows = stretch(v, low, -low);
+    let columns = stretch(u, left, -left);
+    let enter = rows.0.max(columns.0);
+    let inside = subcurve(c, enter, enter.max(rows.1.min(columns.1)));
+    let (from, to) = right_of(u, f.reach);
+    let climbed = point_at(c, to).y.clamp(low, -low) - point_at(c, from).y.clamp(low, -low);
+    integral_x_dy(inside.map(|p| p.x - left), inside.map(|p| p.y)) - 2.0 * left * climbed
+}
+
+/// ∫ G dv along a curve across P: right of P's columns P's area between heights, and
+/// the stretch within P's bounding box, cut out first so that u and v stay within a
+/// pixel, as four ramps, one per segment of P's left and right sides.
+pub fn across_term(c: Bezier, f: &PixelFrame) -> f64 {
+    let (u, v) = (c.map(|p| p.x), c.map(|p| p.y));
+    let low = f.bottom.y;
+    let columns = stretch(u, -f.reach, f.reach);
+    let rows = stretch(v, low, -low);
+    let (from, to) = right_of(u, f.reach);
+    let right = area_below(point_at(c, to).y, f) - area_below(point_at(c, from).y, f);
+    let enter = columns.0.max(rows.0);
+    let piece = subcurve(c, enter, enter.max(columns.1.min(rows.1)));
+    let pv = piece.map(|p| p.y);
+    // The parameters on the piece where v is at the corners' heights (the piece lies
+    // between the bottom and top heights).
+    let rising = pv[2] >= pv[0];
+    let t = [
+        if rising { 0.0 } else { 1.0 },
+        t_at(pv, f.left.y),
+        t_at(pv, -f.left.y),
+        if rising { 1.0 } else { 0.0 },
+    ];
+    let (pu, pv) = (monomial(piece.map(|p| p.x)), monomial(pv));
+    let (bottom, top, left, right_corner) = (f.bottom, -f.bottom, f.left, -f.left);
+    right + edge_ramp(pu, pv, bottom, left, t[0], t[1]) + edge_ramp(pu, pv, left, top, t[1], t[3])
+        - edge_ramp(pu, pv, bottom, right_corner, t[0], t[2])
+        - edge_ramp(pu, pv, right_corner, top, t[2], t[3])
+}
+
+/// ∫ ramp(u − edge(v)) v′ dt over the heights of P's side from corner `p` up to corner
+/// `q`, along the piece (monomials `u`, `v`) whose parameters at those heights are `tp`
+/// and `tq`. ℓ is taken scaled by a = rise / max(|run|, rise) (ramp(a·ℓ) = a·ramp(ℓ)),
+/// so that no coordinate is multiplied by more than 1 however near level the side is.
+fn edge_ramp(u: [f64; 3], v: [f64; 3], p: DVec2, q: DVec2, tp: f64, tq: f64) -> f64 {
+    let (run, rise) = (q.x - p.x, q.y - p.y);
+    if rise.is_nan() || rise <= 0.0 {
+        // A level side spans no height.
+        return 0.0;
+    }
+    let a = rise / run.abs().max(rise);
+    let b = run / run.abs().max(rise);
+    ramp_over(
+        u.map(|c| a * c),
+        v,
+        b,
+        a * p.x - b * p.y,
+        tp.min(tq),
+        tp.max(tq),
+    ) / a
+}
+
+/// ∫ ramp(ℓ) v′ dt over t in [t0, t1], ℓ = u − k·v − offset, for a piece given by the
+/// monomial coefficients (t², t, 1) of u and v; taken about t0, so that nothing
+/// outside [t0, t1] enters the sums. ℓ's roots cut the stretch in three parts, each of
+/// one sign; each positive part adds its cubic's antiderivative.
+fn ramp_over(u: [f64; 3], v: [f64; 3], k: f64, offset: f64, t0: f64, t1: f64) -> f64 {
+    let m = [0, 1, 2].map(|i| u[i] - k * v[i]);
+    // ℓ(t0 + τ) and v′(t0 + τ) as polynomials in τ.
+    let l = [
+        m[0],
+        2.0 * m[0] * t0 + m[1],
+        (m[0] * t0 + m[1]) * t0 + m[2] - offset,
+    ];
+    let (d, e) = (2.0 * v[0], 2.0 * v[0] * t0 + v[1]);
+    let span = t1 - t0;
+    // The roots by the stable form of the quadratic formula; past the stretch for one
+    // that does not exist.
+    let discriminant = l[1] * l[1] - 4.0 * l[0] * l[2];
+    let (mut r0, mut r1) = (span, span);
+    if discriminant >= 0.0 {
+        let root = discriminant.sqrt();
+        let q = -0.5 * (l[1] + if l[1] >= 0.0 { root } else { -root });
+        if q != 0.0 {
+            r0 = l[2] / q;
+        }
+        if l[0] != 0.0 {
+            r1 = q / l[0];
+        }
+    }
+    let cuts = [
+        0.0,
+        r0.min(r1).clamp(0.0, span),
+        r0.max(r1).clamp(0.0, span),
+        span,
+    ];
+    let cubic = [
+        l[0] * d / 4.0,
+        (l[0] * e + l[1] * d) / 3.0,
+        (l[1] * e + l[2] * d) / 2.0,
+        l[2] * e,
+    ];
+    let antiderivative = |t: f64| (((cubic[0] * t + cubic[1]) * t + cubic[2]) * t + cubic[3]) * t;
+    cuts.windows(2)
+        .map(|w| {
+            let mid = 0.5 * (w[0] + w[1]);
+            let value = (l[0] * mid + l[1]) * mid + l[2];
+            if value > 0.0 {
+                antiderivative(w[1]) - antiderivative(w[0])
+            } else {
+                0.0
+            }
+        })
         .sum()
+}
+
+/// Monomial coefficients (t², t, 1) of a quadratic given by its control values.
+fn monomial(c: [f64; 3]) -> [f64; 3] {
+    [c[0] - 2.0 * c[1] + c[2], 2.0 * (c[1] - c[0]), c[0]]
 }
 
 /// Where a quadratic (control values) turns, or 1 when it does not inside (0, 1).
@@ -215,100 +354,13 @@ fn turn(c: [f64; 3]) -> f64 {
     if t > 0.0 && t < 1.0 { t } else { 1.0 }
 }
 
-/// The curve split where x or y turns: up to three pieces, each monotone in both.
-pub(super) fn monotone_pieces(c: Bezier) -> [Option<Bezier>; 3] {
+/// The curve split where x or y turns: up to three pieces, each monotone in both. The
+/// glyph's preparation splits every curve so (`aa=area`'s shader takes them monotone).
+pub fn monotone_pieces(c: Bezier) -> [Option<Bezier>; 3] {
     let (tx, ty) = (turn(c.map(|p| p.x)), turn(c.map(|p| p.y)));
     let (t1, t2) = (tx.min(ty), tx.max(ty));
     let piece = |a: f64, b: f64| (b > a).then(|| subcurve(c, a, b));
     [piece(0.0, t1), piece(t1, t2), piece(t2, 1.0)]
-}
-
-/// ∫ G dv along a piece monotone in u and v: the part right of P by its area, the part
-/// inside P's columns by [`inside_term`], the part left of P nothing.
-fn piece_term(c: Bezier, slope: f64) -> f64 {
-    let u = c.map(|p| p.x);
-    let t_left = t_at(u, -0.5);
-    let t_right = t_at(u, 0.5);
-    let increasing = u[2] >= u[0];
-    let (right_from, right_to) = if increasing {
-        (t_right, 1.0)
-    } else {
-        (0.0, t_right)
-    };
-    let mut term = 0.0;
-    if right_to > right_from {
-        let v_at = |t: f64| blossom(c, t, t).y;
-        term += area_below(v_at(right_to), slope) - area_below(v_at(right_from), slope);
-    }
-    let (from, to) = (t_left.min(t_right), t_left.max(t_right));
-    if to > from {
-        term += inside_term(subcurve(c, from, to), slope);
-    }
-    term
-}
-
-/// ∫ G dv along a piece monotone in u and v lying within P's columns (|u| ≤ ½): with
-/// α = u + ½, α between heights v0 and v2, plus ramp(α − (v − v2)/slope) across the top
-/// side, less ramp(α − (v − v0)/slope) across the bottom one (the chord's end there
-/// moves a pixel's width over `slope` of height).
-fn inside_term(c: Bezier, slope: f64) -> f64 {
-    let [v0, v1, v2, v3] = levels(slope);
-    // (heights, whether the side slants, sign)
-    let slabs = [
-        (v0, v2, false, 1.0),
-        (v2, v3, true, 1.0),
-        (v0, v1, true, -1.0),
-    ];
-    let v = c.map(|p| p.y);
-    let mut term = 0.0;
-    for (low, high, slanted, sign) in slabs {
-        if slanted && slope == 0.0 {
-            continue;
-        }
-        let (a, b) = (t_at(v, low), t_at(v, high));
-        if a.max(b) <= a.min(b) {
-            continue;
-        }
-        let part = subcurve(c, a.min(b), a.max(b));
-        let ramp = part.map(|p| {
-            let alpha = p.x + 0.5;
-            let l = if slanted {
-                alpha - (p.y - low) / slope
-            } else {
-                alpha
-            };
-            DVec2::new(l, p.y)
-        });
-        term += sign * ramp_integral(ramp);
-    }
-    term
-}
-
-/// ∫ ramp(ℓ(t)) y′(t) dt over a quadratic piece (ℓ its x, y its y), split where ℓ
-/// turns so that each part crosses ℓ = 0 once at most.
-fn ramp_integral(c: Bezier) -> f64 {
-    let t = turn(c.map(|p| p.x));
-    [(0.0, t), (t, 1.0)]
-        .into_iter()
-        .filter(|(a, b)| b > a)
-        .map(|(a, b)| {
-            let part = subcurve(c, a, b);
-            let l = part.map(|p| p.x);
-            let (mut low, mut high) = (0.0, 1.0);
-            if l[0] < 0.0 || l[2] < 0.0 {
-                if l[2] > l[0] {
-                    low = t_at(l, 0.0);
-                } else {
-                    high = t_at(l, 0.0);
-                }
-            }
-            if high <= low || (l[0] <= 0.0 && l[2] <= 0.0) {
-                return 0.0;
-            }
-            let positive = subcurve(part, low, high);
-            integral_x_dy(positive.map(|p| p.x), positive.map(|p| p.y))
-        })
-        .sum()
 }
 
 /// ∫₀¹ x(t) y′(t) dt for a quadratic Bézier given by its control values: exact (the
@@ -351,6 +403,11 @@ pub fn t_at(c: [f64; 3], value: f64) -> f64 {
 /// point of the piece between a and b.
 fn blossom(c: Bezier, a: f64, b: f64) -> DVec2 {
     c[0] * ((1.0 - a) * (1.0 - b)) + c[1] * ((1.0 - a) * b + a * (1.0 - b)) + c[2] * (a * b)
+}
+
+/// The curve at t.
+fn point_at(c: Bezier, t: f64) -> DVec2 {
+    blossom(c, t, t)
 }
 
 /// The piece of `c` between parameters `a` and `b`, as a quadratic Bézier of its own.
@@ -674,19 +731,63 @@ mod tests {
 
     #[test]
     fn area_below_is_the_parallelogram_area() {
-        for slope in [0.0, 0.25, 1.0] {
-            assert_eq!(area_below(-2.0, slope), 0.0);
-            assert_eq!(area_below(2.0, slope), 1.0);
+        let frame = |jx: DVec2, jy: DVec2| PixelFrame::new(jx, jy, 1.0).unwrap();
+        let cases = [
+            frame(DVec2::X, DVec2::NEG_Y),
+            frame(DVec2::new(2.0, 0.0), DVec2::new(0.0, 0.5)),
+            frame(rotation(45.0).x_axis, rotation(45.0).y_axis),
+            frame(DVec2::new(1.0, 0.3), DVec2::new(0.4, -1.0)),
+        ];
+        for f in cases {
+            assert_eq!(area_below(f.bottom.y - 1e-9, &f), 0.0);
+            assert_eq!(area_below(-f.bottom.y, &f), 1.0);
             assert!(
-                (area_below(0.0, slope) - 0.5).abs() < 1e-15,
+                (area_below(0.0, &f) - 0.5).abs() < 1e-15,
                 "symmetric about 0"
             );
         }
-        // Slope 1: v0 = −1, and up to v = −½ the corner triangle's legs are ½ high and
-        // ½ wide (the chord grows a pixel per unit of height): 1/8.
-        assert!((area_below(-0.5, 1.0) - 0.125).abs() < 1e-15);
-        // Slope 0: a unit square.
-        assert!((area_below(0.2, 0.0) - 0.7).abs() < 1e-15);
+        // The unit square: the height below.
+        assert!((area_below(0.2, &cases[0]) - 0.7).abs() < 1e-15);
+        // A square of area 1 turned 45°: its bottom corner at −√½, and d above it the
+        // chord is 2d wide, so the area below is d².
+        let d = 0.3;
+        let turned = &cases[2];
+        assert!((turned.bottom.y + 0.5f64.sqrt()).abs() < 1e-15);
+        assert!((area_below(turned.bottom.y + d, turned) - d * d).abs() < 1e-12);
+    }
+
+    /// Where P is a rectangle, the shader's `AXIS` stretch is the general term.
+    #[test]
+    fn the_rectangle_stretch_is_the_general_term() {
+        let frames = [
+            PixelFrame::new(DVec2::X, DVec2::NEG_Y, 1.0).unwrap(),
+            PixelFrame::new(DVec2::new(0.0, 0.7), DVec2::new(1.9, 0.0), -1.0).unwrap(),
+        ];
+        let curves = [
+            [
+                DVec2::new(-0.9, -1.2),
+                DVec2::new(0.1, -0.6),
+                DVec2::new(0.3, 0.9),
+            ],
+            [
+                DVec2::new(2.0, 0.2),
+                DVec2::new(0.0, 0.25),
+                DVec2::new(-0.1, 0.3),
+            ],
+            [
+                DVec2::new(0.2, 3.0),
+                DVec2::new(0.2, 0.0),
+                DVec2::new(0.2, -3.0),
+            ],
+        ];
+        for f in &frames {
+            assert!(f.is_rectangle());
+            for c in curves {
+                let c = c.map(|p| p * f.reach * 2.0);
+                let (a, b) = (across_axis(c, f), across_term(c, f));
+                assert!((a - b).abs() < 1e-12, "{f:?} {c:?}: {a} vs {b}");
+            }
+        }
     }
 
     #[test]

@@ -14,6 +14,7 @@
 
 use glam::DVec2;
 
+use super::area::monotone_pieces;
 use super::overlaps::overlap_flags;
 use crate::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Segment, cubic_to_quadratics};
 use crate::scene::Scene;
@@ -84,6 +85,9 @@ pub struct GlyphData {
     /// Per glyph, as its [`Layout`] orders them.
     pub bands: Vec<GpuBand>,
     pub band_curves: Vec<u32>,
+    /// Per glyph, whether any of its curves is marked as overlapping (only with
+    /// [`Layout::Area`]): its pixels may need the sub-pixel grid.
+    pub marked: Vec<bool>,
 }
 
 /// A quadratic curve in local font units, as f32 the way the GPU holds it.
@@ -159,6 +163,28 @@ fn push_quads(segment: &Segment, tolerance: f64, quads: &mut Vec<Quad>) {
     }
 }
 
+/// `q` split where x or y turns, for `aa=area`, whose shader takes every curve to be
+/// monotone in both: each piece rounded to f32 as the GPU holds it (pieces share their
+/// ends exactly: both are the same blossom), its middle control point then kept within
+/// its ends' box, which a monotone piece's is (rounding may have nudged it out by an
+/// ulp). Pieces that rounding leaves as a point are dropped.
+fn monotone_quads(q: &Quad) -> Vec<Quad> {
+    monotone_pieces(q.p)
+        .into_iter()
+        .flatten()
+        .filter_map(|piece| {
+            let [a, b, c] = piece.map(|v| v.as_vec2().as_dvec2());
+            let b = b.clamp(a.min(c), a.max(c));
+            (a != b || b != c).then(|| Quad {
+                p: [a, b, c],
+                min: a.min(c),
+                max: a.max(c),
+                ..*q
+            })
+        })
+        .collect()
+}
+
 impl GlyphData {
     /// What `winding` uploads for `scene`: every distinct glyph, with bands in `layout`.
     pub fn of_scene(scene: &Scene, band_count: BandCount, layout: Layout) -> GlyphData {
@@ -192,10 +218,16 @@ impl GlyphData {
         };
         let any_marked = overlaps.contains(&true);
         let quads: Vec<Quad> = (contours.concat().into_iter().zip(overlaps))
-            .map(|(q, overlaps)| Quad {
-                overlaps,
-                counted: any_marked,
-                ..q
+            .flat_map(|(q, overlaps)| {
+                let marked = Quad {
+                    overlaps,
+                    counted: any_marked,
+                    ..q
+                };
+                match layout {
+                    Layout::Rays => vec![marked],
+                    Layout::Area => monotone_quads(&marked),
+                }
             })
             .collect();
         let first_curve = self.curves.len() as u32;
@@ -253,6 +285,7 @@ impl GlyphData {
                 0
             }
         };
+        self.marked.push(any_marked);
         self.glyphs.push(GpuGlyph {
             bounds: [min.x as f32, min.y as f32, max.x as f32, max.y as f32],
             band_count_h: count_h,

@@ -37,6 +37,7 @@ use super::{
 };
 use crate::Error;
 use crate::camera::Camera;
+use crate::geometry::keeps_axes;
 use crate::gpu::kit::{self, PipelineBuilder, Slot};
 use crate::gpu::shaders::Shader;
 use crate::gpu::{CoverageTarget, GpuContext};
@@ -298,6 +299,37 @@ impl Settings {
     }
 }
 
+/// The specialisation of `aa=area`'s shader a draw takes, as its `AXIS` and `GRID`
+/// constants: instances are drawn in one draw per variant.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+struct Variant {
+    /// The instance's axes are the image's: the pixel is a square in its frame.
+    axis: bool,
+    /// The glyph's pixels may need the sub-pixel grid.
+    grid: bool,
+}
+
+impl Settings {
+    /// The variant that draws an instance of a glyph with (`marked`) or without curves
+    /// marked as overlapping, through `to_image`. `aa=rays` reads neither constant.
+    fn variant(&self, marked: bool, to_image: &glam::DMat3) -> Variant {
+        if self.aa != Antialiasing::Area {
+            return Variant {
+                axis: false,
+                grid: false,
+            };
+        }
+        Variant {
+            axis: keeps_axes(to_image),
+            grid: match self.samples {
+                1 => false,
+                4 => true,
+                _ => marked,
+            },
+        }
+    }
+}
+
 /// What the fragment shader draws, as its `OVERLAY` constant.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Output {
@@ -328,13 +360,16 @@ pub struct Winding {
     /// Where the shader stops: [`Stage::Full`] but for the cost breakdown.
     stage: Stage,
     layout: Option<(wgpu::BindGroupLayout, wgpu::PipelineLayout)>,
-    /// The drawing pipeline, and the counting one once `curves_per_pixel` asks.
-    pipelines: Vec<(Output, wgpu::RenderPipeline)>,
+    /// The pipelines made so far: drawing, and counting once `curves_per_pixel` or the
+    /// cost breakdown asks, per variant drawn.
+    pipelines: Vec<((Output, Variant), wgpu::RenderPipeline)>,
     prepared: Option<Prepared>,
 }
 
 struct Prepared {
     instances: Instances,
+    /// Per distinct glyph, whether it has curves marked as overlapping.
+    marked: Vec<bool>,
     /// Holds the glyph buffers (a bind group keeps what it binds alive).
     bind_group: wgpu::BindGroup,
     bytes: u64,
@@ -364,9 +399,14 @@ impl Winding {
         })
     }
 
-    fn pipeline(&mut self, gpu: &GpuContext, output: Output) -> &wgpu::RenderPipeline {
-        if let Some(i) = self.pipelines.iter().position(|(o, _)| *o == output) {
-            return &self.pipelines[i].1;
+    fn pipeline(
+        &mut self,
+        gpu: &GpuContext,
+        output: Output,
+        variant: Variant,
+    ) -> wgpu::RenderPipeline {
+        if let Some((_, pipeline)) = self.pipelines.iter().find(|(k, _)| *k == (output, variant)) {
+            return pipeline.clone();
         }
         let s = self.settings;
         let constants = [
@@ -375,6 +415,8 @@ impl Winding {
             ("SLUG", f64::from(u8::from(s.rays == Rays::Slug))),
             ("SAMPLES", f64::from(s.samples)),
             ("EVEN_ODD", f64::from(u8::from(s.even_odd))),
+            ("AXIS", f64::from(u8::from(variant.axis))),
+            ("GRID", f64::from(u8::from(variant.grid))),
             ("USE_BANDS", f64::from(u8::from(s.bands.is_some()))),
             ("OVERLAY", output.constant()),
             ("STAGE", self.stage.constant()),
@@ -384,12 +426,12 @@ impl Winding {
         let pipeline = PipelineBuilder::new(NAME, layout, &module)
             .constants(&constants)
             .build(&gpu.device);
-        self.pipelines.push((output, pipeline));
-        &self.pipelines.last().expect("just pushed").1
+        self.pipelines.push(((output, variant), pipeline.clone()));
+        pipeline
     }
 
-    /// Records the draw of every visible instance with `output`'s pipeline; returns how
-    /// many instances it draws.
+    /// Records the draw of every visible instance with `output`'s pipelines, one draw
+    /// per [`Variant`]; returns how many instances it draws.
     fn draw(
         &mut self,
         gpu: &GpuContext,
@@ -398,21 +440,30 @@ impl Winding {
         camera: &Camera,
         output: Output,
     ) -> Result<u32, Error> {
+        let settings = self.settings;
         let prepared = self
             .prepared
             .as_mut()
             .ok_or_else(|| super::not_prepared(NAME))?;
-        let visible = prepared.instances.update(gpu, camera, 0.0)?;
-        let pipeline = self.pipeline(gpu, output).clone();
+        let marked = &prepared.marked;
+        let groups = prepared
+            .instances
+            .update_grouped(gpu, camera, 0.0, |glyph, to_image| {
+                settings.variant(marked[glyph as usize], to_image)
+            })?;
+        let draws: Vec<_> = groups
+            .into_iter()
+            .map(|(variant, range)| (self.pipeline(gpu, output, variant), range))
+            .collect();
         let prepared = self.prepared.as_ref().expect("checked above");
         let mut pass = target.clearing_pass(encoder, NAME);
-        if visible > 0 {
-            pass.set_pipeline(&pipeline);
-            pass.set_bind_group(0, prepared.instances.bind_group(), &[]);
-            pass.set_bind_group(1, &prepared.bind_group, &[]);
-            pass.draw(0..4, 0..visible);
+        pass.set_bind_group(0, prepared.instances.bind_group(), &[]);
+        pass.set_bind_group(1, &prepared.bind_group, &[]);
+        for (pipeline, range) in &draws {
+            pass.set_pipeline(pipeline);
+            pass.draw(0..4, range.clone());
         }
-        Ok(visible)
+        Ok(draws.last().map_or(0, |(_, range)| range.end))
     }
 }
 
@@ -447,6 +498,7 @@ impl Method for Winding {
             let bytes = instances.bytes() + buffers.iter().map(wgpu::Buffer::size).sum::<u64>();
             self.prepared = Some(Prepared {
                 instances,
+                marked: data.marked.clone(),
                 bind_group,
                 bytes,
             });
