@@ -41,6 +41,12 @@ struct PixelFrame {
     bottom: vec2<f32>,
     left: vec2<f32>,
     reach: f32,
+    // For `area_below`: the chord's full width, the height over which it grows from 0
+    // at the bottom corner (and shrinks to 0 at the top), and the coefficient of the
+    // area's square there, width / (2·rise).
+    width: f32,
+    rise: f32,
+    growth: f32,
     // False for a pixel that covers no area.
     valid: bool,
 }
@@ -72,6 +78,9 @@ fn pixel_frame(jx_local: vec2<f32>, jy_local: vec2<f32>, direction: f32) -> Pixe
     let middle = a_down - b_down;
     f.left = select(-middle, middle, middle.x * f.bottom.y > middle.y * f.bottom.x);
     f.reach = max(abs(f.bottom.x), abs(middle.x));
+    f.width = 1.0 / (abs(f.left.y) - f.bottom.y);
+    f.rise = -(abs(f.left.y) + f.bottom.y);
+    f.growth = 0.5 * f.width / f.rise;
     f.valid = true;
     return f;
 }
@@ -82,28 +91,18 @@ fn frame_map(f: PixelFrame, offset: vec2<f32>) -> vec2<f32> {
 
 // Area of the pixel below height `v`: its chord grows from 0 at the bottom corner to
 // its full width at the lower of the middle corners, stays there up to the higher one,
-// and shrinks to 0 at the top.
+// and shrinks to 0 at the top. A rectangle's (`AXIS`) is its height below v.
 fn area_below(v: f32, f: PixelFrame) -> f32 {
     let low = f.bottom.y;
+    if AXIS {
+        return clamp((v - low) * f.width, 0.0, 1.0);
+    }
     let middle = abs(f.left.y);
-    // The chord's full width: the area over the height between a middle corner and
-    // the far end.
-    let width = 1.0 / (middle - low);
-    // The height over which the chord grows (and shrinks).
-    let rise = -(middle + low);
-    if v <= low {
-        return 0.0;
-    }
-    if v >= -low {
-        return 1.0;
-    }
-    if v < -middle {
-        return 0.5 * width * (v - low) * (v - low) / rise;
-    }
-    if v > middle {
-        return 1.0 - 0.5 * width * (v + low) * (v + low) / rise;
-    }
-    return width * (v + middle + 0.5 * rise);
+    var area = f.width * (v + middle + 0.5 * f.rise);
+    area = select(area, f.growth * (v - low) * (v - low), v < -middle);
+    area = select(area, 1.0 - f.growth * (v + low) * (v + low), v > middle);
+    area = select(area, 0.0, v <= low);
+    return select(area, 1.0, v >= -low);
 }
 
 const ZONE_OUTSIDE: u32 = 0u;
@@ -144,21 +143,18 @@ fn ys(c: Bezier) -> vec3<f32> {
 // stays on one side), by the stable form of the quadratic formula.
 fn t_at(c: vec3<f32>, value: f32) -> f32 {
     let increasing = c.z >= c.x;
-    if value <= min(c.x, c.z) {
-        return select(1.0, 0.0, increasing);
-    }
-    if value >= max(c.x, c.z) {
-        return select(0.0, 1.0, increasing);
-    }
     let a = c.x - 2.0 * c.y + c.z;
     let b = 2.0 * (c.y - c.x);
     let k = c.x - value;
     let root = sqrt(max(b * b - 4.0 * a * k, 0.0));
     let denominator = b + select(-root, root, increasing);
-    if denominator == 0.0 {
-        return clamp((value - c.x) / (c.z - c.x), 0.0, 1.0);
-    }
-    return clamp(-2.0 * k / denominator, 0.0, 1.0);
+    // Where rounding has flattened the piece, the chord's answer: one division either
+    // way (a lane runs both sides of a branch).
+    let flat = denominator == 0.0;
+    var t = clamp(select(-2.0 * k, value - c.x, flat) / select(denominator, c.z - c.x, flat), 0.0, 1.0);
+    // Past either end, that end (and nothing a division by 0 left there).
+    t = select(t, 1.0, select(value <= c.z, value >= c.z, increasing));
+    return select(t, 0.0, select(value >= c.x, value <= c.x, increasing));
 }
 
 // ∫₀¹ x(t) y′(t) dt of a quadratic Bézier, exactly.
