@@ -282,11 +282,11 @@ fn across_term(c: Bezier, f: PixelFrame) -> f32 {
 // How far aa=area's bands reach beyond their boundaries, in bands (AREA_REACH in
 // bands.rs): a pixel whose centre is in a band lies within its reach when half its
 // height is at most this many bands.
-const AREA_REACH: f32 = 0.5;
+const AREA_REACH: f32 = 1.5;
 
 // The band holding every curve at the height of a pixel centred on `centre`, up to
 // `half_height` above and below it: the finest level whose bands are at least the
-// pixel's height (a band reaches half a band beyond its boundaries; see bands.rs).
+// pixel's height over 2·AREA_REACH (see bands.rs).
 fn area_band(g: Glyph, centre: vec2<f32>, half_height: f32) -> Band {
     // Level 0, then the band of all curves, then the coarser levels.
     let all = bands[g.first_band + g.band_count_h];
