@@ -344,8 +344,9 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
     var marked = false;
     for (var i = 0u; i < band.count; i++) {
         let c = curves[band_curves[start + i]];
-        let far_end = select(c.p2_max.z, -c.min_xy.x, direction < 0.0);
-        if USE_BANDS && far_end < near_end {
+        // The curve's far end along the walk, from the points themselves (fewer loads).
+        let along = direction * vec3<f32>(c.p0p1.x, c.p0p1.z, c.p2_max.x);
+        if USE_BANDS && max(max(along.x, along.y), along.z) < near_end {
             break;
         }
         result.evaluated++;
