@@ -128,8 +128,9 @@ pub const PARAMS: &[ParamSpec] = &[
         choices: &["area", "rays"],
         range: None,
         help: "area: the exact box-filter integral of the winding number over the pixel, \
-               by Green's theorem over each curve, for about the cost of rays with one \
-               sample; rays: coverage from the crossings of rays through the pixel.",
+               by Green's theorem over each curve, for less than rays with one sample \
+               cost where contours do not overlap; rays: coverage from the crossings of \
+               rays through the pixel.",
     },
     ParamSpec {
         key: "rays",
