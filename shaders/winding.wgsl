@@ -21,13 +21,17 @@
 struct Curve {
     // p0.xy, p1.xy
     p0p1: vec4<f32>,
-    // p2.xy, then the curve's largest x and y (control-point bounds), for early exits
+    // p2.xy, then the curve's largest x and y (control-point bounds): where aa=rays'
+    // rays stop
     p2_max: vec4<f32>,
-    // the curve's smallest x and y, for rays cast (or aa=area's walk) towards −x or −y
+    // the curve's smallest x and y, for rays cast towards −x or −y
     min_xy: vec2<f32>,
     // 1 where the curve may separate other winding levels than 0 and the fill
     // (overlapping contours): aa=area integrates the pixels it crosses in sub-pixels.
     overlaps: f32,
+    // The glyph's curve this one is a piece of (the prep splits curves where x or y
+    // turns): pieces of one curve cannot make three winding levels between them.
+    parent: u32,
 }
 
 struct Glyph {
@@ -66,7 +70,7 @@ override SLUG: bool = false;      // rays=slug: two rays combined as Slug's shad
 override SAMPLES: u32 = 0u;       // 1, 4 (2×2 sub-pixels tiling the pixel), 0: auto
 override EVEN_ODD: bool = false;  // fill rule; nonzero by default
 override AXIS: bool = false;      // aa=area: the instances' axes are the image's (no
-                                  // rotation, skew or tilt): the pixel is a square
+                                  // rotation, skew or tilt): the pixel is a rectangle
 override GRID: bool = true;       // aa=area: the draw's glyphs may need the sub-pixel
                                   // grid (some curves marked as overlapping)
 override USE_BANDS: bool = true;  // false: every curve of the glyph for every ray

@@ -192,10 +192,10 @@ fn across_axis(c: Bezier, f: PixelFrame) -> f32 {
 }
 
 // ∫ ramp(ℓ) v′ dt over t in [t0, t1], ℓ = u − k·v − offset, for a piece given by the
-// monomial coefficients (t², t, 1) of u and v. Taken about t0, so that nothing outside
-// [t0, t1] (where ℓ may be large: k is large for an edge near level) enters the sums.
-// ℓ may turn: its roots cut the stretch in three, each wholly on one side, added where
-// ℓ is positive.
+// monomial coefficients (t², t, 1) of u and v. Taken about t0, so that the sums hold
+// only values from within [t0, t1] (the antiderivative from 0 would carry the rest of
+// the piece into them). ℓ may turn: its roots cut the stretch in three, each wholly on
+// one side, added where ℓ is positive.
 fn ramp_over(u: vec3<f32>, v: vec3<f32>, k: f32, offset: f32, t0: f32, t1: f32) -> f32 {
     let m = u - k * v;
     // ℓ(t0 + τ) and v′(t0 + τ) as polynomials in τ.
@@ -317,8 +317,9 @@ struct AreaWinding {
     winding: f32,
     evaluated: u32,
     // Whether three winding levels may meet in the pixel: a curve marked as overlapping
-    // and another one reach into it (one curve alone cannot make three levels; the
-    // bands of a glyph with marked curves keep every curve, flat ones too).
+    // and another one reach into it (one curve alone, in however many pieces, cannot
+    // make three levels; the bands of a glyph with marked curves keep every curve, flat
+    // ones too).
     mixed: bool,
 }
 
@@ -336,12 +337,15 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
     let near_end = direction * centre.x - 0.5 * (abs(jx.x) + abs(jy.x));
     let start = select(band.by_max, band.by_min, direction < 0.0);
     if STAGE == 1u {
-        // Setup only: the result must still depend on it.
-        result.winding = f32(band.count) + near_end + frame.scale;
+        // Setup only: the result must still depend on all of it.
+        result.winding = f32(band.count) + near_end + frame.scale + frame.bottom.x + frame.left.y + frame.reach + frame.width + frame.rise + frame.growth;
         return result;
     }
     var across = 0u;
     var marked = false;
+    // Whether pieces of two different curves cross the pixel.
+    var distinct = false;
+    var first_parent = 0u;
     for (var i = 0u; i < band.count; i++) {
         let c = curves[band_curves[start + i]];
         // The curve's far end along the walk, from the points themselves (fewer loads).
@@ -367,11 +371,13 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
                 result.winding += across_term(q, frame);
             }
             breakdown_tally.y++;
+            distinct = distinct || (across > 0u && c.parent != first_parent);
+            first_parent = select(first_parent, c.parent, across == 0u);
             across++;
             marked = marked || c.overlaps != 0.0;
         }
     }
-    result.mixed = marked && across >= 2u;
+    result.mixed = marked && distinct;
     return result;
 }
 

@@ -52,13 +52,17 @@ fn subpixel(k: u32) -> DVec2 {
     DVec2::new(f64::from(k % 4) / 4.0 + 0.03, f64::from(k / 4) / 4.0 + 0.07)
 }
 
-fn transforms() -> [(&'static str, [f64; 4]); 4] {
+/// The general frame (rotated, skewed) and the rectangle pixels of the `AXIS` draws:
+/// plain, mirrored, a quarter turn (the image's x along the glyph's y) and stretched.
+fn transforms() -> [(&'static str, [f64; 4]); 6] {
     let (s, c) = 30f64.to_radians().sin_cos();
     [
         ("identity", [1.0, 0.0, 0.0, 1.0]),
         ("rotated 30°", [c, -s, s, c]),
         ("skewed", [1.0, 0.4, 0.0, 1.0]),
         ("mirrored", [-1.0, 0.0, 0.0, 1.0]),
+        ("quarter turn", [0.0, -1.0, 1.0, 0.0]),
+        ("stretched", [1.7, 0.0, 0.0, 0.6]),
     ]
 }
 

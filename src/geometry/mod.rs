@@ -204,11 +204,15 @@ pub fn project(m: &DMat3, p: DVec2) -> DVec2 {
 
 /// Whether a homography maps local axes onto image axes: a scale (mirrors and quarter
 /// turns included) and a translation, no rotation between, no skew, no perspective.
-/// Then a pixel, taken back to local coordinates, is an axis-aligned rectangle.
+/// Then a pixel, taken back to local coordinates, is an axis-aligned rectangle. Terms
+/// under 1e-12 of the scale count as 0: a quarter turn made from sin and cos leaves
+/// 6e-17 where there is nothing, far below what f32 coordinates resolve.
 pub fn keeps_axes(to_image: &DMat3) -> bool {
     let (x, y) = (to_image.x_axis, to_image.y_axis);
-    let affine = x.z == 0.0 && y.z == 0.0;
-    affine && ((x.y == 0.0 && y.x == 0.0) || (x.x == 0.0 && y.y == 0.0))
+    let scale = x.truncate().length().max(y.truncate().length());
+    let nothing = |v: f64| v.abs() <= 1e-12 * scale;
+    let affine = nothing(x.z) && nothing(y.z);
+    affine && ((nothing(x.y) && nothing(y.x)) || (nothing(x.x) && nothing(y.y)))
 }
 
 /// An upper bound of the local→image scale over `local` (Frobenius norm of the
@@ -226,4 +230,30 @@ pub fn jacobian_bound(to_image: &DMat3, local: &Rect) -> f64 {
     let frobenius = |m: glam::DMat2| m.to_cols_array().iter().map(|v| v * v).sum::<f64>().sqrt();
     let perspective = DVec2::new(w_row.x, w_row.y).length();
     (frobenius(linear) + max_image * perspective) / min_w
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn axes_are_kept_by_scales_mirrors_and_quarter_turns_only() {
+        // Columns: the images of local x and y, then the translation.
+        let m = |a: f64, b: f64, c: f64, d: f64| {
+            DMat3::from_cols_array(&[a, c, 0.0, b, d, 0.0, 5.0, 7.0, 1.0])
+        };
+        let (s, c) = std::f64::consts::FRAC_PI_2.sin_cos();
+        assert!(keeps_axes(&m(2.0, 0.0, 0.0, -0.5)));
+        assert!(keeps_axes(&m(0.0, -3.0, 1.0, 0.0)));
+        assert!(
+            keeps_axes(&m(c, -s, s, c)),
+            "a quarter turn from sin and cos"
+        );
+        assert!(!keeps_axes(&m(1.0, 1e-9, 0.0, 1.0)), "a skew f32 resolves");
+        let (s, c) = 0.3f64.sin_cos();
+        assert!(!keeps_axes(&m(c, -s, s, c)));
+        let mut tilted = m(1.0, 0.0, 0.0, 1.0);
+        tilted.y_axis.z = 1e-3;
+        assert!(!keeps_axes(&tilted), "perspective");
+    }
 }

@@ -5,7 +5,9 @@
 //! loop; [`PixelFrame`] is `pixel_frame` and `frame_map`, [`zone`] `area_zone`; the
 //! rest keep their names. [`fill`] is `fill` in `shaders/winding.wgsl`. The shader's
 //! `area_pixel` (fill(F), or the mean over a grid of sub-pixels where contours overlap)
-//! has no mirror here.
+//! has no mirror here, nor its `AXIS` draws' rounding of the pixel's steps to the axes;
+//! `stretch` and `right_of` here are steps the shader writes inline, and the frame's
+//! constants for `area_below` (`width`, `rise`, `growth`) it computes once a pixel.
 //!
 //! # The integral
 //!

@@ -30,7 +30,9 @@ pub struct GpuCurve {
     /// 1 where the curve may separate other winding levels than 0 and the fill
     /// ([`overlap_flags`]), else 0.
     pub overlaps: f32,
-    pub _pad: f32,
+    /// The index, within its glyph, of the font's curve this one is a piece of
+    /// (`aa=area`'s prep splits curves where x or y turns).
+    pub parent: u32,
 }
 
 /// `Glyph` in `winding.wgsl`.
@@ -101,6 +103,8 @@ struct Quad {
     /// Kept in the bands even when it runs along them: in a glyph with marked curves,
     /// `aa=area` counts every curve crossing a pixel.
     counted: bool,
+    /// Its index among the glyph's curves before any split.
+    parent: u32,
 }
 
 impl Quad {
@@ -159,6 +163,7 @@ fn push_quads(segment: &Segment, tolerance: f64, quads: &mut Vec<Quad>) {
             max: p[0].max(p[1]).max(p[2]),
             overlaps: false,
             counted: false,
+            parent: 0,
         });
     }
 }
@@ -218,10 +223,12 @@ impl GlyphData {
         };
         let any_marked = overlaps.contains(&true);
         let quads: Vec<Quad> = (contours.concat().into_iter().zip(overlaps))
-            .flat_map(|(q, overlaps)| {
+            .zip(0..)
+            .flat_map(|((q, overlaps), parent)| {
                 let marked = Quad {
                     overlaps,
                     counted: any_marked,
+                    parent,
                     ..q
                 };
                 match layout {
@@ -246,7 +253,7 @@ impl GlyphData {
             ],
             min: [q.min.x as f32, q.min.y as f32],
             overlaps: f32::from(u8::from(q.overlaps)),
-            _pad: 0.0,
+            parent: q.parent,
         }));
         let min = quads
             .iter()
@@ -624,5 +631,53 @@ mod tests {
             let all = data.curves.len();
             assert_eq!(members == all, flat_kept, "{members} of {all} curves");
         }
+    }
+
+    /// `aa=area` takes curves monotone in x and y: a quadratic that turns in both is
+    /// split in three pieces, each monotone, sharing their ends and their parent; rays
+    /// keep it whole.
+    #[test]
+    fn area_curves_are_monotone_pieces_of_their_parent() {
+        let (a, b, c) = (
+            DVec2::new(0.0, 0.0),
+            DVec2::new(10.0, 20.0),
+            DVec2::new(-4.0, 2.0),
+        );
+        let outline = Outline {
+            contours: vec![crate::geometry::Contour {
+                segments: vec![Segment::Quad(a, b, c), Segment::Line(c, a)],
+            }],
+        };
+        let mut rays = GlyphData::default();
+        rays.push(&outline, 1000.0, BandCount::Fixed(1), Layout::Rays);
+        assert_eq!(rays.curves.len(), 2);
+        let mut area = GlyphData::default();
+        area.push(&outline, 1000.0, BandCount::Fixed(1), Layout::Area);
+        assert_eq!(
+            area.curves.len(),
+            4,
+            "x and y each turn once inside the quadratic"
+        );
+        let pieces = &area.curves[..3];
+        for (i, piece) in pieces.iter().enumerate() {
+            assert_eq!(piece.parent, 0);
+            let p = [
+                [piece.p0p1[0], piece.p0p1[1]],
+                [piece.p0p1[2], piece.p0p1[3]],
+                [piece.p2_max[0], piece.p2_max[1]],
+            ];
+            for axis in 0..2 {
+                let (lo, hi) = (p[0][axis].min(p[2][axis]), p[0][axis].max(p[2][axis]));
+                assert!(
+                    (lo..=hi).contains(&p[1][axis]),
+                    "piece {i}, axis {axis}: {p:?}"
+                );
+            }
+            if i > 0 {
+                let previous = pieces[i - 1].p2_max;
+                assert_eq!([previous[0], previous[1]], p[0], "pieces share their ends");
+            }
+        }
+        assert_eq!(area.curves[3].parent, 1);
     }
 }

@@ -65,7 +65,8 @@ pub struct CostCounts {
     pub coverage_one: u64,
     /// Fragments that integrated the sub-pixel grid (three winding levels may meet).
     pub grid: u64,
-    /// Band entries visited (each sub-pixel's walk counted where the grid ran).
+    /// Band entries visited (each sub-pixel's walk counted where the grid ran): the
+    /// curves as the shader holds them, monotone pieces of the font's.
     pub visited: u64,
     /// Visited curves wholly right of the pixel (their term: the pixel's area between
     /// their end heights), and across it (the full integral); the rest add nothing.

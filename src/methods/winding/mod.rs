@@ -304,7 +304,7 @@ impl Settings {
 /// constants: instances are drawn in one draw per variant.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 struct Variant {
-    /// The instance's axes are the image's: the pixel is a square in its frame.
+    /// The instance's axes are the image's: the pixel is a rectangle in its frame.
     axis: bool,
     /// The glyph's pixels may need the sub-pixel grid.
     grid: bool,
