@@ -134,6 +134,7 @@ fn quick_bench_outputs_agree_with_render() {
             count("visited") >= count("right") + count("across"),
             "{cost}"
         );
+        assert_eq!(count("inexact"), 0, "{cost}");
         let stages = cost["stage_gpu_ms"].as_array().unwrap();
         assert_eq!(stages.len(), 5);
         assert!(stages.iter().all(|ms| number(ms, "stage") > 0.0), "{cost}");

@@ -432,6 +432,7 @@ fn the_cost_breakdown_counts_what_a_square_makes() {
         visited: 35,
         right: 25,
         across: 10,
+        inexact: 0,
     };
     assert_eq!(counts, expected);
     assert_eq!(counts.no_term(), 0);

@@ -119,6 +119,16 @@ pub fn markdown(result: &BenchResult, md: &mut String) {
             c.per_fragment(c.no_term()),
         );
     }
+    for cost in result.winding_costs.iter().filter(|c| c.counts.inexact > 0) {
+        let _ = writeln!(
+            md,
+            "\n{} ({}): {} pixels' counts were past what the half-float target holds \
+             exactly: their sums are approximate.",
+            cost.scene,
+            cost.scene_camera.name(),
+            cost.counts.inexact
+        );
+    }
     let _ = writeln!(
         md,
         "\nGPU time of a frame with the shader cut short after each stage (`STAGE` in \

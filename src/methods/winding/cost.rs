@@ -72,6 +72,9 @@ pub struct CostCounts {
     /// their end heights), and across it (the full integral); the rest add nothing.
     pub right: u64,
     pub across: u64,
+    /// Pixels whose counts the half-float target did not hold exactly (past
+    /// [`kit::EXACT_COUNT_LIMIT`], or not integers): the sums are then approximate.
+    pub inexact: u64,
 }
 
 impl CostCounts {
@@ -106,14 +109,17 @@ impl Winding {
             self.draw(gpu, encoder, target, camera, Output::FragmentTally)
                 .map(drop)
         })?;
-        // Each texel's sums, exact below kit::EXACT_COUNT_LIMIT (a pixel visits far fewer
-        // curves than that on the bench's scenes); rounded, since they are integers.
+        // Each texel's sums are integers, exact below kit::EXACT_COUNT_LIMIT; a pixel whose
+        // count is past it, or is no integer at all (NaN included), is said in `inexact`.
         let sum = |texels: &[[f32; 4]], channel: usize| -> u64 {
-            texels
-                .iter()
-                .map(|t| f64::from(t[channel]).round() as u64)
-                .sum()
+            texels.iter().map(|t| f64::from(t[channel]) as u64).sum()
         };
+        let exact = |count: f32| count < kit::EXACT_COUNT_LIMIT && count.fract() == 0.0;
+        let inexact = curves
+            .iter()
+            .zip(&fragments)
+            .filter(|(c, f)| !(c[..3].iter().chain(f.iter()).all(|&n| exact(n))))
+            .count() as u64;
         Ok(CostCounts {
             quads: u64::from(quads),
             fragments: sum(&fragments, 0),
@@ -124,6 +130,7 @@ impl Winding {
             visited: sum(&curves, 0),
             right: sum(&curves, 1),
             across: sum(&curves, 2),
+            inexact,
         })
     }
 }
