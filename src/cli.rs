@@ -45,6 +45,10 @@ pub enum Command {
     /// scenes: a Markdown table, CSV, JSON and plots. Run it from the repository root
     /// (the scenes read fonts/).
     Bench(BenchArgs),
+    /// Move the camera along a path frame by frame and measure what each method does
+    /// between frames against the reference (shimmer): per-frame CSV, a summary, an SVG
+    /// plot of temporal error and an animated picture of a magnified window.
+    Motion(Box<MotionArgs>),
     /// Print which outline table a font uses (and why), its units per em and axes, and
     /// for the glyphs asked for their advance, lsb, xMin and the shift applied to them.
     Info(crate::info::InfoArgs),
@@ -116,6 +120,50 @@ pub fn run_bench(args: &BenchArgs) -> Result<(), Error> {
     crate::bench::run_to(&options, &args.out)?;
     println!("{}", args.out.join("bench.md").display());
     Ok(())
+}
+
+/// `glyphscope motion`'s arguments.
+#[derive(Args, Clone, Debug)]
+pub struct MotionArgs {
+    #[command(flatten)]
+    pub view: ViewArgs,
+    /// A named view instead of the view options (see `render --case`).
+    #[arg(long, conflicts_with_all = [
+        "font", "text", "glyph_id", "size", "width", "height", "origin", "matrix",
+        "world_offset", "tilt", "variation",
+    ])]
+    pub case: Option<String>,
+    /// The camera's path, its speed per frame: drift:DX,DY (pixels), rotate:DEG or
+    /// rotate:DEG@X,Y (counter-clockwise, about the image centre or pixel X,Y), zoom:F,
+    /// pulse:LOW,HIGH,PERIOD (size between LOW and HIGH times the base), sway:DEG,PERIOD
+    /// (tilt ±DEG), joined by '+'.
+    #[arg(long, default_value = "drift:0.0625,0", allow_hyphen_values = true)]
+    pub path: String,
+    /// Frames drawn (the first is the view itself).
+    #[arg(long, default_value_t = 32, value_parser = clap::value_parser!(u32).range(2..=100_000))]
+    pub frames: u32,
+    /// Methods, comma-separated, each NAME or NAME:KEY=VALUE:KEY=VALUE (e.g.
+    /// winding:aa=rays:samples=1); peers too.
+    #[arg(long, value_delimiter = ',', required = true)]
+    pub method: Vec<String>,
+    /// The methods the animated picture shows beside the reference (default: the first
+    /// two of --method), by their place in --method (1, 2, …) or name.
+    #[arg(long, value_delimiter = ',')]
+    pub animate: Vec<String>,
+    /// Frames in the animated picture (the first ones; at most --frames).
+    #[arg(long, default_value_t = 32)]
+    pub animate_frames: u32,
+    /// The animated picture's magnification: each pixel an N×N block, 24×16 pixels a
+    /// panel at the default 12.
+    #[arg(long, default_value_t = 12, value_parser = clap::value_parser!(u32).range(2..=i64::from(magnify::MAX_FACTOR)))]
+    pub magnify: u32,
+    /// The pixel the animated picture is centred on: `worst` (the largest temporal
+    /// error of the first animated method, summed over the run; the default) or X,Y.
+    #[arg(long)]
+    pub focus: Option<Focus>,
+    /// Folder for motion.csv, motion.md, motion.json, temporal.svg and motion.png.
+    #[arg(long, default_value = "motion-out")]
+    pub out: PathBuf,
 }
 
 /// `glyphscope render`'s arguments: a view, the method that draws it, and what to write.
@@ -331,6 +379,132 @@ pub fn run_render(args: &RenderArgs) -> Result<(), Error> {
             .map_err(|e| Error::Output(format!("cannot write '{}': {e}", path.display())))?;
     }
     Ok(())
+}
+
+/// `glyphscope motion`: runs the methods through the path, writes the report and the
+/// animated picture, prints the summary table.
+pub fn run_motion(args: &MotionArgs) -> Result<(), Error> {
+    use crate::motion::{MotionPath, report, run};
+    let path = MotionPath::parse(&args.path)?;
+    let specs = args
+        .method
+        .iter()
+        .map(|m| run::MethodSpec::parse(m))
+        .collect::<Result<Vec<_>, _>>()?;
+    let animated = animated_methods(&args.animate, &specs)?;
+    let (scene, camera) = match &args.case {
+        Some(name) => crate::named_views::build(name)?,
+        None => args.view.build()?,
+    };
+    let needs_gpu = specs.iter().any(|s| s.name != registry::REFERENCE.name);
+    let gpu = needs_gpu.then(GpuContext::new).transpose()?;
+    let frames = args.frames as usize;
+    let bar = indicatif::ProgressBar::new(frames as u64);
+    let result = run::run(gpu.as_ref(), &scene, &camera, &path, frames, &specs, |_| {
+        bar.inc(1)
+    })?;
+    bar.finish_and_clear();
+    let command = std::env::args()
+        .skip(1)
+        .map(|a| if a.contains(' ') { format!("'{a}'") } else { a })
+        .collect::<Vec<_>>()
+        .join(" ");
+    report::write(&result, &args.out, &format!("glyphscope {command}"))?;
+    // The animated picture: a window around the focus, drawn again for the methods
+    // shown (the run keeps no frames).
+    let shown = animated
+        .iter()
+        .filter(|&&k| result.methods[k].refused.is_none())
+        .copied()
+        .collect::<Vec<_>>();
+    if let Some(&first) = shown.first() {
+        let animate_frames = (args.animate_frames as usize).clamp(2, frames);
+        let panel = 288 / args.magnify;
+        let (cols, rows) = (
+            panel.min(camera.width),
+            (192 / args.magnify).min(camera.height),
+        );
+        let focus = match args.focus {
+            Some(Focus::Pixel(x, y)) => {
+                Focus::Pixel(x, y).pixel(camera.width, camera.height, None)?
+            }
+            _ => result.methods[first]
+                .frames
+                .iter()
+                .filter_map(|f| f.temporal.map(|t| (t.max, t.worst_pixel)))
+                .max_by(|a, b| a.0.total_cmp(&b.0))
+                .map_or((camera.width / 2, camera.height / 2), |w| w.1),
+        };
+        let x0 = focus.0.saturating_sub(cols / 2).min(camera.width - cols);
+        let y0 = focus.1.saturating_sub(rows / 2).min(camera.height - rows);
+        let draw = |spec: &run::MethodSpec| {
+            run::window_frames(
+                gpu.as_ref(),
+                &scene,
+                &camera,
+                &path,
+                animate_frames,
+                spec,
+                (x0, y0, cols, rows),
+            )
+        };
+        let reference_spec = run::MethodSpec::parse(registry::REFERENCE.name)?;
+        let reference = draw(&reference_spec)?;
+        let mut panels = vec![report::Panel {
+            label: "reference".into(),
+            frames: reference.clone(),
+            against: None,
+        }];
+        for &k in &shown {
+            panels.push(report::Panel {
+                label: specs[k].label(),
+                frames: draw(&specs[k])?,
+                against: Some(reference.clone()),
+            });
+        }
+        report::animation(&panels, args.magnify, &args.out.join("motion.png"))?;
+        eprintln!(
+            "animated: pixels ({x0}, {y0}) to ({}, {}), frames 0 to {}",
+            x0 + cols - 1,
+            y0 + rows - 1,
+            animate_frames - 1
+        );
+    }
+    print!(
+        "{}",
+        report::markdown(&result, &format!("glyphscope {command}"))
+    );
+    Ok(())
+}
+
+/// Indices into `specs` of the methods `--animate` names (default the first two).
+fn animated_methods(
+    names: &[String],
+    specs: &[crate::motion::run::MethodSpec],
+) -> Result<Vec<usize>, Error> {
+    if names.is_empty() {
+        return Ok((0..specs.len().min(2)).collect());
+    }
+    names
+        .iter()
+        .map(|name| {
+            if let Ok(k) = name.trim().parse::<usize>() {
+                return (1..=specs.len())
+                    .contains(&k)
+                    .then_some(k - 1)
+                    .ok_or_else(|| {
+                        Error::Input(format!(
+                            "--animate {k}: --method lists {} methods",
+                            specs.len()
+                        ))
+                    });
+            }
+            specs
+                .iter()
+                .position(|s| s.name == name.trim() || s.label() == name.trim())
+                .ok_or_else(|| Error::Input(format!("--animate '{name}' is not one of --method")))
+        })
+        .collect()
 }
 
 /// `glyphscope stability`: runs the sweep, prints the table and writes the report.

@@ -16,6 +16,7 @@ pub mod magnify;
 pub mod measure;
 pub mod methods;
 pub mod metrics;
+pub mod motion;
 pub mod named_views;
 pub mod outline_overlay;
 pub mod reference;

@@ -17,6 +17,7 @@ fn main() -> ExitCode {
         // Exit 1, distinct from bad input's 2, when a method breaks a claimed bound.
         Some(Command::Stability(args)) => glyphscope::cli::run_stability(args),
         Some(Command::Screenshots(args)) => run_screenshots(args).map(|()| true),
+        Some(Command::Motion(args)) => glyphscope::cli::run_motion(args).map(|()| true),
         Some(Command::Info(args)) => glyphscope::info::run(args).map(|()| true),
         None => run_app().map(|()| true),
     };

@@ -160,20 +160,7 @@ pub fn measure(
             overlay = Some(target.readback_color(gpu)?);
         }
         stats.curves_per_pixel = method.curves_per_pixel(gpu, camera)?;
-        let (times, clock) = match frame::time_frames(
-            gpu,
-            method.as_mut(),
-            &target,
-            camera,
-            timing.warmup,
-            timing.frames,
-        )? {
-            Some(times) => (times, CLOCK_TIMESTAMPS),
-            None => (
-                wall_clock_frames(gpu, method.as_mut(), &target, camera, timing)?,
-                CLOCK_WALL,
-            ),
-        };
+        let (times, clock) = time_frames(gpu, method.as_mut(), &target, camera, timing)?;
         let gpu_ms = || times.iter().map(|t| t.gpu_ms);
         if let Some(median) = metrics::median(gpu_ms()) {
             let range = gpu_ms().fold((f64::INFINITY, 0.0f64), |(lo, hi), t| {
@@ -203,6 +190,25 @@ pub fn measure(
         overlay,
         stats,
     })
+}
+
+/// GPU and CPU time of `timing.frames` frames after `timing.warmup` untimed ones, by
+/// timestamp queries or, where the device has none, the CPU's clock; and which. The
+/// target holds the last frame.
+pub fn time_frames(
+    gpu: &GpuContext,
+    method: &mut dyn methods::Method,
+    target: &CoverageTarget,
+    camera: &Camera,
+    timing: FrameTiming,
+) -> Result<(Vec<FrameTime>, &'static str), Error> {
+    match frame::time_frames(gpu, method, target, camera, timing.warmup, timing.frames)? {
+        Some(times) => Ok((times, CLOCK_TIMESTAMPS)),
+        None => Ok((
+            wall_clock_frames(gpu, method, target, camera, timing)?,
+            CLOCK_WALL,
+        )),
+    }
 }
 
 /// Frame times from the CPU's clock, for devices without timestamp queries: each frame

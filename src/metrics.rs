@@ -107,6 +107,143 @@ pub fn compare(image: &CoverageImage, reference: &CoverageImage) -> Result<Error
     Ok(stats)
 }
 
+/// A change of a pixel's error between two frames above this counts as a flicker a
+/// reader can see: a tenth of the way from white to black.
+pub const TEMPORAL_THRESHOLD: f64 = 0.1;
+
+/// What a method does between two frames of moving text that the reference does not:
+/// per pixel, the method's change of coverage less the reference's, Δm − Δr (which is
+/// also the change of its error, e₁ − e₀).
+///
+/// - A method exact in each frame scores 0, and so does any change that is right,
+///   however large: an edge sweeping across a pixel changes it by the reference's amount.
+/// - A constant bias that moves with the text (a blur) scores little: its error moves
+///   by the step, so Δe is the step times the bias's slope.
+/// - A method that snaps (an atlas's sub-pixel phases, a heuristic that flips) scores
+///   the jump less the reference's smooth change, in the frames where it jumps: hence
+///   the maximum and the worst frame pair beside the mean.
+/// - It does not see an error that stays put while the text moves (the same wrong
+///   value in two frames): that is the still-frame error's business, quoted beside it.
+///
+/// Invalid values (not finite or outside [0, 1]) in any of the four images count as a
+/// change of 1 in the means, an infinite one in `max`, and among the pixels over the
+/// threshold.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct TemporalError {
+    /// Mean |Δm − Δr| over the frame, in 1/255.
+    pub mae_255: f64,
+    /// Largest |Δm − Δr|, as coverage.
+    pub max: f64,
+    pub worst_pixel: (u32, u32),
+    /// Pixels with |Δm − Δr| over [`TEMPORAL_THRESHOLD`].
+    pub pixels_over: usize,
+    pub pixels: usize,
+    pub invalid_pixels: usize,
+    /// The same over the pixels that are edge pixels (see [`ErrorStats::edge`]) in
+    /// either frame.
+    pub edge: TemporalEdge,
+}
+
+/// [`TemporalError`] over edge pixels.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct TemporalEdge {
+    pub pixels: usize,
+    pub mae_255: f64,
+    pub max: f64,
+    pub pixels_over: usize,
+}
+
+/// The temporal error between frames 0 and 1 of a method (`image`) and of the
+/// reference.
+pub fn temporal(
+    image: [&CoverageImage; 2],
+    reference: [&CoverageImage; 2],
+) -> Result<TemporalError, Error> {
+    let size = (image[0].width, image[0].height);
+    for other in [image[1], reference[0], reference[1]] {
+        if (other.width, other.height) != size {
+            return Err(Error::Input(format!(
+                "cannot compare frames of {}x{} and {}x{} pixels",
+                size.0, size.1, other.width, other.height
+            )));
+        }
+    }
+    let mut stats = TemporalError {
+        pixels: image[0].data.len(),
+        ..Default::default()
+    };
+    let (mut sum, mut edge_sum) = (0.0, 0.0);
+    let partial = |v: f32| v > 0.0 && v < 1.0;
+    for i in 0..stats.pixels {
+        let [m0, m1] = image.map(|f| f.data[i]);
+        let [r0, r1] = reference.map(|f| f.data[i]);
+        let values = [m0, m1, r0, r1];
+        let (change, worst) = if values.iter().all(|&v| is_valid(v)) {
+            let d = ((f64::from(m1) - f64::from(m0)) - (f64::from(r1) - f64::from(r0))).abs();
+            (d, d)
+        } else {
+            stats.invalid_pixels += 1;
+            (1.0, f64::INFINITY)
+        };
+        sum += change;
+        let over = usize::from(worst > TEMPORAL_THRESHOLD);
+        stats.pixels_over += over;
+        if worst > stats.max {
+            stats.max = worst;
+            let width = image[0].width as usize;
+            stats.worst_pixel = ((i % width) as u32, (i / width) as u32);
+        }
+        let edge = values.iter().any(|&v| !is_valid(v) || partial(v)) || m0 != r0 || m1 != r1;
+        if edge {
+            stats.edge.pixels += 1;
+            edge_sum += change;
+            stats.edge.max = stats.edge.max.max(worst);
+            stats.edge.pixels_over += over;
+        }
+    }
+    stats.mae_255 = sum / stats.pixels.max(1) as f64 * 255.0;
+    stats.edge.mae_255 = edge_sum / stats.edge.pixels.max(1) as f64 * 255.0;
+    Ok(stats)
+}
+
+/// The temporal error of a run of frames: each consecutive pair's, summed up.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct TemporalSummary {
+    pub pairs: usize,
+    /// Means over the pairs of each pair's figure, in 1/255.
+    pub mae_255: f64,
+    pub edge_mae_255: f64,
+    /// The largest change of any pixel in any pair, as coverage.
+    pub max: f64,
+    /// Pixels over [`TEMPORAL_THRESHOLD`], per pair on average.
+    pub pixels_over_per_pair: f64,
+    /// The pair (its first frame) with the largest mean, and that mean in 1/255.
+    pub worst_pair: usize,
+    pub worst_pair_mae_255: f64,
+}
+
+impl TemporalSummary {
+    /// Sums up the pairs' figures; `pairs[k]` is between frames k and k + 1.
+    pub fn of(pairs: &[TemporalError]) -> TemporalSummary {
+        let n = pairs.len().max(1) as f64;
+        let mut summary = TemporalSummary {
+            pairs: pairs.len(),
+            ..Default::default()
+        };
+        for (k, pair) in pairs.iter().enumerate() {
+            summary.mae_255 += pair.mae_255 / n;
+            summary.edge_mae_255 += pair.edge.mae_255 / n;
+            summary.max = summary.max.max(pair.max);
+            summary.pixels_over_per_pair += pair.pixels_over as f64 / n;
+            if k == 0 || pair.mae_255 > summary.worst_pair_mae_255 {
+                summary.worst_pair = k;
+                summary.worst_pair_mae_255 = pair.mae_255;
+            }
+        }
+        summary
+    }
+}
+
 /// A pixel's absolute error against the reference: ((x, y), error).
 pub type PixelError = ((u32, u32), f64);
 
@@ -319,6 +456,33 @@ mod tests {
         assert_eq!(s.edge.pixels, 2);
         assert!((s.edge.mae_255 - 255.0 / 2.0).abs() < 1e-9);
         assert_eq!((s.edge.max, s.edge.pixels_over_05), (1.0, 1));
+    }
+
+    /// A pixel that changes by the reference's amount scores 0, one that jumps where
+    /// the reference moves a little scores the difference, an invalid one 1 (hand-worked:
+    /// Δr = 0.125, 0, 0.5; Δm = 0.125, 0.25, 0.5; |Δm − Δr| = 0, 0.25, 0 and the NaN).
+    #[test]
+    fn temporal_error_is_the_change_less_the_references() {
+        let m0 = img(&[0.25, 0.0, 0.0, 0.0]);
+        let m1 = img(&[0.375, 0.25, 0.5, f32::NAN]);
+        let r0 = img(&[0.25, 0.1, 0.0, 0.0]);
+        let r1 = img(&[0.375, 0.1, 0.5, 0.0]);
+        let t = temporal([&m0, &m1], [&r0, &r1]).unwrap();
+        assert!(
+            (t.mae_255 - (0.25 + 1.0) / 4.0 * 255.0).abs() < 1e-4,
+            "{}",
+            t.mae_255
+        );
+        assert!(t.max.is_infinite() && t.worst_pixel == (3, 0));
+        assert_eq!((t.pixels_over, t.invalid_pixels), (2, 1));
+        // Every pixel here is an edge pixel: partial, or different from the reference.
+        assert_eq!(t.edge.pixels, 4);
+        let still = temporal([&r0, &r1], [&r0, &r1]).unwrap();
+        assert_eq!((still.mae_255, still.max, still.pixels_over), (0.0, 0.0, 0));
+        let summary = TemporalSummary::of(&[still, t, still]);
+        assert_eq!((summary.pairs, summary.worst_pair), (3, 1));
+        assert!((summary.mae_255 - t.mae_255 / 3.0).abs() < 1e-9);
+        assert!(temporal([&m0, &img(&[0.0])], [&r0, &r1]).is_err());
     }
 
     #[test]
