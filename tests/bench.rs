@@ -342,3 +342,58 @@ fn bad_input_fails_cleanly_before_measuring() {
         assert!(stderr.contains(expect), "{args:?}: {stderr}");
     }
 }
+
+/// The "In motion" section on tiny: each method through the three paths, the exact mode
+/// within what its still bound allows between two frames (|Δe| ≤ 2·max|e|, the page's
+/// max 0.02: 0.04), the atlas's phase snapping far above it.
+#[test]
+fn the_bench_measures_methods_in_motion() {
+    let out = scratch("motion");
+    succeeds(&[
+        "bench",
+        "--quick",
+        "--scenes",
+        "tiny",
+        "--methods",
+        "winding,atlas",
+        "--frames",
+        "1",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let json = read_json(&out.join("bench.json"));
+    let motion = json["motion"].as_array().unwrap();
+    assert_eq!(motion.len(), 2 * glyphscope::bench::motion::PATHS.len());
+    let temporal = |method: &str, path: &str| -> (f64, f64) {
+        let case = motion
+            .iter()
+            .find(|c| c["method"]["name"] == method && c["path"] == path)
+            .unwrap_or_else(|| panic!("{method} on {path} missing"));
+        let what = format!("{method} {path}");
+        assert_eq!(
+            case["temporal"]["pairs"],
+            glyphscope::bench::motion::QUICK_FRAMES - 1
+        );
+        (
+            number(&case["temporal"]["mae_255"], &what),
+            number(&case["temporal"]["max"], &what),
+        )
+    };
+    for (_, path) in glyphscope::bench::motion::PATHS {
+        let path = glyphscope::motion::MotionPath::parse(path)
+            .unwrap()
+            .to_string();
+        let (winding_mae, winding_max) = temporal("winding", &path);
+        assert!(winding_max <= 0.04, "winding on {path}: {winding_max}");
+        let (atlas_mae, _) = temporal("atlas", &path);
+        assert!(
+            atlas_mae > 10.0 * winding_mae,
+            "{path}: atlas {atlas_mae}, winding {winding_mae}"
+        );
+    }
+    let md = std::fs::read_to_string(out.join("bench.md")).unwrap();
+    assert!(
+        md.contains("## In motion") && md.contains("| winding | default |"),
+        "{md}"
+    );
+}

@@ -6,9 +6,11 @@
 //! - [`run`]: measuring, through the same function as `render --stats`;
 //! - [`scaling`]: how each method's cost grows with the glyphs and with the size;
 //! - [`winding_cost`]: where `winding`'s default spends a frame, stage by stage;
+//! - [`motion`]: every method's temporal error as text drifts and turns (page, tiny);
 //! - [`report`] and [`plot`]: Markdown, CSV, JSON and SVG plots.
 
 pub mod method_settings;
+pub mod motion;
 pub mod plot;
 pub mod report;
 pub mod run;

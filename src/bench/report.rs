@@ -63,6 +63,7 @@ pub fn markdown(result: &BenchResult) -> String {
     } else {
         scene_sections(result, clock, &mut md);
     }
+    super::motion::markdown(result, &mut md);
     super::winding_cost::markdown(result, &mut md);
     super::scaling::markdown(&result.scaling, result.scaling_timing, &mut md);
     md

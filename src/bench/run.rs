@@ -6,6 +6,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
 
 use super::method_settings;
+use super::motion;
 use super::scaling::{self, ScalingPoint, Series};
 use super::scenes::{self, BenchScene};
 use super::winding_cost::{self, WindingCost};
@@ -16,6 +17,7 @@ use crate::measure::{self, FrameTiming, Measured};
 use crate::methods::registry::{self, MethodInfo};
 use crate::methods::{self, atlas, winding};
 use crate::metrics::{self, ErrorStats};
+use crate::motion::run::MethodSpec;
 use crate::scene::Scene;
 
 /// How each measurement is timed: in `rounds` that interleave a view's measurements,
@@ -251,6 +253,9 @@ pub struct BenchResult {
     pub scaling: Vec<ScalingPoint>,
     /// Where `winding`'s time goes, per scene and view, where `winding` was measured.
     pub winding_costs: Vec<WindingCost>,
+    /// Each method at its default through the camera paths of [`motion::PATHS`], on
+    /// the scenes of [`motion::SCENES`] that were run.
+    pub motion: Vec<motion::MotionCase>,
 }
 
 /// `names` in order, each once: a name given twice is measured once.
@@ -452,6 +457,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
         scaling_timing,
         scaling: Vec::new(),
         winding_costs: Vec::new(),
+        motion: Vec::new(),
     };
     for bench_scene in chosen {
         let (_, own_camera) = bench_scene.args.build()?;
@@ -543,6 +549,29 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
                     &here.scene,
                     &here.camera,
                     timing,
+                )?);
+            }
+            if view == SceneCamera::Own && motion::SCENES.contains(&bench_scene.name) {
+                progress.set_message(format!("{}: in motion", bench_scene.name));
+                let defaults: Vec<MethodSpec> = methods
+                    .iter()
+                    .filter(|m| !m.is_reference())
+                    .map(|m| MethodSpec {
+                        name: m.name.into(),
+                        params: settings_for(m, view, options.quick, cache).swap_remove(0),
+                    })
+                    .collect();
+                let frames = match options.quick {
+                    true => motion::QUICK_FRAMES,
+                    false => motion::FRAMES,
+                };
+                result.motion.extend(motion::measure(
+                    &gpu,
+                    bench_scene.name,
+                    &here.scene,
+                    &here.camera,
+                    &defaults,
+                    frames,
                 )?);
             }
             for case in combine_rounds(rounds) {
