@@ -1156,3 +1156,112 @@ fn a_case_with_no_pixel_over_the_threshold_opens_on_its_worst() {
     let window = harness.state().magnified_window().expect("laid out");
     assert_eq!((window.factor, window.focus), (32, pixel));
 }
+
+/// Text in motion: each step moves the shared camera by the path's step in every pane
+/// (each pane's read-back is its method drawn offscreen at that frame's camera), a step
+/// back shows frame 0's pixels again, and playing charts one point per frame in every
+/// pane, with the temporal error of each frame after the first.
+#[test]
+fn motion_steps_plays_and_charts_one_point_per_frame() {
+    let mut settings = Settings {
+        layout: Layout::SideBySide,
+        motion_path: "drift:0.25,0.125".into(),
+        ..Settings::default()
+    };
+    settings.scene.text = "Wave".into();
+    settings.panes[0] = PaneSettings::method("atlas");
+    settings.panes[1] = PaneSettings::method("winding");
+    let mut harness = harness(settings);
+    settle(&mut harness);
+    let base = harness.state().camera().unwrap();
+    let first: Vec<_> = (0..2)
+        .map(|i| harness.state().pane_capture(i).expect("read back at rest"))
+        .collect();
+    let offscreen = |harness: &Harness<'static, Explorer>, pane: usize| {
+        let app = harness.state();
+        let name = if pane == 0 { "atlas" } else { "winding" };
+        let mut method = methods::create(name, &[]).unwrap();
+        method.prepare(gpu(), app.scene().unwrap()).unwrap();
+        let camera = app.camera().unwrap();
+        methods::frame::render_image(gpu(), method.as_mut(), &camera).unwrap()
+    };
+    harness.key_press(egui::Key::L);
+    settle(&mut harness);
+    let app = harness.state();
+    assert_eq!(app.motion_frame(), 1);
+    let moved = app.camera().unwrap();
+    let step = moved.origin - base.origin - glam::DVec2::new(0.25, 0.125);
+    assert!(step.length() < 1e-9, "frame 1 is off the path by {step}");
+    for (pane, first) in first.iter().enumerate() {
+        let shown = harness.state().pane_capture(pane).unwrap();
+        assert_ne!(*shown, **first, "pane {pane} did not move");
+        assert_eq!(*shown, offscreen(&harness, pane), "pane {pane} at frame 1");
+    }
+    harness.key_press(egui::Key::J);
+    settle(&mut harness);
+    assert_eq!(harness.state().camera().unwrap(), base);
+    for (pane, first) in first.iter().enumerate() {
+        assert_eq!(
+            harness.state().pane_capture(pane).unwrap(),
+            *first,
+            "pane {pane} back at frame 0"
+        );
+    }
+    harness.key_press(egui::Key::Space);
+    let start = Instant::now();
+    while harness.state().motion_frame() < 4 {
+        harness.step();
+        harness.render().expect("the harness draws with wgpu");
+        assert!(
+            start.elapsed() < Duration::from_secs(120),
+            "playing stalled at frame {}",
+            harness.state().motion_frame()
+        );
+    }
+    harness.key_press(egui::Key::Space);
+    settle(&mut harness);
+    let app = harness.state();
+    assert!(!app.is_playing());
+    let last = app.motion_frame();
+    let expected = base.origin + last as f64 * glam::DVec2::new(0.25, 0.125);
+    assert!((app.camera().unwrap().origin - expected).length() < 1e-9);
+    for pane in 0..2 {
+        let history = app.motion_history(pane);
+        let frames: Vec<i64> = history.iter().map(|(n, _)| *n).collect();
+        assert_eq!(
+            frames,
+            (0..=last).collect::<Vec<_>>(),
+            "pane {pane}: one point per frame"
+        );
+        for (n, point) in &history {
+            assert!(point.mae_255.is_finite(), "pane {pane} frame {n}");
+            assert_eq!(
+                point.temporal.is_some(),
+                *n > 0,
+                "pane {pane} frame {n}: temporal"
+            );
+        }
+    }
+    // The atlas snaps to its phases; winding follows the reference.
+    let temporal = |pane: usize| -> f64 {
+        app.motion_history(pane)
+            .iter()
+            .filter_map(|(_, p)| p.temporal.map(|t| t.mae_255))
+            .sum()
+    };
+    assert!(
+        temporal(0) > 10.0 * temporal(1),
+        "atlas {} vs winding {}",
+        temporal(0),
+        temporal(1)
+    );
+    let (_, samples) = app
+        .motion_pixel_history()
+        .expect("the focus pixel is followed");
+    assert_eq!(samples.len() as i64, last + 1);
+    // Playing opened the Motion window.
+    harness.step();
+    // Each pane's chart is titled with it (the pixel chart's legend names it too).
+    assert!(harness.query_all_by_label("A atlas").count() >= 2);
+    assert!(harness.query_all_by_label("B winding").count() >= 2);
+}

@@ -18,7 +18,7 @@ use crate::camera::Camera;
 use crate::coverage::CoverageImage;
 use crate::gpu::GpuContext;
 use crate::methods::{self, CurveCost, Method};
-use crate::metrics::{self, ErrorStats};
+use crate::metrics::{self, ErrorStats, TemporalError};
 use crate::reference;
 use crate::scene::Scene;
 
@@ -36,6 +36,9 @@ pub struct Request {
     /// Each pane's surface generation when the request was made: a result for a pane
     /// whose method has since been remade is not that method's.
     pub pane_generations: Vec<u64>,
+    /// The frame of the motion path shown, when text is in motion: a frame that follows
+    /// the one analysed before gets each pane's temporal error.
+    pub motion_frame: Option<i64>,
 }
 
 /// (pane, method, parameters).
@@ -51,8 +54,21 @@ pub struct Outcome {
     pub reference_ms: Option<f64>,
     pub errors: Vec<(usize, Result<ErrorStats, String>)>,
     pub curves: Vec<(usize, Result<Option<CurveCost>, String>)>,
+    /// Against the frame before, for the panes that had one (see [`Request::motion_frame`]).
+    pub temporal: Vec<(usize, TemporalError)>,
     /// As in the request.
     pub pane_generations: Vec<u64>,
+    pub motion_frame: Option<i64>,
+}
+
+/// The last frame of motion analysed: what the next frame's temporal error is taken
+/// against.
+struct PreviousFrame {
+    frame: i64,
+    scene_generation: u64,
+    reference: Arc<CoverageImage>,
+    /// (pane, its surface generation, its capture).
+    captures: Vec<(usize, u64, Arc<CoverageImage>)>,
 }
 
 /// The worker's prepared copy of a pane's method: (scene generation, name, parameters).
@@ -75,12 +91,14 @@ impl Analysis {
             .spawn(move || {
                 let mut last: Option<(u64, Camera, Arc<CoverageImage>)> = None;
                 let mut counters: HashMap<usize, Counter> = HashMap::new();
+                let mut previous: Option<PreviousFrame> = None;
                 while let Ok(mut request) = inbox.recv() {
                     // Only the newest view matters.
                     while let Ok(newer) = inbox.try_recv() {
                         request = newer;
                     }
                     let mut outcome = analyse(&request, &mut last);
+                    outcome.temporal = temporal(&request, &outcome, &mut previous);
                     if let Some(gpu) = &gpu {
                         outcome.curves = count_curves(gpu, &request, &mut counters);
                     }
@@ -147,9 +165,19 @@ impl Explorer {
             .into_iter()
             .filter(|(p, _)| current(*p))
             .collect();
+        let temporal: Vec<_> = outcome
+            .temporal
+            .iter()
+            .copied()
+            .filter(|(p, _)| current(*p))
+            .collect();
+        let mut frame_errors = Vec::new();
         for (pane, result) in errors {
             match result {
-                Ok(stats) => self.panes[pane].error = Some((outcome.camera, stats)),
+                Ok(stats) => {
+                    self.panes[pane].error = Some((outcome.camera, stats));
+                    frame_errors.push((pane, stats));
+                }
                 Err(e) => self.panes[pane].problem = Some(e),
             }
         }
@@ -170,6 +198,9 @@ impl Explorer {
                 }
                 self.reference.image = Some(image);
                 self.reference.made_for = Some((outcome.scene_generation, outcome.camera));
+                if let Some(frame) = outcome.motion_frame {
+                    self.record_motion_frame(frame, &frame_errors, &temporal);
+                }
             }
             Err(e) => self.reference.problem = Some(e),
         }
@@ -219,8 +250,52 @@ fn analyse(request: &Request, last: &mut Option<(u64, Camera, Arc<CoverageImage>
         reference_ms,
         errors,
         curves: Vec::new(),
+        temporal: Vec::new(),
         pane_generations: request.pane_generations.clone(),
+        motion_frame: request.motion_frame,
     }
+}
+
+/// Each pane's temporal error from the frame before, when this request is the next
+/// frame of the same motion (same scene, same method in the pane, same size); keeps
+/// this frame for the next.
+fn temporal(
+    request: &Request,
+    outcome: &Outcome,
+    previous: &mut Option<PreviousFrame>,
+) -> Vec<(usize, TemporalError)> {
+    let (Some(frame), Ok(reference)) = (request.motion_frame, &outcome.reference) else {
+        *previous = None;
+        return Vec::new();
+    };
+    let mut changes = Vec::new();
+    if let Some(before) = previous
+        .as_ref()
+        .filter(|p| p.frame + 1 == frame && p.scene_generation == request.scene_generation)
+    {
+        for (pane, image) in &request.captures {
+            let earlier = before.captures.iter().find(|(p, generation, _)| {
+                p == pane && *generation == request.pane_generations[*pane]
+            });
+            if let Some((_, _, earlier)) = earlier
+                && let Ok(change) =
+                    metrics::temporal([earlier, image], [&before.reference, reference])
+            {
+                changes.push((*pane, change));
+            }
+        }
+    }
+    *previous = Some(PreviousFrame {
+        frame,
+        scene_generation: request.scene_generation,
+        reference: reference.clone(),
+        captures: request
+            .captures
+            .iter()
+            .map(|(pane, image)| (*pane, request.pane_generations[*pane], image.clone()))
+            .collect(),
+    });
+    changes
 }
 
 fn count_curves(

@@ -8,6 +8,7 @@ use super::settings::{CameraSettings, CaseFrame};
 use crate::camera::{Camera, Crop};
 use crate::geometry::project;
 use crate::magnify::{MAX_FACTOR, Window};
+use crate::motion::MotionPath;
 use crate::scene::Scene;
 
 /// The zoom range the explorer offers, px/em.
@@ -85,7 +86,21 @@ impl CameraSettings {
     /// around the focus, which the pane shows as N×N blocks. Each drawn pixel is the one
     /// the ×1 pane shows there (under a tilt too): magnifying changes no value.
     pub fn pane_camera(&self, width: u32, height: u32) -> (Camera, Window) {
-        let frame = self.camera(width, height);
+        self.pane_camera_moved(width, height, None)
+    }
+
+    /// [`CameraSettings::pane_camera`] at frame `n` of a motion path: the whole pane
+    /// moves, then the magnifier's window is cut from it.
+    pub fn pane_camera_moved(
+        &self,
+        width: u32,
+        height: u32,
+        motion: Option<(&MotionPath, i64)>,
+    ) -> (Camera, Window) {
+        let mut frame = self.camera(width, height);
+        if let Some((path, n)) = motion {
+            frame = path.camera_at(&frame, n);
+        }
         let pixel = |v: f64, size: u32| v.floor().clamp(0.0, f64::from(size - 1)) as u32;
         let focus = (pixel(self.focus[0], width), pixel(self.focus[1], height));
         let window = Window::around(width, height, self.magnify, focus);

@@ -85,7 +85,7 @@ impl Explorer {
         self.frame_text(ui, (width, height));
         self.steer(ui, area, &rects, ppp, (width, height));
         self.canvas.rects = rects.clone();
-        let (camera, window) = self.settings.camera.pane_camera(width, height);
+        let (camera, window) = self.pane_camera_now(width, height);
         self.canvas.camera = Some(camera);
         self.canvas.window = Some(window);
         self.canvas.pane_size = Some((width, height));
@@ -687,7 +687,8 @@ impl Explorer {
             return;
         }
         let waited = now - self.canvas.changed_at;
-        if waited < REST_SECONDS {
+        // A frame of motion is analysed at once: it is not the pointer still moving.
+        if waited < REST_SECONDS && !self.playback.stepped {
             ctx.request_repaint_after(std::time::Duration::from_secs_f64(REST_SECONDS - waited));
             return;
         }
@@ -730,7 +731,12 @@ impl Explorer {
             captures,
             counts,
             pane_generations,
+            motion_frame: self
+                .playback
+                .motion(&self.settings.motion_path)
+                .map(|(_, n)| n),
         });
+        self.playback.stepped = false;
         self.canvas.analysed = Some(key);
     }
 }

@@ -41,6 +41,11 @@ impl Explorer {
                 });
         }
         ui.separator();
+        // Closed until asked for, below the panes' controls.
+        egui::CollapsingHeader::new("Motion")
+            .default_open(false)
+            .show(ui, |ui| self.motion_controls(ui));
+        ui.separator();
         ui.horizontal(|ui| {
             if ui
                 .button("Speed vs error…")
@@ -377,6 +382,7 @@ impl Explorer {
                     }
                 });
             });
+        self.motion_window(ctx);
         if let Some(path) = self.font_dialog.show(ctx) {
             self.open_font(path);
         }

@@ -14,6 +14,8 @@
 //! - `cases_menu`: the Cases menu, loading each named hard case and bench scene.
 //! - `artifacts`: a pane's pixels off from the reference, worst first, to step through.
 //! - `blink`: pane A flipped in place to pane B's method or the reference.
+//! - `playback`: text in motion: the camera along a path frame by frame, with strip
+//!   charts of each pane's error and temporal error.
 //! - `pareto`: speed against error over every parameter combination, plotted with its
 //!   Pareto front.
 //! - `controls`: the side panel, the status bar and the windows.
@@ -33,6 +35,7 @@ pub mod headless;
 mod outline_painter;
 mod panes;
 mod pareto;
+mod playback;
 mod scene_state;
 pub mod screenshots;
 pub mod settings;
@@ -124,6 +127,7 @@ pub struct Explorer {
     status: Arc<Mutex<String>>,
     frame_intervals: VecDeque<f64>,
     auto_fit: canvas::AutoFit,
+    playback: playback::Playback,
 }
 
 impl Explorer {
@@ -192,6 +196,7 @@ impl Explorer {
             status: Arc::new(Mutex::new(String::new())),
             frame_intervals: VecDeque::new(),
             auto_fit: canvas::AutoFit::default(),
+            playback: playback::Playback::default(),
         }
     }
 
@@ -273,7 +278,7 @@ impl Explorer {
             && self.canvas.camera.is_some_and(|c| {
                 self.canvas
                     .pane_size
-                    .is_some_and(|(w, h)| c == self.settings.camera.pane_camera(w, h).0)
+                    .is_some_and(|(w, h)| c == self.pane_camera_now(w, h).0)
             })
             && (0..self.settings.layout.panes()).all(|i| {
                 self.panes[i].is_built_for(&self.settings.panes[i], self.scene.generation())
@@ -355,6 +360,7 @@ impl Explorer {
             .show(ui, |ui| self.show_canvas(ui));
         self.windows(&ctx);
         self.settle(&ctx);
+        self.tick_playback(&ctx);
         self.answer_worst_pixel_request(&ctx);
         if self.settings.continuous {
             ctx.request_repaint();

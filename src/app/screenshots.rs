@@ -89,6 +89,11 @@ pub fn write_all(dir: &Path) -> Result<Vec<String>, Error> {
     settings.layout = Layout::Single;
     settings.camera.size_px_per_em = 24.0;
     save("app-sweep.png".into(), settings, Then::Sweep)?;
+    save(
+        "app-motion.png".into(),
+        atlas_beside_winding_in_motion(),
+        Then::Play(24),
+    )?;
     Ok(written)
 }
 
@@ -103,6 +108,8 @@ pub enum Then {
     OpenAsOnAFirstStart,
     /// A case loaded from the Cases menu (at rest, on its worst pixel).
     LoadCase(&'static str),
+    /// The motion path played this many frames, its charts open (at rest).
+    Play(i64),
 }
 
 /// The case README's first picture shows.
@@ -156,6 +163,26 @@ fn methods_side_by_side(catalog: &Catalog) -> Settings {
     settings
 }
 
+/// The atlas beside winding, magnified ×16 on small text drifting 1/16 px a frame: the
+/// atlas's phases against an exact method, with the charts of both.
+fn atlas_beside_winding_in_motion() -> Settings {
+    let mut settings = Settings {
+        layout: Layout::SideBySide,
+        motion_path: super::settings::DEFAULT_MOTION_PATH.into(),
+        ..Settings::default()
+    };
+    settings.scene.text = "Hamburgefonstiv".into();
+    settings.panes[0] = PaneSettings::method(crate::methods::atlas::NAME);
+    settings.panes[1] = PaneSettings::method(crate::methods::winding::INFO.name);
+    settings.camera.size_px_per_em = 12.0;
+    // Near the pane's top edge, so that the magnified window starts there and the text
+    // stays clear of the Motion window below it.
+    settings.camera.origin = [16.0, 14.0];
+    settings.camera.magnify = 16;
+    settings.camera.focus = [40.0, 9.0];
+    settings
+}
+
 fn one_pane(pane: PaneSettings) -> Settings {
     let mut settings = Settings {
         layout: Layout::Single,
@@ -196,7 +223,7 @@ pub fn photograph_panes(
     match then {
         Then::OpenAsOnAFirstStart => app.open_as_on_a_first_start(),
         Then::LoadCase(name) => app.load_case(name),
-        Then::Settle | Then::Sweep => {}
+        Then::Settle | Then::Sweep | Then::Play(_) => {}
     }
     let sweep = matches!(then, Then::Sweep);
     let start = Instant::now();
@@ -210,7 +237,18 @@ pub fn photograph_panes(
             app.start_sweep(&screen.context().clone());
             sweep_started = true;
         }
-        let done = settled && (!sweep || (sweep_started && !app.sweep_running()));
+        if let Then::Play(last) = then {
+            if settled && !app.is_playing() && app.motion_frame() == 0 {
+                app.play_motion(true);
+            } else if app.is_playing() && app.motion_frame() >= last {
+                app.play_motion(false);
+            }
+        }
+        let played = match then {
+            Then::Play(last) => !app.is_playing() && app.motion_frame() >= last,
+            _ => true,
+        };
+        let done = settled && played && (!sweep || (sweep_started && !app.sweep_running()));
         if done {
             break;
         }

@@ -20,6 +20,9 @@ pub const DEFAULT_TEXT: &str = "Hamburgefonstiv\n\
     0123456789 (a+b)/c = 3.5% {x|y} @&$#\n\
     Waltz, nymph, for quick jigs vex Bud.";
 
+/// The path offered first: 1/16 px a frame along x, between any atlas's phases.
+pub const DEFAULT_MOTION_PATH: &str = "drift:0.0625,0";
+
 /// Panes there are room for; the layout shows the first 1, 2 or 4.
 pub const PANES: usize = 4;
 
@@ -42,6 +45,8 @@ pub struct Settings {
     pub difference_scale: f32,
     /// Draw every frame (for live GPU time) rather than only when something changed.
     pub continuous: bool,
+    /// The camera's path when text is set in motion (`crate::motion`'s grammar).
+    pub motion_path: String,
 }
 
 impl Default for Settings {
@@ -71,6 +76,7 @@ impl Default for Settings {
             darkening: Darkening::Off,
             difference_scale: 0.5,
             continuous: false,
+            motion_path: DEFAULT_MOTION_PATH.into(),
         }
     }
 }

@@ -66,6 +66,12 @@ pub enum Action {
     /// has it.
     ToggleErrorOverlays,
     ToggleContinuous,
+    /// Text in motion: play or pause the path.
+    PlayPause,
+    /// One frame of the path on (true) or back.
+    StepFrame(bool),
+    /// Back to frame 0 of the path.
+    Rewind,
     ToggleSweep,
     OpenFont,
     Screenshot,
@@ -146,6 +152,12 @@ pub const SHORTCUTS: &[Shortcut] = &[
     keyed("C", "draw continuously (live GPU time)", &[
         bind(&[key(Key::C)], Action::ToggleContinuous),
     ]),
+    keyed("Space", "play / pause the motion path", &[bind(&[key(Key::Space)], Action::PlayPause)]),
+    keyed("J / L", "one frame of the motion back / on", &[
+        bind(&[key(Key::J)], Action::StepFrame(false)),
+        bind(&[key(Key::L)], Action::StepFrame(true)),
+    ]),
+    keyed("Home", "back to frame 0 of the motion", &[bind(&[key(Key::Home)], Action::Rewind)]),
     keyed("P", "speed-vs-error plot", &[bind(&[key(Key::P)], Action::ToggleSweep)]),
     keyed("Ctrl+O", "open a font file", &[
         bind(&[KeyboardShortcut::new(Modifiers::COMMAND, Key::O)], Action::OpenFont),
@@ -255,6 +267,7 @@ impl Explorer {
                 }
             }
             Action::ToggleContinuous => self.settings.continuous ^= true,
+            Action::PlayPause | Action::StepFrame(_) | Action::Rewind => self.transport(action),
             Action::ToggleSweep => self.sweep.open ^= true,
             Action::OpenFont => self.font_dialog.open = true,
             Action::Screenshot => self.screenshot(ctx),
@@ -294,7 +307,7 @@ mod tests {
     /// number past `KINDS` fails the test.
     #[test]
     fn every_action_is_bound_in_exactly_one_row() {
-        const KINDS: usize = 19;
+        const KINDS: usize = 22;
         let kind = |action: Action| match action {
             Action::Pan(_) => 0,
             Action::Zoom(_) => 1,
@@ -315,6 +328,9 @@ mod tests {
             Action::StepArtifact(_) => 16,
             Action::Blink => 17,
             Action::ToggleAutoBlink => 18,
+            Action::PlayPause => 19,
+            Action::StepFrame(_) => 20,
+            Action::Rewind => 21,
         };
         let mut rows: [Vec<&str>; KINDS] = Default::default();
         for shortcut in SHORTCUTS {

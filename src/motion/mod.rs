@@ -28,7 +28,7 @@ pub enum Motion {
     /// Moves the text by (dx, dy) image pixels per frame (y down).
     Drift(DVec2),
     /// Turns the text counter-clockwise as seen by this many degrees per frame, about an
-    /// image point (None: the centre of the image, of the frame for a window).
+    /// image point (None: the centre of the image; for a window, both are the frame's).
     Rotate { deg: f64, about: Option<DVec2> },
     /// Multiplies the size by this factor per frame, about the image's centre.
     Zoom(f64),
@@ -92,7 +92,8 @@ impl MotionPath {
             let (l, t) = match *motion {
                 Motion::Drift(step) => (DMat2::IDENTITY, n * step),
                 Motion::Rotate { deg, about } => {
-                    about_point(turn_in_image(n * deg), about.unwrap_or(centre))
+                    let about = about.map_or(centre, |p| p - frame_offset(base));
+                    about_point(turn_in_image(n * deg), about)
                 }
                 Motion::Zoom(factor) => {
                     about_point(DMat2::from_diagonal(DVec2::splat(factor.powf(n))), centre)
@@ -135,6 +136,12 @@ fn image_centre(camera: &Camera) -> DVec2 {
         Some(c) => DVec2::new(f64::from(c.frame_width), f64::from(c.frame_height)) * 0.5 - c.offset,
         None => DVec2::new(f64::from(camera.width), f64::from(camera.height)) * 0.5,
     }
+}
+
+/// Where a window's pixel (0, 0) lies in its frame (none for a whole frame): a point
+/// given in the frame's pixels is that much less in the window's.
+fn frame_offset(camera: &Camera) -> DVec2 {
+    camera.crop.map_or(DVec2::ZERO, |c| c.offset)
 }
 
 /// A counter-clockwise turn as seen, in image coordinates (y down).
@@ -380,6 +387,26 @@ mod tests {
         let p = DVec2::new(10.0, 20.0);
         let expected = -(image_of(&both, 0, p) + DVec2::new(1.0, 0.0));
         assert!((image_of(&both, 1, p) - expected).length() < 1e-9);
+    }
+
+    /// A window of a frame moves as the frame does: every motion acts on the frame's
+    /// pixels, about the frame's centre or point.
+    #[test]
+    fn a_window_moves_with_its_frame() {
+        let mut frame = base();
+        frame.tilt_deg = 20.0;
+        let path = MotionPath::parse("drift:0.3,0.1+rotate:2@40,30+zoom:1.02+sway:5,8").unwrap();
+        let p = DVec2::new(321.0, 123.0);
+        for n in [1, 4] {
+            let whole = path.camera_at(&frame, n);
+            let window = path.camera_at(&frame.window(50, 20, 30, 40), n);
+            let in_frame = project(&whole.glyph_to_image(1000.0, DVec2::ZERO), p);
+            let in_window = project(&window.glyph_to_image(1000.0, DVec2::ZERO), p);
+            assert!(
+                (in_frame - DVec2::new(50.0, 20.0) - in_window).length() < 1e-9,
+                "frame {n}"
+            );
+        }
     }
 
     #[test]

@@ -1,0 +1,477 @@
+//! Text in motion: the shared camera moved along a path ([`crate::motion`]) frame by
+//! frame — play, pause, a step either way, back to frame 0 — in every pane at once,
+//! magnified or not. Each frame is analysed before the next is shown (the reference of
+//! what the panes show, magnified: only the window's pixels), so the strip charts hold
+//! one point per frame: each pane's error against the reference and its temporal
+//! error ([`crate::metrics::temporal`]); and the inspected pixel's coverage in every
+//! pane beside the reference's, frame by frame.
+
+use std::collections::BTreeMap;
+
+use eframe::egui;
+use egui_plot::{Legend, Line, Plot, PlotPoints};
+
+use super::Explorer;
+use super::panes::pane_letter;
+use super::settings::{CameraSettings, PaneSettings, PaneSource};
+use super::shortcuts::{Action, key_name};
+use crate::camera::Camera;
+use crate::magnify::Window;
+use crate::metrics::{ErrorStats, TemporalError};
+use crate::motion::{MotionPath, PATH_GRAMMAR};
+
+/// Frames the charts keep (the most recent).
+const KEPT_FRAMES: usize = 600;
+
+/// Paths the Motion controls offer ready-made, as the bench measures them.
+const PRESETS: &[(&str, &str)] = &[
+    ("drift along x, 1/16 px a frame", "drift:0.0625,0"),
+    (
+        "drift along 30°, 1/16 px a frame",
+        "drift:0.05412658773652741,-0.03125",
+    ),
+    ("rotate 0.25° a frame", "rotate:0.25"),
+    ("zoom in and out, 1× to 2×", "pulse:1,2,64"),
+    ("sway the tilt ±20°", "sway:20,64"),
+    ("drift and turn", "drift:0.0625,0+rotate:0.1"),
+];
+
+/// A pane's figures in one frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FramePoint {
+    /// Against the reference's frame, 1/255.
+    pub mae_255: f64,
+    /// Against the frame before (none for the first frame analysed, or after a jump).
+    pub temporal: Option<TemporalError>,
+}
+
+/// The inspected pixel in one frame: each visible pane's coverage (none for a pane
+/// without a capture) and the reference's.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PixelSample {
+    pub panes: Vec<Option<f32>>,
+    pub reference: f32,
+}
+
+/// The inspected pixel (in the panes' drawn pixels) and its samples by frame.
+pub type PixelHistory = ((u32, u32), Vec<(i64, PixelSample)>);
+
+/// What the charts are of: a change of any of it starts them afresh.
+#[derive(Clone, Debug, PartialEq)]
+struct ChartKey {
+    scene: u64,
+    camera: CameraSettings,
+    path: String,
+    panes: Vec<PaneSettings>,
+}
+
+#[derive(Default)]
+pub struct Playback {
+    /// The frame shown; 0 is the camera the controls set.
+    pub frame: i64,
+    pub playing: bool,
+    /// The frame was changed by the transport: analyse it at once, not after the view
+    /// has rested.
+    pub stepped: bool,
+    /// The charts' window is open.
+    pub charts_open: bool,
+    history: Vec<BTreeMap<i64, FramePoint>>,
+    /// The inspected pixel (in the panes' drawn pixels) and its samples.
+    pixel: Option<((u32, u32), BTreeMap<i64, PixelSample>)>,
+    chart_key: Option<ChartKey>,
+    /// Why playback stopped by itself.
+    pub stopped: Option<String>,
+}
+
+impl Playback {
+    /// The path of `text` and the frame, when the text is a path that moves.
+    pub fn motion(&self, text: &str) -> Option<(MotionPath, i64)> {
+        MotionPath::parse(text)
+            .ok()
+            .filter(|p| !p.is_still())
+            .map(|p| (p, self.frame))
+    }
+
+    /// Pane `index`'s points, by frame.
+    pub fn history(&self, index: usize) -> Vec<(i64, FramePoint)> {
+        self.history
+            .get(index)
+            .map(|h| h.iter().map(|(&n, &p)| (n, p)).collect())
+            .unwrap_or_default()
+    }
+
+    /// The inspected pixel and its samples, by frame.
+    pub fn pixel_history(&self) -> Option<PixelHistory> {
+        let (pixel, samples) = self.pixel.as_ref()?;
+        Some((
+            *pixel,
+            samples.iter().map(|(&n, s)| (n, s.clone())).collect(),
+        ))
+    }
+
+    fn step(&mut self, by: i64) {
+        self.frame += by;
+        self.stepped = true;
+        self.stopped = None;
+    }
+
+    fn clear(&mut self) {
+        self.history.clear();
+        self.pixel = None;
+    }
+}
+
+/// "A atlas": the pane's letter and what it shows.
+fn pane_label(source: &PaneSource, index: usize) -> String {
+    match source {
+        PaneSource::Method { name, .. } => format!("{} {name}", pane_letter(index)),
+        PaneSource::Difference { .. } => format!("{} difference", pane_letter(index)),
+    }
+}
+
+/// Keeps the most recent [`KEPT_FRAMES`] of a chart.
+fn trim<T>(map: &mut BTreeMap<i64, T>) {
+    while map.len() > KEPT_FRAMES {
+        map.pop_first();
+    }
+}
+
+impl Explorer {
+    /// The camera the panes share at the frame shown, and the magnifier's window.
+    pub fn pane_camera_now(&self, width: u32, height: u32) -> (Camera, Window) {
+        let motion = self.playback.motion(&self.settings.motion_path);
+        self.settings
+            .camera
+            .pane_camera_moved(width, height, motion.as_ref().map(|(p, n)| (p, *n)))
+    }
+
+    /// The frame shown.
+    pub fn motion_frame(&self) -> i64 {
+        self.playback.frame
+    }
+
+    pub fn is_playing(&self) -> bool {
+        self.playback.playing
+    }
+
+    /// Plays or pauses the motion, as Space does; with the charts' window open.
+    pub fn play_motion(&mut self, playing: bool) {
+        self.playback.playing = playing;
+        self.playback.stopped = None;
+        self.playback.charts_open = true;
+    }
+
+    /// Pane `index`'s strip chart: error and temporal error by frame.
+    pub fn motion_history(&self, index: usize) -> Vec<(i64, FramePoint)> {
+        self.playback.history(index)
+    }
+
+    /// The inspected pixel's coverage by frame, in every pane and the reference.
+    pub fn motion_pixel_history(&self) -> Option<PixelHistory> {
+        self.playback.pixel_history()
+    }
+
+    pub(super) fn transport(&mut self, action: Action) {
+        let playback = &mut self.playback;
+        match action {
+            Action::PlayPause => {
+                playback.playing ^= true;
+                playback.stopped = None;
+                // Playing shows what it measures.
+                playback.charts_open |= playback.playing;
+            }
+            Action::StepFrame(forward) => {
+                playback.playing = false;
+                playback.step(if forward { 1 } else { -1 });
+            }
+            Action::Rewind => {
+                playback.playing = false;
+                playback.step(-playback.frame);
+                playback.clear();
+            }
+            _ => {}
+        }
+    }
+
+    /// Once a frame: starts the charts afresh when what they are of changed, and while
+    /// playing, shows the next frame once this one has been analysed.
+    pub(super) fn tick_playback(&mut self, ctx: &egui::Context) {
+        let visible = self.settings.layout.panes();
+        let key = ChartKey {
+            scene: self.scene.generation(),
+            camera: self.settings.camera,
+            path: self.settings.motion_path.clone(),
+            panes: self.settings.panes[..visible].to_vec(),
+        };
+        if self.playback.chart_key.as_ref() != Some(&key) {
+            self.playback.clear();
+            self.playback.chart_key = Some(key);
+        }
+        if !self.playback.playing {
+            return;
+        }
+        if self.playback.motion(&self.settings.motion_path).is_none() {
+            self.playback.playing = false;
+            self.playback.stopped = Some("the path does not move: set one to play".into());
+            return;
+        }
+        if !self.view_settled() {
+            ctx.request_repaint();
+            return;
+        }
+        let Some((w, h)) = self.canvas.pane_size else {
+            return;
+        };
+        self.playback.step(1);
+        let (camera, _) = self.pane_camera_now(w, h);
+        if let Err(e) = camera.validate() {
+            self.playback.step(-1);
+            self.playback.playing = false;
+            self.playback.stopped =
+                Some(format!("stopped at frame {}: {e}", self.playback.frame + 1));
+        }
+        ctx.request_repaint();
+    }
+
+    /// Takes in the analysis of a frame of the motion: each pane's point, and the
+    /// inspected pixel.
+    pub(super) fn record_motion_frame(
+        &mut self,
+        frame: i64,
+        errors: &[(usize, ErrorStats)],
+        temporal: &[(usize, TemporalError)],
+    ) {
+        let visible = self.settings.layout.panes();
+        let playback = &mut self.playback;
+        playback.history.resize_with(visible, BTreeMap::new);
+        for &(pane, stats) in errors {
+            let Some(history) = playback.history.get_mut(pane) else {
+                continue;
+            };
+            let own = temporal.iter().find(|(p, _)| *p == pane).map(|(_, t)| *t);
+            // Stepping back onto a frame keeps the temporal error worked out on the way
+            // forward.
+            let kept = history.get(&frame).and_then(|p| p.temporal);
+            history.insert(
+                frame,
+                FramePoint {
+                    mae_255: stats.mae_255,
+                    temporal: own.or(kept),
+                },
+            );
+            trim(history);
+        }
+        let Some(reference) = self.reference_image() else {
+            return;
+        };
+        let pixel = match self.canvas.hovered {
+            Some((_, x, y)) => (x, y),
+            None => {
+                let Some(window) = self.canvas.window else {
+                    return;
+                };
+                let focus = if window.factor > 1 {
+                    (window.focus.0 - window.x0, window.focus.1 - window.y0)
+                } else {
+                    window.focus
+                };
+                (
+                    focus.0.min(reference.width - 1),
+                    focus.1.min(reference.height - 1),
+                )
+            }
+        };
+        if pixel.0 >= reference.width || pixel.1 >= reference.height {
+            return;
+        }
+        let panes = (0..visible)
+            .map(|i| {
+                self.pane_capture(i)
+                    .map(|image| image.get(pixel.0, pixel.1))
+            })
+            .collect();
+        let sample = PixelSample {
+            panes,
+            reference: reference.get(pixel.0, pixel.1),
+        };
+        let playback = &mut self.playback;
+        if playback.pixel.as_ref().is_none_or(|(p, _)| *p != pixel) {
+            playback.pixel = Some((pixel, BTreeMap::new()));
+        }
+        if let Some((_, samples)) = &mut playback.pixel {
+            samples.insert(frame, sample);
+            trim(samples);
+        }
+    }
+
+    /// The side panel's Motion section: the path, the transport and the charts' button.
+    pub(super) fn motion_controls(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal(|ui| {
+            ui.label("Path");
+            ui.add(
+                egui::TextEdit::singleline(&mut self.settings.motion_path)
+                    .desired_width(170.0)
+                    .font(egui::TextStyle::Monospace),
+            )
+            .on_hover_text(format!("Per frame: {PATH_GRAMMAR}"));
+            ui.menu_button("Presets", |ui| {
+                for (label, path) in PRESETS {
+                    if ui
+                        .selectable_label(self.settings.motion_path == *path, *label)
+                        .clicked()
+                    {
+                        self.settings.motion_path = (*path).into();
+                        ui.close();
+                    }
+                }
+            });
+        });
+        if let Err(e) = MotionPath::parse(&self.settings.motion_path) {
+            ui.colored_label(ui.visuals().error_fg_color, e.to_string());
+        }
+        ui.horizontal(|ui| {
+            let hint = |action| key_name(action);
+            if ui
+                .button("To 0")
+                .on_hover_text(format!("back to frame 0 ({})", hint(Action::Rewind)))
+                .clicked()
+            {
+                self.transport(Action::Rewind);
+            }
+            if ui
+                .button("Back")
+                .on_hover_text(format!(
+                    "one frame back ({})",
+                    hint(Action::StepFrame(false))
+                ))
+                .clicked()
+            {
+                self.transport(Action::StepFrame(false));
+            }
+            let play = if self.playback.playing {
+                "Pause"
+            } else {
+                "Play"
+            };
+            if ui
+                .button(play)
+                .on_hover_text(hint(Action::PlayPause))
+                .clicked()
+            {
+                self.transport(Action::PlayPause);
+            }
+            if ui
+                .button("Step")
+                .on_hover_text(format!("one frame on ({})", hint(Action::StepFrame(true))))
+                .clicked()
+            {
+                self.transport(Action::StepFrame(true));
+            }
+            ui.label(format!("frame {}", self.playback.frame));
+            if ui.button("Charts…").clicked() {
+                self.playback.charts_open = true;
+            }
+        });
+        if let Some(why) = &self.playback.stopped {
+            ui.colored_label(ui.visuals().warn_fg_color, why);
+        } else if self.playback.playing {
+            let note = match self.reference.cpu_ms {
+                Some(ms) => format!(
+                    "each frame waits for its reference ({ms:.0} ms on the CPU){}",
+                    if self.settings.camera.magnify > 1 {
+                        ""
+                    } else {
+                        ": magnify (M) to draw only the window's"
+                    }
+                ),
+                None => "each frame waits for its reference".into(),
+            };
+            ui.weak(note);
+        }
+    }
+
+    /// The Motion window: a strip chart per pane, and the inspected pixel by frame.
+    pub(super) fn motion_window(&mut self, ctx: &egui::Context) {
+        let mut open = self.playback.charts_open;
+        egui::Window::new("Motion")
+            .open(&mut open)
+            // Low on the screen: the panes' text is usually in their upper half.
+            .default_pos([410.0, 420.0])
+            .default_size([560.0, 420.0])
+            .show(ctx, |ui| {
+                ui.weak(
+                    "Per frame: each pane's mean error against the reference, and its temporal \
+                     error, |Δm − Δr| — what it changes between frames that the reference does \
+                     not (shimmer), mean over the pane, in 1/255.",
+                );
+                let visible = self.settings.layout.panes();
+                for index in 0..visible {
+                    if matches!(
+                        self.settings.panes[index].source,
+                        PaneSource::Difference { .. }
+                    ) {
+                        continue;
+                    }
+                    ui.label(pane_label(&self.settings.panes[index].source, index));
+                    let history = self.playback.history(index);
+                    let error: PlotPoints = history
+                        .iter()
+                        .map(|(n, p)| [*n as f64, p.mae_255])
+                        .collect();
+                    let temporal: PlotPoints = history
+                        .iter()
+                        .filter_map(|(n, p)| p.temporal.map(|t| [*n as f64, t.mae_255]))
+                        .collect();
+                    Plot::new(("motion", index))
+                        .height(100.0)
+                        .legend(Legend::default())
+                        .x_axis_label("frame")
+                        .show(ui, |plot| {
+                            plot.line(Line::new("error", error));
+                            plot.line(Line::new("temporal", temporal));
+                        });
+                }
+                if let Some(((x, y), samples)) = self.playback.pixel_history() {
+                    ui.label(format!(
+                        "pixel ({x}, {y}): coverage by frame ({})",
+                        if self.canvas.hovered.is_some() {
+                            "under the pointer"
+                        } else {
+                            "the magnifier's focus; point at a pane for another"
+                        }
+                    ));
+                    Plot::new("motion pixel")
+                        .height(120.0)
+                        .legend(Legend::default())
+                        .x_axis_label("frame")
+                        .show(ui, |plot| {
+                            for index in 0..visible {
+                                let points: PlotPoints = samples
+                                    .iter()
+                                    .filter_map(|(n, s)| {
+                                        s.panes
+                                            .get(index)
+                                            .copied()
+                                            .flatten()
+                                            .map(|v| [*n as f64, f64::from(v)])
+                                    })
+                                    .collect();
+                                plot.line(Line::new(
+                                    pane_label(&self.settings.panes[index].source, index),
+                                    points,
+                                ));
+                            }
+                            let reference: PlotPoints = samples
+                                .iter()
+                                .map(|(n, s)| [*n as f64, f64::from(s.reference)])
+                                .collect();
+                            plot.line(
+                                Line::new("reference", reference)
+                                    .style(egui_plot::LineStyle::dashed_dense()),
+                            );
+                        });
+                }
+            });
+        self.playback.charts_open = open;
+    }
+}
