@@ -531,13 +531,37 @@ pub fn run_stability(args: &StabilityArgs) -> Result<bool, Error> {
         stability::sweep::run(&gpu, &cases, &variants, &size, |case| eprintln!("  {case}"))?;
     print!("{}", stability::long_table(&outcomes));
     print!("\n{}", stability::margin_table(&outcomes));
+    let motion_frames = if args.quick {
+        stability::temporal::QUICK_FRAMES
+    } else {
+        stability::temporal::FRAMES
+    };
+    eprintln!(
+        "in motion: {} frames of {}",
+        motion_frames,
+        stability::temporal::PATH
+    );
+    let in_motion = stability::temporal::run(&gpu, &cases, &variants, motion_frames, |case| {
+        eprintln!("  {case}")
+    })?;
+    print!(
+        "\n{}",
+        stability::temporal::table(&in_motion, motion_frames)
+    );
     if let Some(dir) = &args.out {
         // Only the full sweep of every case and method finds the worst cameras.
         let full = !args.quick && args.cases.is_none() && args.methods.is_none();
         let device = gpu.adapter_name();
-        stability::write_report(dir, &outcomes, full.then_some(device.as_str()))?;
+        stability::write_report(
+            dir,
+            &outcomes,
+            &in_motion,
+            motion_frames,
+            full.then_some(device.as_str()),
+        )?;
     }
-    let broken = stability::broken_claims(&outcomes);
+    let mut broken = stability::broken_claims(&outcomes);
+    broken.extend(stability::temporal::broken_claims(&in_motion));
     for line in &broken {
         eprintln!("claim broken: {line}");
     }

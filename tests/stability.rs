@@ -243,3 +243,79 @@ fn every_setting_claims_a_bound_where_it_is_meant_to_work() {
         assert!(bound.max < 1.0 && bound.mae_255 > 0.0, "{}", variant.label);
     }
 }
+
+/// The hard cases in motion, every method through the drift, each held to its temporal
+/// claim where it makes one (winding's default), the others shown.
+#[test]
+fn every_temporal_claim_holds_on_every_hard_case() {
+    let cases = hard_cases::all();
+    let variants = claims::variants();
+    let frames = stability::temporal::QUICK_FRAMES;
+    let outcomes =
+        stability::temporal::run(common::gpu(), &cases, &variants, frames, |_| {}).unwrap();
+    println!("{}", stability::temporal::table(&outcomes, frames));
+    assert_eq!(outcomes.len(), cases.len() * variants.len());
+    for o in &outcomes {
+        assert!(
+            o.failure.is_none(),
+            "{} × {}: {:?}",
+            o.case,
+            o.variant,
+            o.failure
+        );
+        if o.refused.is_none() {
+            assert_eq!(o.pairs, frames - 1, "{} × {}", o.case, o.variant);
+            assert!(
+                o.mae_255.is_finite() && o.max.is_finite(),
+                "{} × {}",
+                o.case,
+                o.variant
+            );
+        }
+    }
+    assert!(
+        outcomes.iter().any(|o| o.bound.is_some()),
+        "no temporal claim was checked"
+    );
+    let broken = stability::temporal::broken_claims(&outcomes);
+    assert!(
+        broken.is_empty(),
+        "temporal claims broken:\n{}",
+        broken.join("\n")
+    );
+}
+
+/// A temporal claim can fail: the reference rounded to 0 or 1 frame by frame (a method
+/// that snaps each pixel) breaks winding's on a drifting case, as NaN does.
+#[test]
+fn a_temporal_claim_rejects_snapping_and_nan() {
+    let case = hard_cases::by_name("latin-modern-cubics").unwrap();
+    let variant = claims::variants()
+        .into_iter()
+        .find(|v| v.claim.temporal.is_some())
+        .expect("a method claims a temporal bound");
+    let bound = variant.claim.temporal.unwrap();
+    let path = glyphscope::motion::MotionPath::parse(stability::temporal::PATH).unwrap();
+    let base = case.camera(0.0, DVec2::ZERO).unwrap();
+    let frames: Vec<CoverageImage> = (0..4)
+        .map(|n| reference::rasterize(&case.scene, &path.camera_at(&base, n)).unwrap())
+        .collect();
+    let snap = |image: &CoverageImage| CoverageImage {
+        data: image.data.iter().map(|v| v.round()).collect(),
+        ..image.clone()
+    };
+    let mut snapped_breaks = false;
+    for pair in frames.windows(2) {
+        let t =
+            metrics::temporal([&snap(&pair[0]), &snap(&pair[1])], [&pair[0], &pair[1]]).unwrap();
+        snapped_breaks |= !bound.holds(t.max, t.mae_255);
+        let mut nan = pair[1].clone();
+        nan.data[0] = f32::NAN;
+        let t = metrics::temporal([&pair[0], &nan], [&pair[0], &pair[1]]).unwrap();
+        assert!(
+            !bound.holds(t.max, t.mae_255),
+            "NaN kept the temporal claim"
+        );
+    }
+    assert!(snapped_breaks, "snapped coverage kept the temporal claim");
+}

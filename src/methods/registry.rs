@@ -106,6 +106,11 @@ pub struct Claim {
     pub except: &'static [Trait],
     /// The looser bound that still holds on the limitations (None: none does).
     pub limitation: Option<Bound>,
+    /// Outside the limitations, a bound on the temporal error (see
+    /// [`crate::metrics::temporal`]) as each case drifts 1/16 px a frame
+    /// (`stability::temporal`): its largest and its mean over the frame pairs, 1/255.
+    /// None: the method claims nothing about motion; its figures are still shown.
+    pub temporal: Option<Bound>,
     /// The claim, and its limitations, in the words of the method's page in docs/methods/.
     pub statement: &'static str,
 }

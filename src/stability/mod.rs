@@ -1,10 +1,12 @@
 //! Numerical stability: the named hard cases ([`hard_cases`]), what each method claims
-//! ([`claims`]), the sweep that measures them against the reference ([`sweep`]), and
-//! the report `glyphscope stability` prints and writes.
+//! ([`claims`]), the sweep that measures them against the reference ([`sweep`]), the
+//! same cases in motion ([`temporal`]), and the report `glyphscope stability` prints
+//! and writes.
 
 pub mod claims;
 pub mod hard_cases;
 pub mod sweep;
+pub mod temporal;
 pub mod worst_cameras;
 
 use std::fmt::Write as _;
@@ -254,6 +256,8 @@ pub fn margin_table(outcomes: &[Outcome]) -> String {
 pub fn write_report(
     dir: &Path,
     outcomes: &[Outcome],
+    in_motion: &[temporal::TemporalOutcome],
+    motion_frames: usize,
     full_sweep_device: Option<&str>,
 ) -> Result<(), Error> {
     let output = |path: &Path, e: &dyn std::fmt::Display| {
@@ -273,10 +277,11 @@ pub fn write_report(
     }
     let markdown = format!(
         "MAE /255 (mean over frames) · max · artifact pixels (> 0.5, summed over frames); \
-         * limitation, ! broken claim\n\n{}\n{}\n{}",
+         * limitation, ! broken claim\n\n{}\n{}\n{}\n{}",
         matrix_table(outcomes),
         margin_table(outcomes),
-        long_table(outcomes)
+        long_table(outcomes),
+        temporal::table(in_motion, motion_frames)
     );
     let path = dir.join("stability.md");
     std::fs::write(&path, markdown).map_err(|e| output(&path, &e))?;
@@ -286,7 +291,11 @@ pub fn write_report(
         std::fs::write(&path, csv).map_err(|e| output(&path, &e))?;
     }
     let path = dir.join("stability.json");
-    let json = serde_json::to_string_pretty(outcomes).expect("outcomes serialize");
+    let json = serde_json::to_string_pretty(&serde_json::json!({
+        "outcomes": outcomes,
+        "in_motion": in_motion,
+    }))
+    .expect("outcomes serialize");
     std::fs::write(&path, json + "\n").map_err(|e| output(&path, &e))?;
     Ok(())
 }

@@ -41,6 +41,7 @@ pub const fn observed(label: &'static str) -> ClaimedSetting {
             bound: None,
             except: &[],
             limitation: None,
+            temporal: None,
             statement: "observed: a peer, measured as it is; glyphscope claims nothing of it",
         },
     }

@@ -70,6 +70,7 @@ pub const INFO: MethodInfo = MethodInfo {
                 ],
                 // Cracks read a covered pixel as empty: no bound.
                 limitation: None,
+                temporal: None,
                 statement: "estimate (font-demo's): no pixel off by more than 0.65 on \
                             text whose contours neither overlap nor touch, an edge to a \
                             pixel; cracks along overlaps and touching contours",
@@ -86,6 +87,7 @@ pub const INFO: MethodInfo = MethodInfo {
                 // Last measured, by the same sweep: max 0.620 (glyphs-2px), MAE
                 // 66.01/255 (winding-256).
                 limitation: Some(within(0.8, 85.0)),
+                temporal: None,
                 statement: "no pixel off by more than 0.65 on outlines without overlapping \
                             contours; one edge per pixel, so detail under a pixel (a contour \
                             or several edges inside one) reads up to 0.5 + w/2",

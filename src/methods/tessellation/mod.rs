@@ -73,6 +73,7 @@ pub const INFO: MethodInfo = MethodInfo {
             except: &[Trait::SubpixelDetail],
             // Last measured, by the same sweep: max 0.692, MAE 4.58/255 (glyphs-2px).
             limitation: Some(within(0.9, 6.0)),
+            temporal: None,
             statement: "screen-space subdivision with 4x MSAA: no pixel off by more than \
                         0.6; four point samples cannot resolve several edges inside one pixel",
         },

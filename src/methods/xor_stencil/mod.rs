@@ -97,6 +97,7 @@ pub const INFO: MethodInfo = MethodInfo {
             except: &[Trait::DeepWinding],
             // A wrapped counter reads a covered pixel as empty: no bound.
             limitation: None,
+            temporal: None,
             statement: "within half a level of the reference with four or more samples; \
                         8-bit counters read a winding of 256 as 0",
         },
