@@ -137,9 +137,9 @@ pub struct MotionArgs {
     /// rotate:DEG@X,Y (counter-clockwise, about the image centre or pixel X,Y), zoom:F,
     /// pulse:LOW,HIGH,PERIOD (size between LOW and HIGH times the base), sway:DEG,PERIOD
     /// (tilt ±DEG), joined by '+'.
-    #[arg(long, default_value = "drift:0.0625,0", allow_hyphen_values = true)]
+    #[arg(long, default_value = crate::motion::DRIFT_X, allow_hyphen_values = true)]
     pub path: String,
-    /// Frames drawn (the first is the view itself).
+    /// Frames drawn (the first is the view itself, at a pulse's LOW size).
     #[arg(long, default_value_t = 32, value_parser = clap::value_parser!(u32).range(2..=100_000))]
     pub frames: u32,
     /// Methods, comma-separated, each NAME or NAME:KEY=VALUE:KEY=VALUE (e.g.
@@ -157,8 +157,9 @@ pub struct MotionArgs {
     /// panel at the default 12.
     #[arg(long, default_value_t = 12, value_parser = clap::value_parser!(u32).range(2..=i64::from(magnify::MAX_FACTOR)))]
     pub magnify: u32,
-    /// The pixel the animated picture is centred on: `worst` (the largest temporal
-    /// error of the first animated method, summed over the run; the default) or X,Y.
+    /// The pixel the animated picture is centred on: `worst` (where the first animated
+    /// method's largest change beyond the reference's in the run is; the default) or
+    /// X,Y.
     #[arg(long)]
     pub focus: Option<Focus>,
     /// Folder for motion.csv, motion.md, motion.json, temporal.svg and motion.png.
@@ -396,6 +397,13 @@ pub fn run_motion(args: &MotionArgs) -> Result<(), Error> {
         Some(name) => crate::named_views::build(name)?,
         None => args.view.build()?,
     };
+    // A pixel outside the frame is bad input: said before anything is measured.
+    let chosen_focus = match args.focus {
+        Some(Focus::Pixel(x, y)) => {
+            Some(Focus::Pixel(x, y).pixel(camera.width, camera.height, None)?)
+        }
+        _ => None,
+    };
     let needs_gpu = specs.iter().any(|s| s.name != registry::REFERENCE.name);
     let gpu = needs_gpu.then(GpuContext::new).transpose()?;
     let frames = args.frames as usize;
@@ -424,17 +432,17 @@ pub fn run_motion(args: &MotionArgs) -> Result<(), Error> {
             panel.min(camera.width),
             (192 / args.magnify).min(camera.height),
         );
-        let focus = match args.focus {
-            Some(Focus::Pixel(x, y)) => {
-                Focus::Pixel(x, y).pixel(camera.width, camera.height, None)?
-            }
-            _ => result.methods[first]
+        // The pixel of the largest change of the run (the worst pair's worst pixel);
+        // the frame's centre when the method changed nothing the reference did not.
+        let focus = chosen_focus.unwrap_or_else(|| {
+            result.methods[first]
                 .frames
                 .iter()
                 .filter_map(|f| f.temporal.map(|t| (t.max, t.worst_pixel)))
+                .filter(|(max, _)| *max > 0.0)
                 .max_by(|a, b| a.0.total_cmp(&b.0))
-                .map_or((camera.width / 2, camera.height / 2), |w| w.1),
-        };
+                .map_or((camera.width / 2, camera.height / 2), |w| w.1)
+        });
         let x0 = focus.0.saturating_sub(cols / 2).min(camera.width - cols);
         let y0 = focus.1.saturating_sub(rows / 2).min(camera.height - rows);
         let draw = |spec: &run::MethodSpec| {
@@ -545,8 +553,9 @@ pub fn run_stability(args: &StabilityArgs) -> Result<bool, Error> {
         eprintln!("  {case}")
     })?;
     print!(
-        "\n{}",
-        stability::temporal::table(&in_motion, motion_frames)
+        "\n{}\n{}",
+        stability::temporal::table(&in_motion, motion_frames),
+        stability::temporal::summary_table(&in_motion)
     );
     if let Some(dir) = &args.out {
         // Only the full sweep of every case and method finds the worst cameras.

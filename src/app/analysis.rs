@@ -14,6 +14,7 @@ use eframe::egui;
 
 use super::Explorer;
 use super::gpu_view::{self, ReferenceTexture, lock};
+use super::settings::CameraSettings;
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
 use crate::gpu::GpuContext;
@@ -37,8 +38,17 @@ pub struct Request {
     /// whose method has since been remade is not that method's.
     pub pane_generations: Vec<u64>,
     /// The frame of the motion path shown, when text is in motion: a frame that follows
-    /// the one analysed before gets each pane's temporal error.
-    pub motion_frame: Option<i64>,
+    /// the one analysed before, of the same motion, gets each pane's temporal error.
+    pub motion_frame: Option<(i64, MotionKey)>,
+}
+
+/// What makes consecutive frames one motion: the path, the camera it starts from and
+/// the pane it is drawn in. A frame after any change of these is a new start.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MotionKey {
+    pub path: String,
+    pub camera: CameraSettings,
+    pub pane: (u32, u32),
 }
 
 /// (pane, method, parameters).
@@ -65,6 +75,7 @@ pub struct Outcome {
 /// against.
 struct PreviousFrame {
     frame: i64,
+    motion: MotionKey,
     scene_generation: u64,
     reference: Arc<CoverageImage>,
     /// (pane, its surface generation, its capture).
@@ -252,27 +263,29 @@ fn analyse(request: &Request, last: &mut Option<(u64, Camera, Arc<CoverageImage>
         curves: Vec::new(),
         temporal: Vec::new(),
         pane_generations: request.pane_generations.clone(),
-        motion_frame: request.motion_frame,
+        motion_frame: request.motion_frame.as_ref().map(|(n, _)| *n),
     }
 }
 
 /// Each pane's temporal error from the frame before, when this request is the next
-/// frame of the same motion (same scene, same method in the pane, same size); keeps
-/// this frame for the next.
+/// frame of the same motion (same path, starting camera, pane size and scene, and the
+/// same method in the pane); keeps this frame for the next.
 fn temporal(
     request: &Request,
     outcome: &Outcome,
     previous: &mut Option<PreviousFrame>,
 ) -> Vec<(usize, TemporalError)> {
-    let (Some(frame), Ok(reference)) = (request.motion_frame, &outcome.reference) else {
+    let (Some((frame, motion)), Ok(reference)) = (&request.motion_frame, &outcome.reference) else {
         *previous = None;
         return Vec::new();
     };
     let mut changes = Vec::new();
-    if let Some(before) = previous
-        .as_ref()
-        .filter(|p| p.frame + 1 == frame && p.scene_generation == request.scene_generation)
-    {
+    if let Some(before) = previous.as_ref().filter(|p| {
+        p.frame + 1 == *frame
+            && p.motion == *motion
+            && p.scene_generation == request.scene_generation
+            && (p.reference.width, p.reference.height) == (reference.width, reference.height)
+    }) {
         for (pane, image) in &request.captures {
             let earlier = before.captures.iter().find(|(p, generation, _)| {
                 p == pane && *generation == request.pane_generations[*pane]
@@ -286,7 +299,8 @@ fn temporal(
         }
     }
     *previous = Some(PreviousFrame {
-        frame,
+        frame: *frame,
+        motion: motion.clone(),
         scene_generation: request.scene_generation,
         reference: reference.clone(),
         captures: request

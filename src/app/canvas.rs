@@ -684,6 +684,8 @@ impl Explorer {
             self.canvas.changed_at = now;
         }
         if self.canvas.analysed.as_ref() == Some(&key) {
+            // A step that changed nothing (Home at frame 0) has nothing to analyse.
+            self.playback.stepped = false;
             return;
         }
         let waited = now - self.canvas.changed_at;
@@ -731,10 +733,7 @@ impl Explorer {
             captures,
             counts,
             pane_generations,
-            motion_frame: self
-                .playback
-                .motion(&self.settings.motion_path)
-                .map(|(_, n)| n),
+            motion_frame: self.motion_key().map(|key| (self.playback.frame, key)),
         });
         self.playback.stepped = false;
         self.canvas.analysed = Some(key);

@@ -12,25 +12,23 @@ use eframe::egui;
 use egui_plot::{Legend, Line, Plot, PlotPoints};
 
 use super::Explorer;
+use super::analysis::MotionKey;
 use super::panes::pane_letter;
-use super::settings::{CameraSettings, PaneSettings, PaneSource};
+use super::settings::{PaneSettings, PaneSource};
 use super::shortcuts::{Action, key_name};
 use crate::camera::Camera;
 use crate::magnify::Window;
 use crate::metrics::{ErrorStats, TemporalError};
-use crate::motion::{MotionPath, PATH_GRAMMAR};
+use crate::motion::{self, MotionPath, PATH_GRAMMAR};
 
-/// Frames the charts keep (the most recent).
+/// Frames the charts keep (those nearest the frame shown).
 const KEPT_FRAMES: usize = 600;
 
 /// Paths the Motion controls offer ready-made, as the bench measures them.
 const PRESETS: &[(&str, &str)] = &[
-    ("drift along x, 1/16 px a frame", "drift:0.0625,0"),
-    (
-        "drift along 30°, 1/16 px a frame",
-        "drift:0.05412658773652741,-0.03125",
-    ),
-    ("rotate 0.25° a frame", "rotate:0.25"),
+    ("drift along x, 1/16 px a frame", motion::DRIFT_X),
+    ("drift along 30°, 1/16 px a frame", motion::DRIFT_30),
+    ("rotate 0.25° a frame", motion::TURN),
     ("zoom in and out, 1× to 2×", "pulse:1,2,64"),
     ("sway the tilt ±20°", "sway:20,64"),
     ("drift and turn", "drift:0.0625,0+rotate:0.1"),
@@ -60,8 +58,7 @@ pub type PixelHistory = ((u32, u32), Vec<(i64, PixelSample)>);
 #[derive(Clone, Debug, PartialEq)]
 struct ChartKey {
     scene: u64,
-    camera: CameraSettings,
-    path: String,
+    motion: Option<MotionKey>,
     panes: Vec<PaneSettings>,
 }
 
@@ -121,18 +118,28 @@ impl Playback {
     }
 }
 
-/// "A atlas": the pane's letter and what it shows.
-fn pane_label(source: &PaneSource, index: usize) -> String {
+/// "A atlas": a pane's letter and its method; none for a difference pane, which has no
+/// coverage of its own to chart.
+fn pane_label(source: &PaneSource, index: usize) -> Option<String> {
     match source {
-        PaneSource::Method { name, .. } => format!("{} {name}", pane_letter(index)),
-        PaneSource::Difference { .. } => format!("{} difference", pane_letter(index)),
+        PaneSource::Method { name, .. } => Some(format!("{} {name}", pane_letter(index))),
+        PaneSource::Difference { .. } => None,
     }
 }
 
-/// Keeps the most recent [`KEPT_FRAMES`] of a chart.
-fn trim<T>(map: &mut BTreeMap<i64, T>) {
+/// Keeps the [`KEPT_FRAMES`] of a chart nearest the frame shown (stepping back drops
+/// the far end ahead, playing on the far end behind).
+fn trim<T>(map: &mut BTreeMap<i64, T>, frame: i64) {
     while map.len() > KEPT_FRAMES {
-        map.pop_first();
+        let (Some((&first, _)), Some((&last, _))) = (map.first_key_value(), map.last_key_value())
+        else {
+            return;
+        };
+        if frame - first >= last - frame {
+            map.pop_first();
+        } else {
+            map.pop_last();
+        }
     }
 }
 
@@ -143,6 +150,29 @@ impl Explorer {
         self.settings
             .camera
             .pane_camera_moved(width, height, motion.as_ref().map(|(p, n)| (p, *n)))
+    }
+
+    /// What makes the frames one motion, when the path moves and the panes are laid
+    /// out.
+    pub(super) fn motion_key(&self) -> Option<MotionKey> {
+        self.playback.motion(&self.settings.motion_path)?;
+        Some(MotionKey {
+            path: self.settings.motion_path.clone(),
+            camera: self.settings.camera,
+            pane: self.canvas.pane_size?,
+        })
+    }
+
+    /// Why frame `frame` cannot be drawn, if it cannot (a sway past the eye, a zoom
+    /// past the size range).
+    fn undrawable(&self, frame: i64) -> Option<String> {
+        let (path, _) = self.playback.motion(&self.settings.motion_path)?;
+        let (w, h) = self.canvas.pane_size?;
+        let camera = path.camera_at(&self.settings.camera.camera(w, h), frame);
+        camera
+            .validate()
+            .err()
+            .map(|e| format!("frame {frame} cannot be drawn: {e}"))
     }
 
     /// The frame shown.
@@ -172,6 +202,13 @@ impl Explorer {
     }
 
     pub(super) fn transport(&mut self, action: Action) {
+        let next = self.playback.frame
+            + if action == Action::StepFrame(false) {
+                -1
+            } else {
+                1
+            };
+        let undrawable = self.undrawable(next);
         let playback = &mut self.playback;
         match action {
             Action::PlayPause => {
@@ -179,6 +216,10 @@ impl Explorer {
                 playback.stopped = None;
                 // Playing shows what it measures.
                 playback.charts_open |= playback.playing;
+            }
+            Action::StepFrame(_) if undrawable.is_some() => {
+                playback.playing = false;
+                playback.stopped = undrawable;
             }
             Action::StepFrame(forward) => {
                 playback.playing = false;
@@ -199,8 +240,7 @@ impl Explorer {
         let visible = self.settings.layout.panes();
         let key = ChartKey {
             scene: self.scene.generation(),
-            camera: self.settings.camera,
-            path: self.settings.motion_path.clone(),
+            motion: self.motion_key(),
             panes: self.settings.panes[..visible].to_vec(),
         };
         if self.playback.chart_key.as_ref() != Some(&key) {
@@ -215,21 +255,25 @@ impl Explorer {
             self.playback.stopped = Some("the path does not move: set one to play".into());
             return;
         }
+        // A frame whose reference cannot be made would never settle: stop and say why.
+        if let Some(problem) = &self.reference.problem {
+            self.playback.playing = false;
+            self.playback.stopped = Some(format!(
+                "stopped at frame {}: {problem}",
+                self.playback.frame
+            ));
+            return;
+        }
         if !self.view_settled() {
             ctx.request_repaint();
             return;
         }
-        let Some((w, h)) = self.canvas.pane_size else {
-            return;
-        };
-        self.playback.step(1);
-        let (camera, _) = self.pane_camera_now(w, h);
-        if let Err(e) = camera.validate() {
-            self.playback.step(-1);
+        if let Some(why) = self.undrawable(self.playback.frame + 1) {
             self.playback.playing = false;
-            self.playback.stopped =
-                Some(format!("stopped at frame {}: {e}", self.playback.frame + 1));
+            self.playback.stopped = Some(why);
+            return;
         }
+        self.playback.step(1);
         ctx.request_repaint();
     }
 
@@ -259,7 +303,7 @@ impl Explorer {
                     temporal: own.or(kept),
                 },
             );
-            trim(history);
+            trim(history, frame);
         }
         let Some(reference) = self.reference_image() else {
             return;
@@ -300,7 +344,7 @@ impl Explorer {
         }
         if let Some((_, samples)) = &mut playback.pixel {
             samples.insert(frame, sample);
-            trim(samples);
+            trim(samples, frame);
         }
     }
 
@@ -406,13 +450,10 @@ impl Explorer {
                 );
                 let visible = self.settings.layout.panes();
                 for index in 0..visible {
-                    if matches!(
-                        self.settings.panes[index].source,
-                        PaneSource::Difference { .. }
-                    ) {
+                    let Some(label) = pane_label(&self.settings.panes[index].source, index) else {
                         continue;
-                    }
-                    ui.label(pane_label(&self.settings.panes[index].source, index));
+                    };
+                    ui.label(label);
                     let history = self.playback.history(index);
                     let error: PlotPoints = history
                         .iter()
@@ -432,6 +473,13 @@ impl Explorer {
                         });
                 }
                 if let Some(((x, y), samples)) = self.playback.pixel_history() {
+                    // Samples are of the drawn pixels: a magnified window's own; named
+                    // here by the pane's ×1 pixel.
+                    let (x, y) = self
+                        .canvas
+                        .window
+                        .filter(|w| w.factor > 1)
+                        .map_or((x, y), |w| (x + w.x0, y + w.y0));
                     ui.label(format!(
                         "pixel ({x}, {y}): coverage by frame ({})",
                         if self.canvas.hovered.is_some() {
@@ -446,6 +494,11 @@ impl Explorer {
                         .x_axis_label("frame")
                         .show(ui, |plot| {
                             for index in 0..visible {
+                                let Some(label) =
+                                    pane_label(&self.settings.panes[index].source, index)
+                                else {
+                                    continue;
+                                };
                                 let points: PlotPoints = samples
                                     .iter()
                                     .filter_map(|(n, s)| {
@@ -456,10 +509,7 @@ impl Explorer {
                                             .map(|v| [*n as f64, f64::from(v)])
                                     })
                                     .collect();
-                                plot.line(Line::new(
-                                    pane_label(&self.settings.panes[index].source, index),
-                                    points,
-                                ));
+                                plot.line(Line::new(label, points));
                             }
                             let reference: PlotPoints = samples
                                 .iter()

@@ -21,7 +21,7 @@ pub const DEFAULT_TEXT: &str = "Hamburgefonstiv\n\
     Waltz, nymph, for quick jigs vex Bud.";
 
 /// The path offered first: 1/16 px a frame along x, between any atlas's phases.
-pub const DEFAULT_MOTION_PATH: &str = "drift:0.0625,0";
+pub const DEFAULT_MOTION_PATH: &str = crate::motion::DRIFT_X;
 
 /// Panes there are room for; the layout shows the first 1, 2 or 4.
 pub const PANES: usize = 4;

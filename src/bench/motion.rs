@@ -23,9 +23,9 @@ pub const SCENES: [&str; 2] = ["page", "tiny"];
 /// The paths: a name for the table, and the path in `--path`'s grammar. 1/16 px a frame
 /// falls between every atlas phase (4 a pixel); along 30° it crosses pixel rows too.
 pub const PATHS: [(&str, &str); 3] = [
-    ("drift x", "drift:0.0625,0"),
-    ("drift 30°", "drift:0.05412658773652741,-0.03125"),
-    ("rotate", "rotate:0.25"),
+    ("drift x", crate::motion::DRIFT_X),
+    ("drift 30°", crate::motion::DRIFT_30),
+    ("rotate", crate::motion::TURN),
 ];
 
 /// Frames per path: 16 (8 with `--quick`).
@@ -36,6 +36,8 @@ pub const QUICK_FRAMES: usize = 8;
 #[derive(Clone, Debug, Serialize)]
 pub struct MotionCase {
     pub scene: String,
+    /// The path's name in [`PATHS`], and the path.
+    pub path_name: String,
     pub path: String,
     pub frames: usize,
     pub method: MethodSpec,
@@ -58,11 +60,12 @@ pub fn measure(
     frames: usize,
 ) -> Result<Vec<MotionCase>, Error> {
     let mut cases = Vec::new();
-    for (_, path) in PATHS {
+    for (name, path) in PATHS {
         let path = MotionPath::parse(path)?;
         let result = run::run(Some(gpu), scene, camera, &path, frames, methods, |_| {})?;
         cases.extend(result.methods.into_iter().map(|m| MotionCase {
             scene: scene_name.into(),
+            path_name: name.into(),
             path: path.to_string(),
             frames,
             still_mae_255: m.still_mae_255(),
@@ -126,16 +129,13 @@ pub fn markdown(result: &BenchResult, md: &mut String) {
             };
             let columns: Vec<String> = PATHS
                 .iter()
-                .map(|(_, path)| {
-                    let path = MotionPath::parse(path)
-                        .map(|p| p.to_string())
-                        .unwrap_or_default();
-                    match of_method.iter().find(|c| c.path == path) {
+                .map(
+                    |(name, _)| match of_method.iter().find(|c| c.path_name == *name) {
                         Some(c) if c.refused.is_some() => "n/a".into(),
                         Some(c) => format!("{:.3} ({:.3})", c.temporal.mae_255, c.temporal.max),
                         None => "—".into(),
-                    }
-                })
+                    },
+                )
                 .collect();
             let _ = writeln!(
                 md,

@@ -10,6 +10,17 @@
 //!
 //! Frame `n`'s camera is computed from the base camera and `n` in closed form, never by
 //! accumulating steps, so stepping back returns exactly the earlier frame's pixels.
+//! Motions act on the image plane before the camera's tilt (which turns that plane), so
+//! under a tilt a drift is a drift of the untilted picture.
+//!
+//! The paths the bench, the stability sweep and the explorer share are named here once.
+
+/// 1/16 px a frame along x: between every sub-pixel phase of a 4-phase atlas.
+pub const DRIFT_X: &str = "drift:0.0625,0";
+/// 1/16 px a frame along 30° (up and right): across rows and columns at once.
+pub const DRIFT_30: &str = "drift:0.05412658773652741,-0.03125";
+/// A quarter of a degree a frame about the image's centre.
+pub const TURN: &str = "rotate:0.25";
 
 pub mod report;
 pub mod run;
@@ -25,10 +36,12 @@ use crate::camera::Camera;
 /// One kind of motion, its speed given per frame.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Motion {
-    /// Moves the text by (dx, dy) image pixels per frame (y down).
+    /// Moves the text by (dx, dy) image pixels per frame (y down), in the image plane
+    /// before any tilt.
     Drift(DVec2),
     /// Turns the text counter-clockwise as seen by this many degrees per frame, about an
-    /// image point (None: the centre of the image; for a window, both are the frame's).
+    /// image point (None: the centre of the image; for a window, both are the frame's),
+    /// in the image plane before any tilt.
     Rotate { deg: f64, about: Option<DVec2> },
     /// Multiplies the size by this factor per frame, about the image's centre.
     Zoom(f64),
@@ -79,8 +92,8 @@ impl MotionPath {
         self.motions.is_empty()
     }
 
-    /// The camera of frame `frame` (0: `base` itself; negative frames run the path
-    /// backwards).
+    /// The camera of frame `frame` (0: `base` itself, but for a pulse, which starts at
+    /// LOW; negative frames run the path backwards).
     pub fn camera_at(&self, base: &Camera, frame: i64) -> Camera {
         let n = frame as f64;
         let centre = image_centre(base);

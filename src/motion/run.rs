@@ -93,12 +93,13 @@ pub struct MethodMotion {
 }
 
 impl MethodMotion {
-    /// The mean over frames of the still error, in 1/255, and its largest maximum.
+    /// The mean over frames of the still error, in 1/255.
     pub fn still_mae_255(&self) -> f64 {
         let n = self.frames.len().max(1) as f64;
         self.frames.iter().map(|f| f.error.mae_255).sum::<f64>() / n
     }
 
+    /// The largest pixel error of any frame.
     pub fn still_max(&self) -> f64 {
         self.frames.iter().map(|f| f.error.max).fold(0.0, f64::max)
     }

@@ -281,7 +281,7 @@ pub fn write_report(
         matrix_table(outcomes),
         margin_table(outcomes),
         long_table(outcomes),
-        temporal::table(in_motion, motion_frames)
+        temporal::summary_table(in_motion) + "\n" + &temporal::table(in_motion, motion_frames)
     );
     let path = dir.join("stability.md");
     std::fs::write(&path, markdown).map_err(|e| output(&path, &e))?;

@@ -17,7 +17,7 @@ use crate::motion::MotionPath;
 use crate::motion::run::{self, MethodSpec};
 
 /// 1/16 px a frame along 30°: between every sub-pixel phase, across rows and columns.
-pub const PATH: &str = "drift:0.05412658773652741,-0.03125";
+pub const PATH: &str = crate::motion::DRIFT_30;
 /// Frames per case: 16, 8 with `--quick`.
 pub const FRAMES: usize = 16;
 pub const QUICK_FRAMES: usize = 8;
@@ -70,7 +70,6 @@ pub fn run(
     let mut outcomes = Vec::new();
     for case in cases {
         progress(case.name);
-        let camera = case.camera(0.0, DVec2::ZERO)?;
         let outcome = |variant: &Variant| TemporalOutcome {
             case: case.name,
             variant: variant.label,
@@ -86,15 +85,18 @@ pub fn run(
             refused: None,
             failure: None,
         };
-        match run::run(
-            Some(gpu),
-            &case.scene,
-            &camera,
-            &path,
-            frames,
-            &specs,
-            |_| {},
-        ) {
+        let result = case.camera(0.0, DVec2::ZERO).and_then(|camera| {
+            run::run(
+                Some(gpu),
+                &case.scene,
+                &camera,
+                &path,
+                frames,
+                &specs,
+                |_| {},
+            )
+        });
+        match result {
             Ok(result) => {
                 for (variant, m) in variants.iter().zip(result.methods) {
                     let t = m.temporal;
@@ -109,7 +111,8 @@ pub fn run(
                     });
                 }
             }
-            // Drawing failed for some method: every claim on the case is in doubt.
+            // The case's view, or drawing it with some method, failed: every claim on the
+            // case is in doubt, and the other cases still run.
             Err(e) => outcomes.extend(variants.iter().map(|v| TemporalOutcome {
                 failure: Some(e.to_string()),
                 ..outcome(v)
@@ -124,18 +127,72 @@ pub fn broken_claims(outcomes: &[TemporalOutcome]) -> Vec<String> {
     outcomes
         .iter()
         .filter(|o| o.breaks_claim())
-        .map(|o| match (&o.failure, o.bound) {
-            (Some(failure), _) => {
-                format!("{} × {} in motion: failed: {failure}", o.case, o.variant)
-            }
-            (None, Some(b)) => format!(
-                "{} × {} in motion: claims a temporal error ≤ {} and a mean ≤ {}/255, \
-                 measured {:.4} and {:.3}/255",
-                o.case, o.variant, b.max, b.mae_255, o.max, o.mae_255
-            ),
-            (None, None) => String::new(),
+        .filter_map(|o| {
+            let b = o.bound?;
+            Some(match &o.failure {
+                Some(failure) => format!("{} × {} in motion: failed: {failure}", o.case, o.variant),
+                None => format!(
+                    "{} × {} in motion: claims a temporal error ≤ {} and a mean ≤ {}/255, \
+                     measured {:.4} and {:.3}/255",
+                    o.case, o.variant, b.max, b.mae_255, o.max, o.mae_255
+                ),
+            })
         })
         .collect()
+}
+
+/// Per variant, over every case: the claim and its worst value in scope, the largest
+/// temporal error and mean of any case, and how many cases have a pixel changing by
+/// more than 0.1 beyond the reference.
+pub fn summary_table(outcomes: &[TemporalOutcome]) -> String {
+    let mut out = String::from(
+        "| method | temporal claim (worst in its scope) | worst max (case) | worst MAE /255 (case) | cases with a pixel > 0.1 |\n\
+         |---|---|---:|---:|---:|\n",
+    );
+    let mut variants: Vec<&str> = Vec::new();
+    for o in outcomes {
+        if !variants.contains(&o.variant) {
+            variants.push(o.variant);
+        }
+    }
+    for variant in variants {
+        let drawn: Vec<&TemporalOutcome> = outcomes
+            .iter()
+            .filter(|o| o.variant == variant && o.pairs > 0)
+            .collect();
+        let worst = |of: &[&TemporalOutcome], key: fn(&TemporalOutcome) -> f64| {
+            of.iter()
+                .max_by(|a, b| key(a).total_cmp(&key(b)))
+                .map_or("—".into(), |o| format!("{:.4} ({})", key(o), o.case))
+        };
+        let claimed: Vec<&TemporalOutcome> = drawn
+            .iter()
+            .copied()
+            .filter(|o| o.bound.is_some())
+            .collect();
+        let claim = match claimed.first().and_then(|o| o.bound) {
+            Some(b) => format!(
+                "≤ {}, ≤ {}/255: {} and {}",
+                b.max,
+                b.mae_255,
+                worst(&claimed, |o| o.max),
+                worst(&claimed, |o| o.mae_255)
+            ),
+            None => "—".into(),
+        };
+        let flipping = drawn
+            .iter()
+            .filter(|o| o.pixels_over_per_pair > 0.0)
+            .count();
+        let _ = writeln!(
+            out,
+            "| {variant} | {claim} | {} | {} | {flipping} of {} |",
+            worst(&drawn, |o| o.max),
+            worst(&drawn, |o| o.mae_255),
+            drawn.len()
+        );
+    }
+    out
 }
 
 /// One row per (case, variant): temporal MAE over the frame and its edges, max, pixels

@@ -83,9 +83,10 @@ pub const INFO: MethodInfo = MethodInfo {
                 // to 1/32 px; last measured (the same command): max 0.111, MAE 0.40/255
                 // (winding-256).
                 limitation: Some(within(0.25, 0.6)),
-                // Set before the first temporal sweep, equal to the still bound: an exact
-                // method's error is the same small rounding in consecutive frames, so
-                // its change between them is no larger than the error itself.
+                // Set before the first temporal sweep, equal to the still bound: stricter
+                // than that bound implies (|e₁ − e₀| ≤ 2·0.02), because an exact method's
+                // error is the same small rounding in consecutive frames, not a sign
+                // that flips as the text moves.
                 temporal: Some(within(0.02, 0.1)),
                 statement: "no pixel off by more than 0.02 where contours do not overlap \
                             and f32 font units resolve the pixel, and none changing between \
