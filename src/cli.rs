@@ -30,6 +30,10 @@ pub struct Cli {
     /// With no command, the interactive explorer opens.
     #[command(subcommand)]
     pub command: Option<Command>,
+    /// Open the explorer on the view a link describes: its URL fragment, as the
+    /// explorer's "Copy link" gives it (`#case=inter-overlaps&a=sdf-cells&magnify=32`).
+    #[arg(long, allow_hyphen_values = true)]
+    pub view: Option<String>,
 }
 
 #[derive(Subcommand, Debug)]

@@ -11,6 +11,10 @@ fn main() -> ExitCode {
     if cli.command.is_some() {
         keep_the_gpu_off_the_display();
     }
+    if cli.command.is_some() && cli.view.is_some() {
+        eprintln!("error: --view opens the explorer: give it without a subcommand");
+        return ExitCode::from(2);
+    }
     let result = match &cli.command {
         Some(Command::Render(args)) => glyphscope::cli::run_render(args).map(|()| true),
         Some(Command::Bench(args)) => glyphscope::cli::run_bench(args).map(|()| true),
@@ -19,7 +23,7 @@ fn main() -> ExitCode {
         Some(Command::Screenshots(args)) => run_screenshots(args).map(|()| true),
         Some(Command::Motion(args)) => glyphscope::cli::run_motion(args).map(|()| true),
         Some(Command::Info(args)) => glyphscope::info::run(args).map(|()| true),
-        None => run_app().map(|()| true),
+        None => run_app(cli.view.as_deref()).map(|()| true),
     };
     match result {
         Ok(true) => ExitCode::SUCCESS,
@@ -50,12 +54,12 @@ fn keep_the_gpu_off_the_display() {
 }
 
 #[cfg(feature = "app")]
-fn run_app() -> Result<(), glyphscope::Error> {
-    glyphscope::app::run()
+fn run_app(view: Option<&str>) -> Result<(), glyphscope::Error> {
+    glyphscope::app::run(view)
 }
 
 #[cfg(not(feature = "app"))]
-fn run_app() -> Result<(), glyphscope::Error> {
+fn run_app(_: Option<&str>) -> Result<(), glyphscope::Error> {
     Err(glyphscope::Error::Input(
         "this build has no app (built without the `app` feature); use a subcommand such as \
          `render`, see --help"

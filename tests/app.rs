@@ -1265,3 +1265,51 @@ fn motion_steps_plays_and_charts_one_point_per_frame() {
     assert!(harness.query_all_by_label("A atlas").count() >= 2);
     assert!(harness.query_all_by_label("B winding").count() >= 2);
 }
+
+/// A link is a view: the link copied from an explorer that loaded a case, magnified on
+/// its worst pixel, opens in a fresh explorer on the same camera, the same panes and
+/// exactly the same pixels; a malformed link opens the default view and says in the
+/// status bar what is wrong.
+#[test]
+fn a_copied_link_opens_the_same_view_and_a_malformed_one_says_why() {
+    let mut first = harness(Settings::default());
+    settle(&mut first);
+    first.state_mut().load_case("strong-skew");
+    settle(&mut first);
+    let link = first.state().link().expect("a case travels in a link");
+    let (camera, window) = (first.state().camera(), first.state().magnified_window());
+    // Pane A draws sdf-cells, pane B the reference.
+    let pixels = first.state().pane_capture(0).unwrap();
+    let reference = first.state().reference_image().unwrap();
+    drop(first);
+
+    let mut second = harness(Settings::default());
+    second.state_mut().open_link(&link);
+    settle(&mut second);
+    let app = second.state();
+    assert_eq!(app.settings.scene.case.as_deref(), Some("strong-skew"));
+    assert_eq!(app.camera(), camera, "{link}");
+    assert_eq!(app.magnified_window(), window);
+    assert_eq!(app.pane_capture(0).unwrap(), pixels, "pane A of {link}");
+    assert_eq!(
+        app.reference_image().unwrap(),
+        reference,
+        "pane B of {link}"
+    );
+    assert_eq!(
+        app.link().unwrap(),
+        link,
+        "the link of the opened view is the one opened"
+    );
+
+    let mut bad = harness(Settings::default());
+    bad.state_mut().open_link("#case=inter-overlaps&size=-4");
+    settle(&mut bad);
+    assert_eq!(bad.state().settings, Settings::default());
+    let said = bad
+        .get_by_label_contains("link: size=-4")
+        .accesskit_node()
+        .value()
+        .unwrap_or_default();
+    assert!(said.contains("is not positive"), "{said}");
+}

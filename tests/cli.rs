@@ -850,3 +850,14 @@ fn render_draws_the_peers_and_refuses_what_they_cannot_draw() {
         "translation and uniform scale only",
     );
 }
+
+/// `--view` opens the explorer on a link; given with a subcommand it is a mistake, said
+/// in one line before anything runs.
+#[test]
+fn a_view_link_takes_no_subcommand() {
+    let result = run(&["--view", "#a=winding", "info", "--text", "a"]);
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert_eq!(result.status.code(), Some(2), "{stderr}");
+    assert_eq!(stderr.trim().lines().count(), 1, "{stderr}");
+    assert!(stderr.contains("--view opens the explorer"), "{stderr}");
+}

@@ -64,6 +64,21 @@ impl Explorer {
             {
                 self.screenshot(ui.ctx());
             }
+            let link = self.link();
+            let hover = match &link {
+                Ok(link) => format!("copy the link that opens this view: {link}"),
+                Err(why) => why.clone(),
+            };
+            if ui
+                .add_enabled(link.is_ok(), egui::Button::new("Copy link"))
+                .on_hover_text(hover)
+                .on_disabled_hover_text(link.as_ref().err().cloned().unwrap_or_default())
+                .clicked()
+                && let Ok(link) = link
+            {
+                ui.ctx().copy_text(link.clone());
+                self.set_status(format!("link copied (glyphscope --view '{link}' opens it)"));
+            }
             if ui
                 .button("Help")
                 .on_hover_text(key_name(Action::ToggleHelp))

@@ -19,6 +19,8 @@
 //! - `pareto`: speed against error over every parameter combination, plotted with its
 //!   Pareto front.
 //! - `controls`: the side panel, the status bar and the windows.
+//! - `link`: a view as a URL fragment, copied from the explorer and opened by
+//!   `glyphscope --view`.
 //! - `outline_painter`, `font_dialog`, `headless` (offscreen frames for `glyphscope screenshots`).
 
 mod analysis;
@@ -32,6 +34,7 @@ pub mod display;
 mod font_dialog;
 mod gpu_view;
 pub mod headless;
+mod link;
 mod outline_painter;
 mod panes;
 mod pareto;
@@ -60,8 +63,10 @@ use crate::coverage::CoverageImage;
 use crate::gpu::GpuContext;
 use crate::scene::Scene;
 
-/// Opens the explorer window.
-pub fn run() -> Result<(), crate::Error> {
+/// Opens the explorer window, on the view a link describes when `view` is given (a
+/// malformed one opens the default view and says what was wrong).
+pub fn run(view: Option<&str>) -> Result<(), crate::Error> {
+    let view = view.map(str::to_owned);
     let options = eframe::NativeOptions {
         renderer: eframe::Renderer::Wgpu,
         viewport: egui::ViewportBuilder::default()
@@ -77,7 +82,13 @@ pub fn run() -> Result<(), crate::Error> {
     eframe::run_native(
         "glyphscope",
         options,
-        Box::new(|cc| Ok(Box::new(Explorer::new(cc)))),
+        Box::new(move |cc| {
+            let mut app = Explorer::new(cc);
+            if let Some(link) = &view {
+                app.open_link(link);
+            }
+            Ok(Box::new(app))
+        }),
     )
     .map_err(|e| crate::Error::Gpu(format!("cannot open the window: {e}")))
 }
@@ -147,6 +158,31 @@ impl Explorer {
             app.open_as_on_a_first_start();
         }
         app
+    }
+
+    /// Shows the view `link` describes (a URL fragment: see `link`), or the default view
+    /// and one line saying what is wrong with it.
+    pub fn open_link(&mut self, link: &str) {
+        self.auto_fit = canvas::AutoFit::default();
+        match link::open(link) {
+            Ok(view) => {
+                self.settings = view.settings;
+                self.playback.frame = view.frame;
+                self.set_status(String::new());
+            }
+            Err(e) => {
+                self.settings = Settings::default();
+                self.playback.frame = 0;
+                self.set_status(e);
+            }
+        }
+        sanitize(&mut self.settings);
+    }
+
+    /// The link (a URL fragment, with its `#`) that opens the view shown, or why this
+    /// view cannot travel in one.
+    pub fn link(&self) -> Result<String, String> {
+        link::fragment(&self.settings, self.playback.frame).map(|f| format!("#{f}"))
     }
 
     /// What a first start shows: the default side-by-side (a method beside the

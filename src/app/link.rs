@@ -1,0 +1,509 @@
+//! A link is a view: the scene, the camera, the layout, each pane's method, parameters
+//! and overlays, the magnifier and the motion, written as a URL fragment
+//! (`#case=inter-overlaps&a=sdf-cells&b=winding&magnify=32`) that the explorer opens
+//! exactly — `glyphscope --view '#…'` on the desktop. Every camera number is written in
+//! full (Rust's shortest round-trip form), so the view opened is the view copied, pixel
+//! for pixel.
+//!
+//! The grammar, key by key (values percent-encoded; any key may be left out, and then
+//! keeps the default view's value):
+//!
+//! | key | value |
+//! |---|---|
+//! | `case` | a named view: a hard case or a bench scene (`glyphscope render --case`) |
+//! | `text` | the text (newlines as `%0A`) |
+//! | `font` | a shipped font by its number, 0 the first (a font from disk cannot travel) |
+//! | `var` | variable-font axes, `TAG:VALUE,TAG:VALUE` |
+//! | `glyph` | one glyph (a character, or `#` and an id) instead of the text |
+//! | `size` | px/em |
+//! | `origin` | the first baseline's origin in pane pixels, `X,Y` |
+//! | `rotate`, `skew`, `tilt` | degrees, shear, degrees |
+//! | `offset` | the world offset, `DX,DY` |
+//! | `frame` | the named view's frame the pane is a window of, `W,H,X,Y` |
+//! | `layout` | `1`, `2` or `4` panes |
+//! | `a` … `d` | a pane's method, `NAME` or `NAME:KEY=VALUE:…`; or `diff:FIRST[:SECOND]`, panes by letter |
+//! | `a.overlay` … | `error` or a method overlay's name |
+//! | `a.outline` … | `1`: the outline drawn over the pane |
+//! | `magnify`, `focus` | the magnifier's N, and its centre in pane pixels `X,Y` |
+//! | `motion`, `at` | a motion path (`glyphscope motion --path`) and the frame shown |
+
+use super::settings::{CaseFrame, FontChoice, Layout, PANES, PaneOverlay, PaneSource, Settings};
+use crate::font::SHIPPED_FONTS;
+use crate::methods::registry;
+use crate::motion::MotionPath;
+
+/// A view opened from a link: its settings, and the frame of its motion path shown.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LinkedView {
+    pub settings: Settings,
+    pub frame: i64,
+}
+
+/// The fragment (without its `#`) that opens `settings` at motion frame `frame`, or why
+/// the scene cannot travel in a link (a font opened from disk).
+pub fn fragment(settings: &Settings, frame: i64) -> Result<String, String> {
+    let mut parts: Vec<(String, String)> = Vec::new();
+    let mut put = |key: &str, value: String| parts.push((key.into(), value));
+    let scene = &settings.scene;
+    match &scene.case {
+        Some(case) => put("case", case.clone()),
+        None => {
+            match &scene.font {
+                FontChoice::Shipped(index) => put("font", index.to_string()),
+                FontChoice::File(path) => {
+                    return Err(format!(
+                        "the font {} was opened from disk: a link carries only the shipped fonts",
+                        path.display()
+                    ));
+                }
+            }
+            put("text", scene.text.clone());
+            if !scene.variations.is_empty() {
+                let axes: Vec<String> = scene
+                    .variations
+                    .iter()
+                    .map(|(tag, v)| format!("{tag}:{v}"))
+                    .collect();
+                put("var", axes.join(","));
+            }
+            if scene.glyph_mode {
+                put("glyph", scene.glyph.clone());
+            }
+        }
+    }
+    let c = &settings.camera;
+    put("size", c.size_px_per_em.to_string());
+    put("origin", pair(c.origin));
+    put("rotate", c.rotation_deg.to_string());
+    put("skew", c.skew.to_string());
+    put("tilt", c.tilt_deg.to_string());
+    put("offset", pair(c.world_offset));
+    if let Some(f) = c.case_frame {
+        put(
+            "frame",
+            format!("{},{},{},{}", f.width, f.height, f.offset[0], f.offset[1]),
+        );
+    }
+    put("layout", settings.layout.panes().to_string());
+    for (index, pane) in settings
+        .panes
+        .iter()
+        .enumerate()
+        .take(settings.layout.panes())
+    {
+        let letter = letter(index);
+        put(&letter, pane_source(&pane.source));
+        match &pane.overlay {
+            PaneOverlay::None => {}
+            PaneOverlay::Error => put(&format!("{letter}.overlay"), "error".into()),
+            PaneOverlay::Method(name) => put(&format!("{letter}.overlay"), name.clone()),
+        }
+        if pane.outline {
+            put(&format!("{letter}.outline"), "1".into());
+        }
+    }
+    put("magnify", c.magnify.to_string());
+    put("focus", pair(c.focus));
+    if MotionPath::parse(&settings.motion_path).is_ok_and(|p| !p.is_still()) {
+        put("motion", settings.motion_path.clone());
+        put("at", frame.to_string());
+    }
+    Ok(parts
+        .iter()
+        .map(|(k, v)| format!("{k}={}", encode(v)))
+        .collect::<Vec<_>>()
+        .join("&"))
+}
+
+/// The view a fragment (with or without its `#`) describes, over the default view; or
+/// one line naming what is wrong with it.
+pub fn open(fragment: &str) -> Result<LinkedView, String> {
+    let mut view = LinkedView {
+        settings: Settings::default(),
+        frame: 0,
+    };
+    let text = fragment.trim().trim_start_matches('#');
+    if text.is_empty() {
+        return Ok(view);
+    }
+    let mut layout_given = false;
+    for part in text.split('&').filter(|p| !p.is_empty()) {
+        let (key, raw) = part
+            .split_once('=')
+            .ok_or_else(|| format!("link: '{part}' is not KEY=VALUE"))?;
+        let value = decode(raw).map_err(|e| format!("link: {key}: {e}"))?;
+        apply(&mut view, key, &value, &mut layout_given)
+            .map_err(|e| format!("link: {key}={value}: {e}"))?;
+    }
+    Ok(view)
+}
+
+fn apply(
+    view: &mut LinkedView,
+    key: &str,
+    value: &str,
+    layout_given: &mut bool,
+) -> Result<(), String> {
+    let s = &mut view.settings;
+    let c = &mut s.camera;
+    match key {
+        "case" => {
+            if !crate::named_views::all().iter().any(|v| v.name == value) {
+                return Err("no named view has this name".into());
+            }
+            s.scene.case = Some(value.into());
+        }
+        "text" => s.scene.text = value.into(),
+        "font" => {
+            let index: usize = value.parse().map_err(|_| "not a font number".to_string())?;
+            if index >= SHIPPED_FONTS.len() {
+                return Err(format!(
+                    "there are {} shipped fonts, from 0",
+                    SHIPPED_FONTS.len()
+                ));
+            }
+            s.scene.font = FontChoice::Shipped(index);
+        }
+        "var" => {
+            s.scene.variations = value
+                .split(',')
+                .map(|axis| {
+                    let (tag, v) = axis.split_once(':').ok_or("not TAG:VALUE")?;
+                    let v: f32 = v.parse().map_err(|_| "not a number")?;
+                    Ok((tag.to_string(), v))
+                })
+                .collect::<Result<_, &str>>()?;
+        }
+        "glyph" => {
+            s.scene.glyph_mode = true;
+            s.scene.glyph = value.into();
+        }
+        "size" => c.size_px_per_em = positive(value)?,
+        "origin" => c.origin = numbers(value)?,
+        "rotate" => c.rotation_deg = number(value)?,
+        "skew" => c.skew = number(value)?,
+        "tilt" => {
+            let tilt = number(value)?;
+            if tilt.abs() >= 90.0 {
+                return Err("a tilt must lie strictly between -90 and 90".into());
+            }
+            c.tilt_deg = tilt;
+        }
+        "offset" => c.world_offset = numbers(value)?,
+        "frame" => {
+            let v: Vec<&str> = value.split(',').collect();
+            let [w, h, x, y] = v[..] else {
+                return Err("not W,H,X,Y".into());
+            };
+            let side = |t: &str| -> Result<u32, String> {
+                t.parse::<u32>()
+                    .ok()
+                    .filter(|n| (1..=crate::camera::MAX_IMAGE_SIDE).contains(n))
+                    .ok_or_else(|| format!("'{t}' is not a frame side"))
+            };
+            c.case_frame = Some(CaseFrame {
+                width: side(w)?,
+                height: side(h)?,
+                offset: [number(x)?, number(y)?],
+            });
+        }
+        "layout" => {
+            s.layout = match value {
+                "1" => Layout::Single,
+                "2" => Layout::SideBySide,
+                "4" => Layout::Grid,
+                _ => return Err("not 1, 2 or 4".into()),
+            };
+            *layout_given = true;
+        }
+        "magnify" => {
+            c.magnify = value
+                .parse::<u32>()
+                .ok()
+                .filter(|n| (1..=crate::magnify::MAX_FACTOR).contains(n))
+                .ok_or_else(|| format!("not a factor from 1 to {}", crate::magnify::MAX_FACTOR))?;
+        }
+        "focus" => c.focus = numbers(value)?,
+        "motion" => {
+            MotionPath::parse(value).map_err(|e| e.to_string())?;
+            s.motion_path = value.into();
+        }
+        "at" => {
+            view.frame = value
+                .parse()
+                .map_err(|_| "not a frame number".to_string())?
+        }
+        _ => return pane_key(s, key, value, *layout_given),
+    }
+    Ok(())
+}
+
+/// `a` … `d`, `a.overlay`, `a.outline`.
+fn pane_key(s: &mut Settings, key: &str, value: &str, layout_given: bool) -> Result<(), String> {
+    let (letter, field) = key.split_once('.').unwrap_or((key, ""));
+    let index = pane_index(letter).ok_or_else(|| "unknown key".to_string())?;
+    // A pane named beyond the default layout shows it, unless the link sets one.
+    if !layout_given && index >= s.layout.panes() {
+        s.layout = if index >= 2 {
+            Layout::Grid
+        } else {
+            Layout::SideBySide
+        };
+    }
+    let pane = &mut s.panes[index];
+    match field {
+        "" => pane.source = parse_source(value, index)?,
+        "overlay" => {
+            pane.overlay = match value {
+                "error" => PaneOverlay::Error,
+                "none" => PaneOverlay::None,
+                name => PaneOverlay::Method(name.into()),
+            }
+        }
+        "outline" => {
+            pane.outline = match value {
+                "1" => true,
+                "0" => false,
+                _ => return Err("not 0 or 1".into()),
+            }
+        }
+        _ => return Err("unknown key".into()),
+    }
+    Ok(())
+}
+
+fn parse_source(value: &str, index: usize) -> Result<PaneSource, String> {
+    let mut parts = value.split(':');
+    let name = parts.next().unwrap_or_default();
+    if name == "diff" {
+        let pane = |t: &str| {
+            pane_index(t)
+                .filter(|&p| p != index)
+                .ok_or_else(|| format!("'{t}' is not another pane"))
+        };
+        let first = pane(parts.next().ok_or("diff needs the pane it shows")?)?;
+        let second = parts.next().map(pane).transpose()?;
+        return Ok(PaneSource::Difference { first, second });
+    }
+    let info = registry::find(name).map_err(|e| e.to_string())?;
+    let params = parts
+        .map(crate::view_args::parse_key_value)
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(PaneSource::Method {
+        name: info.name.into(),
+        params,
+    })
+}
+
+fn pane_source(source: &PaneSource) -> String {
+    match source {
+        PaneSource::Method { name, params } => std::iter::once(name.clone())
+            .chain(params.iter().map(|(k, v)| format!("{k}={v}")))
+            .collect::<Vec<_>>()
+            .join(":"),
+        PaneSource::Difference { first, second } => {
+            let mut text = format!("diff:{}", letter(*first));
+            if let Some(second) = second {
+                text.push(':');
+                text.push_str(&letter(*second));
+            }
+            text
+        }
+    }
+}
+
+fn letter(index: usize) -> String {
+    char::from(b'a' + index as u8).to_string()
+}
+
+fn pane_index(letter: &str) -> Option<usize> {
+    match letter.as_bytes() {
+        [c @ b'a'..=b'z'] => Some(usize::from(c - b'a')).filter(|&i| i < PANES),
+        _ => None,
+    }
+}
+
+fn pair(v: [f64; 2]) -> String {
+    format!("{},{}", v[0], v[1])
+}
+
+fn number(text: &str) -> Result<f64, String> {
+    text.trim()
+        .parse::<f64>()
+        .ok()
+        .filter(|v| v.is_finite())
+        .ok_or_else(|| format!("'{text}' is not a finite number"))
+}
+
+fn positive(text: &str) -> Result<f64, String> {
+    let v = number(text)?;
+    if v > 0.0 {
+        Ok(v)
+    } else {
+        Err(format!("'{text}' is not positive"))
+    }
+}
+
+fn numbers(text: &str) -> Result<[f64; 2], String> {
+    let (a, b) = text
+        .split_once(',')
+        .ok_or_else(|| format!("'{text}' is not X,Y"))?;
+    Ok([number(a)?, number(b)?])
+}
+
+/// Bytes kept as they are in a fragment value: the unreserved ones and the separators
+/// the grammar itself uses inside values (`,` `:` `@` `+`).
+fn kept(b: u8) -> bool {
+    b.is_ascii_alphanumeric() || b"-._~,:@+".contains(&b)
+}
+
+fn encode(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for &b in text.as_bytes() {
+        if kept(b) {
+            out.push(char::from(b));
+        } else {
+            out.push_str(&format!("%{b:02X}"));
+        }
+    }
+    out
+}
+
+fn decode(text: &str) -> Result<String, String> {
+    let bytes = text.as_bytes();
+    let mut out = Vec::with_capacity(bytes.len());
+    let mut i = 0;
+    while i < bytes.len() {
+        if bytes[i] == b'%' {
+            let hex = bytes
+                .get(i + 1..i + 3)
+                .and_then(|h| std::str::from_utf8(h).ok())
+                .and_then(|h| u8::from_str_radix(h, 16).ok())
+                .ok_or_else(|| {
+                    format!("'{}' is not a %XX escape", &text[i..text.len().min(i + 3)])
+                })?;
+            out.push(hex);
+            i += 3;
+        } else {
+            out.push(bytes[i]);
+            i += 1;
+        }
+    }
+    String::from_utf8(out).map_err(|_| "not UTF-8 once unescaped".into())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::app::settings::{CameraSettings, PaneSettings};
+
+    fn varied() -> Settings {
+        let mut s = Settings {
+            layout: Layout::Grid,
+            motion_path: "drift:0.1,-0.2+rotate:0.5@3,4".into(),
+            ..Settings::default()
+        };
+        s.scene.text = "Wave & co = 50% #1\nline two".into();
+        s.scene.font = FontChoice::Shipped(1);
+        s.scene.variations = vec![("wght".into(), 700.0)];
+        s.camera = CameraSettings {
+            size_px_per_em: 12.345678901234567,
+            origin: [0.1 + 0.2, -7.5],
+            rotation_deg: 33.3,
+            skew: -0.25,
+            tilt_deg: 35.0,
+            magnify: 16,
+            focus: [40.5, 9.25],
+            world_offset: [1e6, -3.0],
+            case_frame: Some(CaseFrame {
+                width: 640,
+                height: 480,
+                offset: [3.0, 7.0],
+            }),
+        };
+        s.panes[0] = PaneSettings::method("sdf-cells");
+        if let PaneSource::Method { params, .. } = &mut s.panes[0].source {
+            params.push(("mode".into(), "exact".into()));
+        }
+        s.panes[0].overlay = PaneOverlay::Method("cells".into());
+        s.panes[1].overlay = PaneOverlay::Error;
+        s.panes[1].outline = true;
+        s.panes[3].source = PaneSource::Difference {
+            first: 0,
+            second: Some(1),
+        };
+        s
+    }
+
+    /// Every field the link carries comes back exactly, numbers to the last bit, text
+    /// with the characters the grammar uses.
+    #[test]
+    fn a_view_survives_its_link() {
+        let s = varied();
+        let link = fragment(&s, 17).unwrap();
+        assert!(
+            !link.contains(' ') && !link.contains('\n') && !link.contains('#'),
+            "{link}"
+        );
+        let back = open(&format!("#{link}")).unwrap();
+        assert_eq!(back.frame, 17);
+        assert_eq!(back.settings.scene, s.scene);
+        assert_eq!(back.settings.camera, s.camera);
+        assert_eq!(back.settings.layout, s.layout);
+        assert_eq!(back.settings.panes, s.panes);
+        assert_eq!(back.settings.motion_path, s.motion_path);
+        let mut case = Settings::default();
+        case.scene.case = Some("inter-overlaps".into());
+        let back = open(&fragment(&case, 0).unwrap()).unwrap();
+        assert_eq!(back.settings.scene.case.as_deref(), Some("inter-overlaps"));
+    }
+
+    /// The issue's own example, written by hand: only what it names changes.
+    #[test]
+    fn a_short_link_changes_only_what_it_names() {
+        let view = open("#case=inter-overlaps&a=sdf-cells&b=winding&magnify=32").unwrap();
+        let s = view.settings;
+        let default = Settings::default();
+        assert_eq!(s.scene.case.as_deref(), Some("inter-overlaps"));
+        assert_eq!(s.panes[0], PaneSettings::method("sdf-cells"));
+        assert_eq!(s.panes[1], PaneSettings::method("winding"));
+        assert_eq!(s.camera.magnify, 32);
+        assert_eq!(s.camera.size_px_per_em, default.camera.size_px_per_em);
+        assert_eq!(s.layout, Layout::SideBySide);
+        assert_eq!(open("#c=atlas").unwrap().settings.layout, Layout::Grid);
+        assert_eq!(open("").unwrap().settings, default);
+    }
+
+    /// A malformed link is one line naming the key and what is wrong.
+    #[test]
+    fn a_malformed_link_says_what_is_wrong() {
+        for (link, expected) in [
+            ("#case=nonesuch", "case=nonesuch"),
+            ("#size=-3", "size=-3"),
+            ("#size=abc", "size=abc"),
+            ("#tilt=95", "tilt=95"),
+            ("#magnify=65", "magnify=65"),
+            ("#a=nonesuch", "a=nonesuch"),
+            ("#a=diff:a", "a=diff:a"),
+            ("#e=winding", "e=winding"),
+            ("#zoom=2", "zoom=2"),
+            ("#text=%zz", "text"),
+            ("#layout", "'layout' is not KEY=VALUE"),
+            ("#motion=spin:1", "motion=spin:1"),
+            ("#frame=1,2,3", "frame=1,2,3"),
+            ("#font=99", "font=99"),
+            ("#a.outline=yes", "a.outline=yes"),
+        ] {
+            let e = open(link).unwrap_err();
+            assert!(e.starts_with("link: ") && !e.contains('\n'), "{link}: {e}");
+            assert!(e.contains(expected), "{link}: {e} lacks {expected:?}");
+        }
+    }
+
+    #[test]
+    fn a_font_from_disk_cannot_travel() {
+        let mut s = Settings::default();
+        s.scene.font = FontChoice::File("/tmp/some.ttf".into());
+        assert!(fragment(&s, 0).unwrap_err().contains("from disk"));
+    }
+}
