@@ -3,7 +3,7 @@
 //! run.
 
 use std::path::PathBuf;
-use std::time::Instant;
+use web_time::Instant;
 
 use clap::{Args, Parser, Subcommand};
 

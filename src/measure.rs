@@ -2,7 +2,7 @@
 //! measurement `render --stats`, the bench, the app's sweep and the tests share, so
 //! their figures agree.
 
-use std::time::Instant;
+use web_time::Instant;
 
 use serde::Serialize;
 

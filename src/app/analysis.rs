@@ -8,7 +8,7 @@
 use std::collections::HashMap;
 use std::sync::Arc;
 use std::sync::mpsc::{Receiver, Sender, channel};
-use std::time::Instant;
+use web_time::Instant;
 
 use eframe::egui;
 
@@ -97,28 +97,34 @@ impl Analysis {
     pub fn start(ctx: egui::Context, gpu: Option<GpuContext>) -> Analysis {
         let (requests, inbox) = channel::<Request>();
         let (outbox, outcomes) = channel();
+        let worker = move || {
+            let mut last: Option<(u64, Camera, Arc<CoverageImage>)> = None;
+            let mut counters: HashMap<usize, Counter> = HashMap::new();
+            let mut previous: Option<PreviousFrame> = None;
+            while let Ok(mut request) = inbox.recv() {
+                // Only the newest view matters.
+                while let Ok(newer) = inbox.try_recv() {
+                    request = newer;
+                }
+                let mut outcome = analyse(&request, &mut last);
+                outcome.temporal = temporal(&request, &outcome, &mut previous);
+                if let Some(gpu) = &gpu {
+                    outcome.curves = count_curves(gpu, &request, &mut counters);
+                }
+                if outbox.send(outcome).is_err() {
+                    return;
+                }
+                ctx.request_repaint();
+            }
+        };
+        // A page (wasm32) has no threads yet: there the view's numbers are not worked
+        // out (see `web`) and no request is sent.
+        #[cfg(target_arch = "wasm32")]
+        drop(worker);
+        #[cfg(not(target_arch = "wasm32"))]
         std::thread::Builder::new()
             .name("reference and error".into())
-            .spawn(move || {
-                let mut last: Option<(u64, Camera, Arc<CoverageImage>)> = None;
-                let mut counters: HashMap<usize, Counter> = HashMap::new();
-                let mut previous: Option<PreviousFrame> = None;
-                while let Ok(mut request) = inbox.recv() {
-                    // Only the newest view matters.
-                    while let Ok(newer) = inbox.try_recv() {
-                        request = newer;
-                    }
-                    let mut outcome = analyse(&request, &mut last);
-                    outcome.temporal = temporal(&request, &outcome, &mut previous);
-                    if let Some(gpu) = &gpu {
-                        outcome.curves = count_curves(gpu, &request, &mut counters);
-                    }
-                    if outbox.send(outcome).is_err() {
-                        return;
-                    }
-                    ctx.request_repaint();
-                }
-            })
+            .spawn(worker)
             .expect("a thread can be started");
         Analysis {
             requests,

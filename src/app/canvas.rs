@@ -657,9 +657,27 @@ impl Explorer {
         self.legends[index].clone()
     }
 
+    /// Whether every visible pane that draws a method has drawn the view shown.
+    pub fn panes_drawn(&self) -> bool {
+        let Some(camera) = self.canvas.camera else {
+            return false;
+        };
+        let visible = self.settings.layout.panes();
+        self.panes[..visible].iter().zip(&self.settings.panes).all(|(pane, settings)| {
+            let draws = matches!(&settings.source, PaneSource::Method { name, .. } if name != REFERENCE);
+            !draws || lock(&pane.surface).shows(&camera)
+        })
+    }
+
     /// Once the view has rested: reads each pane's coverage back once and asks the
     /// background worker for the reference, the errors and the curves per pixel.
     pub(super) fn settle(&mut self, ctx: &egui::Context) {
+        // A page cannot wait for a read-back within a frame: until the read-backs are
+        // asynchronous, the web explorer draws the panes without their numbers (the
+        // status bar says so).
+        if cfg!(target_arch = "wasm32") {
+            return;
+        }
         let (Some(camera), Some(scene)) = (self.canvas.camera, self.scene.scene().cloned()) else {
             return;
         };

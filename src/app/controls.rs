@@ -328,6 +328,8 @@ impl Explorer {
                 ui.label(status);
                 ui.separator();
             }
+            #[cfg(target_arch = "wasm32")]
+            ui.colored_label(ui.visuals().warn_fg_color, super::web::LIMITS);
             ui.label(self.inspector_text());
             ui.separator();
             let mut intervals: Vec<f64> = self.frame_intervals.iter().copied().collect();

@@ -249,7 +249,7 @@ impl PaneSurface {
         }
         let target = self.target.as_ref().expect("made above");
         let slot = self.timer.begin(gpu, encoder);
-        let start = std::time::Instant::now();
+        let start = web_time::Instant::now();
         let result = method.encode(gpu, encoder, target, camera);
         let encode_ms = ms_since(start);
         self.timer.record_cpu(encode_ms);

@@ -3,7 +3,7 @@
 //! what `glyphscope screenshots` photographs and what the frame-time measurement times.
 
 use std::iter;
-use std::time::Instant;
+use web_time::Instant;
 
 use eframe::egui;
 use egui_wgpu::wgpu;

@@ -32,12 +32,20 @@ use crate::font::SHIPPED_FONTS;
 use crate::methods::registry;
 use crate::motion::MotionPath;
 
-/// A view opened from a link: its settings, and the frame of its motion path shown.
+/// A view opened from a link: its settings, the frame of its motion path shown, and
+/// whether the link placed the camera (a link that names a case and no camera opens the
+/// case as the Cases menu does: framed, magnified on its worst pixel).
 #[derive(Clone, Debug, PartialEq)]
 pub struct LinkedView {
     pub settings: Settings,
     pub frame: i64,
+    pub camera_given: bool,
 }
+
+/// The keys that place the camera.
+const CAMERA_KEYS: &[&str] = &[
+    "size", "origin", "rotate", "skew", "tilt", "offset", "frame", "focus",
+];
 
 /// The fragment (without its `#`) that opens `settings` at motion frame `frame`, or why
 /// the scene cannot travel in a link (a font opened from disk).
@@ -121,6 +129,7 @@ pub fn open(fragment: &str) -> Result<LinkedView, String> {
     let mut view = LinkedView {
         settings: Settings::default(),
         frame: 0,
+        camera_given: false,
     };
     let text = fragment.trim().trim_start_matches('#');
     if text.is_empty() {
@@ -132,6 +141,7 @@ pub fn open(fragment: &str) -> Result<LinkedView, String> {
             .split_once('=')
             .ok_or_else(|| format!("link: '{part}' is not KEY=VALUE"))?;
         let value = decode(raw).map_err(|e| format!("link: {key}: {e}"))?;
+        view.camera_given |= CAMERA_KEYS.contains(&key);
         apply(&mut view, key, &value, &mut layout_given)
             .map_err(|e| format!("link: {key}={value}: {e}"))?;
     }
@@ -462,7 +472,7 @@ mod tests {
     #[test]
     fn a_short_link_changes_only_what_it_names() {
         let view = open("#case=inter-overlaps&a=sdf-cells&b=winding&magnify=32").unwrap();
-        let s = view.settings;
+        let s = view.settings.clone();
         let default = Settings::default();
         assert_eq!(s.scene.case.as_deref(), Some("inter-overlaps"));
         assert_eq!(s.panes[0], PaneSettings::method("sdf-cells"));
@@ -470,6 +480,11 @@ mod tests {
         assert_eq!(s.camera.magnify, 32);
         assert_eq!(s.camera.size_px_per_em, default.camera.size_px_per_em);
         assert_eq!(s.layout, Layout::SideBySide);
+        assert!(
+            !view.camera_given,
+            "the case is placed as the Cases menu places it"
+        );
+        assert!(open("#case=inter-overlaps&size=12").unwrap().camera_given);
         assert_eq!(open("#c=atlas").unwrap().settings.layout, Layout::Grid);
         assert_eq!(open("").unwrap().settings, default);
     }

@@ -19,6 +19,7 @@
 //! - `pareto`: speed against error over every parameter combination, plotted with its
 //!   Pareto front.
 //! - `controls`: the side panel, the status bar and the windows.
+//! - `web`: the explorer as a web page (wasm32 and WebGPU only).
 //! - `link`: a view as a URL fragment, copied from the explorer and opened by
 //!   `glyphscope --view`.
 //! - `outline_painter`, `font_dialog`, `headless` (offscreen frames for `glyphscope screenshots`).
@@ -43,6 +44,8 @@ mod scene_state;
 pub mod screenshots;
 pub mod settings;
 mod shortcuts;
+#[cfg(target_arch = "wasm32")]
+pub mod web;
 
 use std::collections::VecDeque;
 use std::sync::{Arc, Mutex};
@@ -64,7 +67,9 @@ use crate::gpu::GpuContext;
 use crate::scene::Scene;
 
 /// Opens the explorer window, on the view a link describes when `view` is given (a
-/// malformed one opens the default view and says what was wrong).
+/// malformed one opens the default view and says what was wrong). The web page starts
+/// the explorer its own way (`web`).
+#[cfg(not(target_arch = "wasm32"))]
 pub fn run(view: Option<&str>) -> Result<(), crate::Error> {
     let view = view.map(str::to_owned);
     let options = eframe::NativeOptions {
@@ -169,6 +174,9 @@ impl Explorer {
                 self.settings = view.settings;
                 self.playback.frame = view.frame;
                 self.set_status(String::new());
+                if let (Some(case), false) = (self.settings.scene.case.clone(), view.camera_given) {
+                    self.load_case(&case);
+                }
             }
             Err(e) => {
                 self.settings = Settings::default();
@@ -401,6 +409,8 @@ impl Explorer {
         if self.settings.continuous {
             ctx.request_repaint();
         }
+        #[cfg(target_arch = "wasm32")]
+        web::after_frame(self);
         let dt = f64::from(ctx.input(|i| i.unstable_dt)) * 1e3;
         if self.frame_intervals.len() == 60 {
             self.frame_intervals.pop_front();

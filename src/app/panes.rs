@@ -3,7 +3,7 @@
 //! parameters change), and the controls that choose them.
 
 use std::sync::Arc;
-use std::time::Instant;
+use web_time::Instant;
 
 use eframe::egui;
 

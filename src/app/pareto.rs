@@ -169,7 +169,8 @@ impl ParetoSweep {
         });
         let gpu = gpu.clone();
         let ctx = ctx.clone();
-        std::thread::Builder::new()
+        // A page (wasm32) has no threads yet: said in the window, not a panic.
+        let started = std::thread::Builder::new()
             .name("sweep".into())
             .spawn(move || {
                 let send = |m| {
@@ -196,7 +197,10 @@ impl ParetoSweep {
                 }
                 send(Message::Finished);
             })
-            .expect("a thread can be started");
+            .map_err(|e| format!("the sweep needs a thread: {e}"));
+        if let Err(why) = started {
+            self.problems.push(why);
+        }
     }
 
     pub fn cancel(&mut self) {

@@ -3,7 +3,9 @@
 //! magnifier, the methods side by side, each debug overlay, the speed-vs-error plot.
 
 use std::path::Path;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+use web_time::Instant;
 
 use eframe::egui;
 

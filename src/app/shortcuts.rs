@@ -279,8 +279,8 @@ impl Explorer {
     pub(super) fn screenshot(&self, ctx: &egui::Context) {
         let status = self.status.clone();
         ctx.request_screenshot(move |image| {
-            let stamp = std::time::SystemTime::now()
-                .duration_since(std::time::UNIX_EPOCH)
+            let stamp = web_time::SystemTime::now()
+                .duration_since(web_time::UNIX_EPOCH)
                 .map_or(0, |d| d.as_secs());
             let path = PathBuf::from(format!("glyphscope-{stamp}.png"));
             let [w, h] = image.size;

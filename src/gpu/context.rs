@@ -128,17 +128,39 @@ impl GpuContext {
         let out_of_memory = self.device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
         let validation = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
         let result = work();
-        // Scopes pop in reverse order of their pushes.
-        let validation = pollster::block_on(validation.pop());
-        let out_of_memory = pollster::block_on(out_of_memory.pop());
-        match validation.or(out_of_memory) {
+        // Scopes pop in reverse order of their pushes, here, when `pop` is called.
+        let validation = validation.pop();
+        let out_of_memory = out_of_memory.pop();
+        // A page cannot wait for the answer within the frame: its errors are logged to
+        // the browser's console when they arrive.
+        #[cfg(target_arch = "wasm32")]
+        {
+            let what = what.to_owned();
+            wasm_bindgen_futures::spawn_local(async move {
+                if let Some(e) = validation.await.or(out_of_memory.await) {
+                    log::error!("{what} failed on the GPU: {e}");
+                }
+            });
+            result
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        match pollster::block_on(validation).or(pollster::block_on(out_of_memory)) {
             Some(e) => Err(Error::Gpu(format!("{what} failed on the GPU: {e}"))),
             None => result,
         }
     }
 
-    /// Blocks until the GPU has finished everything submitted so far.
+    /// Blocks until the GPU has finished everything submitted so far. A web page cannot
+    /// block (WebGPU answers only between frames): there it is an error that says so,
+    /// never a hang, until every caller reads back asynchronously.
     pub(crate) fn wait_idle(&self) -> Result<(), Error> {
+        if cfg!(target_arch = "wasm32") {
+            return Err(Error::Gpu(
+                "a web page cannot wait for the GPU within a frame: this needs the desktop \
+                 explorer for now"
+                    .into(),
+            ));
+        }
         loop {
             match self.device.poll(wgpu::PollType::wait_indefinitely()) {
                 Ok(_) => return Ok(()),

@@ -3,7 +3,7 @@
 //! ([`time_frames`]). The CLI, the bench, the app and the tests all draw through these,
 //! so a method is measured exactly as it is checked.
 
-use std::time::Instant;
+use web_time::Instant;
 
 use super::Method;
 use crate::Error;

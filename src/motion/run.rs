@@ -2,7 +2,7 @@
 //! reference, each frame measured as a still (its error) and against the frame before
 //! (its temporal error), and timed.
 
-use std::time::Instant;
+use web_time::Instant;
 
 use serde::Serialize;
 

@@ -21,7 +21,7 @@ pub mod mesh;
 mod store;
 pub mod subdivision;
 
-use std::time::Instant;
+use web_time::Instant;
 
 use glam::{DMat2, DMat3, DVec2};
 
