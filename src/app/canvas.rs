@@ -52,6 +52,12 @@ pub struct CanvasKey {
     panes: Vec<(u64, bool)>,
 }
 
+/// The read-backs of a view at rest, one per pane drawing a method.
+struct Reading {
+    key: CanvasKey,
+    pending: Vec<(usize, crate::gpu::PendingReadback)>,
+}
+
 /// The pane layout and hover of the last frame.
 #[derive(Default)]
 pub struct CanvasState {
@@ -68,6 +74,8 @@ pub struct CanvasState {
     pub key: Option<CanvasKey>,
     changed_at: f64,
     pub analysed: Option<CanvasKey>,
+    /// The panes' read-backs under way for a view at rest.
+    reading: Option<Reading>,
     /// Pane index and pixel under the pointer.
     pub hovered: Option<(usize, u32, u32)>,
     /// Notes to show, per pane.
@@ -712,37 +720,70 @@ impl Explorer {
             ctx.request_repaint_after(std::time::Duration::from_secs_f64(REST_SECONDS - waited));
             return;
         }
+        // Read each drawn pane back without waiting: started once the view has rested
+        // and every pane has drawn it, taken on the frames after, then sent.
+        if self.canvas.reading.as_ref().is_none_or(|r| r.key != key) {
+            let mut pending = Vec::new();
+            for (index, pane) in self.panes[..visible].iter_mut().enumerate() {
+                let surface = lock(&pane.surface);
+                if surface.method.is_none() || surface.draw_error.is_some() {
+                    continue;
+                }
+                if !surface.shows(&camera) {
+                    // Not drawn yet for this view: look again next frame.
+                    drop(surface);
+                    ctx.request_repaint();
+                    return;
+                }
+                let target = surface.target.as_ref().expect("drawn, so it has a target");
+                match target.start_readback(&gpu) {
+                    Ok(readback) => pending.push((index, readback)),
+                    Err(e) => {
+                        drop(surface);
+                        pane.problem = Some(e.to_string());
+                    }
+                }
+            }
+            self.canvas.reading = Some(Reading { key, pending });
+            ctx.request_repaint();
+            return;
+        }
+        let answered = self
+            .canvas
+            .reading
+            .as_ref()
+            .is_some_and(|r| r.pending.iter().all(|(_, p)| p.is_answered(&gpu)));
+        if !answered {
+            // The GPU has not answered every read-back yet: look again next frame.
+            ctx.request_repaint();
+            return;
+        }
+        let Some(reading) = self.canvas.reading.take() else {
+            return;
+        };
         let mut captures = Vec::new();
         let mut counts = Vec::new();
-        let pane_generations = self
-            .panes
-            .iter()
-            .map(|pane| lock(&pane.surface).generation)
-            .collect();
-        for (index, pane) in self.panes[..visible].iter_mut().enumerate() {
-            let surface = lock(&pane.surface);
-            if surface.method.is_none() || surface.draw_error.is_some() {
-                continue;
-            }
-            if !surface.shows(&camera) {
-                // Not drawn yet for this view: look again next frame.
-                drop(surface);
-                ctx.request_repaint();
-                return;
-            }
-            let target = surface.target.as_ref().expect("drawn, so it has a target");
-            match target.readback(&gpu) {
-                Ok(image) => {
+        for (index, readback) in reading.pending {
+            match readback.take(&gpu) {
+                Some(Ok(image)) => {
                     let image = Arc::new(image);
-                    pane.capture = Some((camera, image.clone()));
+                    self.panes[index].capture = Some((camera, image.clone()));
                     captures.push((index, image));
                 }
-                Err(e) => pane.problem = Some(e.to_string()),
+                Some(Err(e)) => self.panes[index].problem = Some(e.to_string()),
+                None => {
+                    self.panes[index].problem = Some("the GPU never answered a read-back".into())
+                }
             }
             if let PaneSource::Method { name, params } = &self.settings.panes[index].source {
                 counts.push((index, name.clone(), params.clone()));
             }
         }
+        let pane_generations = self
+            .panes
+            .iter()
+            .map(|pane| lock(&pane.surface).generation)
+            .collect();
         self.analysis.send(Request {
             id: 0,
             scene,
@@ -754,7 +795,7 @@ impl Explorer {
             motion_frame: self.motion_key().map(|key| (self.playback.frame, key)),
         });
         self.playback.stepped = false;
-        self.canvas.analysed = Some(key);
+        self.canvas.analysed = Some(reading.key);
     }
 }
 

@@ -1,5 +1,7 @@
 //! The texture every method renders its coverage into, and reading it back.
 
+use std::sync::{Arc, Mutex};
+
 use super::GpuContext;
 use crate::Error;
 use crate::coverage::CoverageImage;
@@ -110,52 +112,147 @@ impl CoverageTarget {
 
     /// Every texel as f32 rgba, row-major.
     pub(crate) fn read_texels(&self, gpu: &GpuContext) -> Result<Vec<[f32; 4]>, Error> {
-        let row_bytes = self.width * Self::TEXEL_BYTES;
-        // Buffer rows of a texture copy must start on 256-byte boundaries.
-        let padded_row_bytes = row_bytes.next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
         let bytes = gpu.catching_errors("reading the coverage target back", || {
-            let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("coverage readback"),
-                size: u64::from(padded_row_bytes) * u64::from(self.height),
-                usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-                mapped_at_creation: false,
-            });
-            let mut encoder = gpu
-                .device
-                .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                    label: Some("readback"),
-                });
-            encoder.copy_texture_to_buffer(
-                self.texture.as_image_copy(),
-                wgpu::TexelCopyBufferInfo {
-                    buffer: &buffer,
-                    layout: wgpu::TexelCopyBufferLayout {
-                        offset: 0,
-                        bytes_per_row: Some(padded_row_bytes),
-                        rows_per_image: None,
-                    },
-                },
-                wgpu::Extent3d {
-                    width: self.width,
-                    height: self.height,
-                    depth_or_array_layers: 1,
-                },
-            );
-            gpu.queue.submit([encoder.finish()]);
+            let buffer = self.copy_to_buffer(gpu);
             gpu.read_buffer(&buffer)
         })?;
-        let mut texels = Vec::with_capacity(self.width as usize * self.height as usize);
-        for row in bytes.chunks_exact(padded_row_bytes as usize) {
-            // rgba, two bytes each, little-endian.
-            texels.extend(
-                row[..row_bytes as usize]
-                    .chunks_exact(Self::TEXEL_BYTES as usize)
-                    .map(|t| {
-                        [0, 2, 4, 6].map(|i| half::f16::from_le_bytes([t[i], t[i + 1]]).to_f32())
-                    }),
-            );
+        Ok(self.texels_of(&bytes))
+    }
+
+    /// Starts reading the coverage back without waiting for it: the copy is submitted
+    /// and the buffer mapped when the GPU gets there; [`PendingReadback::take`] gives the
+    /// image on a later frame. What the explorer reads back within its frame loop, on
+    /// the desktop and on the web (where nothing can wait for the GPU) alike.
+    pub fn start_readback(&self, gpu: &GpuContext) -> Result<PendingReadback, Error> {
+        let buffer = gpu.catching_errors("reading the coverage target back", || {
+            Ok(self.copy_to_buffer(gpu))
+        })?;
+        let state = Arc::new(Mutex::new(None));
+        let answer = state.clone();
+        buffer.map_async(wgpu::MapMode::Read, .., move |result| {
+            *answer.lock().unwrap_or_else(|p| p.into_inner()) = Some(result);
+        });
+        Ok(PendingReadback {
+            buffer,
+            state,
+            width: self.width,
+            height: self.height,
+            padded_row_bytes: self.padded_row_bytes(),
+        })
+    }
+
+    fn padded_row_bytes(&self) -> u32 {
+        // Buffer rows of a texture copy must start on 256-byte boundaries.
+        (self.width * Self::TEXEL_BYTES).next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT)
+    }
+
+    /// A mappable buffer holding a copy of the target, the copy submitted.
+    fn copy_to_buffer(&self, gpu: &GpuContext) -> wgpu::Buffer {
+        let padded_row_bytes = self.padded_row_bytes();
+        let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("coverage readback"),
+            size: u64::from(padded_row_bytes) * u64::from(self.height),
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        let mut encoder = gpu
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("readback"),
+            });
+        encoder.copy_texture_to_buffer(
+            self.texture.as_image_copy(),
+            wgpu::TexelCopyBufferInfo {
+                buffer: &buffer,
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(padded_row_bytes),
+                    rows_per_image: None,
+                },
+            },
+            wgpu::Extent3d {
+                width: self.width,
+                height: self.height,
+                depth_or_array_layers: 1,
+            },
+        );
+        gpu.queue.submit([encoder.finish()]);
+        buffer
+    }
+
+    /// The texels of a copy made by `copy_to_buffer`.
+    fn texels_of(&self, bytes: &[u8]) -> Vec<[f32; 4]> {
+        texels_of(bytes, self.width, self.padded_row_bytes())
+    }
+}
+
+/// Half-float rgba rows, each padded to `padded_row_bytes`, as f32 texels.
+fn texels_of(bytes: &[u8], width: u32, padded_row_bytes: u32) -> Vec<[f32; 4]> {
+    let row_bytes = (width * CoverageTarget::TEXEL_BYTES) as usize;
+    let mut texels = Vec::new();
+    for row in bytes.chunks_exact(padded_row_bytes as usize) {
+        // rgba, two bytes each, little-endian.
+        texels.extend(
+            row[..row_bytes]
+                .chunks_exact(CoverageTarget::TEXEL_BYTES as usize)
+                .map(|t| [0, 2, 4, 6].map(|i| half::f16::from_le_bytes([t[i], t[i + 1]]).to_f32())),
+        );
+    }
+    texels
+}
+
+/// A read-back under way (see [`CoverageTarget::start_readback`]).
+pub struct PendingReadback {
+    buffer: wgpu::Buffer,
+    state: Arc<Mutex<Option<Result<(), wgpu::BufferAsyncError>>>>,
+    width: u32,
+    height: u32,
+    padded_row_bytes: u32,
+}
+
+impl PendingReadback {
+    /// Whether the GPU has answered (the image can be taken). Never waits.
+    pub fn is_answered(&self, gpu: &GpuContext) -> bool {
+        // Non-blocking; a page's browser delivers answers between frames by itself.
+        let _ = gpu.device.poll(wgpu::PollType::Poll);
+        self.state
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .is_some()
+    }
+
+    /// The coverage as the method wrote it, once the GPU has answered; None while it has
+    /// not. Never waits: on the desktop it lets wgpu deliver what has finished.
+    pub fn take(self, gpu: &GpuContext) -> Option<Result<CoverageImage, Error>> {
+        if !self.is_answered(gpu) {
+            return None;
         }
-        Ok(texels)
+        let answer = self
+            .state
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .take()?;
+        let result = answer
+            .map_err(|e| Error::Gpu(format!("cannot read a buffer back from the GPU: {e}")))
+            .and_then(|()| {
+                let bytes = self
+                    .buffer
+                    .get_mapped_range(..)
+                    .map_err(|e| {
+                        Error::Gpu(format!("cannot read a buffer back from the GPU: {e}"))
+                    })?
+                    .to_vec();
+                self.buffer.unmap();
+                Ok(CoverageImage {
+                    width: self.width,
+                    height: self.height,
+                    data: texels_of(&bytes, self.width, self.padded_row_bytes)
+                        .iter()
+                        .map(|t| t[3])
+                        .collect(),
+                })
+            });
+        Some(result)
     }
 }
 
