@@ -2,7 +2,7 @@
 """Opens a page in headless Chromium through chromedriver's W3C endpoint, waits until
 its title ends in '· ready' or holds '· error:', then saves a screenshot.
 usage: tools/web_drive.py URL OUT.png [timeout_s] [extra chromium flags...]"""
-import base64, json, subprocess, sys, time, urllib.request
+import base64, json, os, subprocess, sys, time, urllib.request
 
 url, out = sys.argv[1], sys.argv[2]
 timeout = float(sys.argv[3]) if len(sys.argv) > 3 else 120
@@ -33,6 +33,8 @@ try:
             break
         time.sleep(0.5)
     print(f"title after {time.time() - start:.1f} s: {title!r}")
+    # Seconds more for what comes after the first frame (the numbers of a view at rest).
+    time.sleep(float(os.environ.get("WEB_DRIVE_SETTLE", "0")))
     png = base64.b64decode(call("GET", f"/session/{session}/screenshot"))
     open(out, "wb").write(png)
     logs = call("POST", f"/session/{session}/execute/sync", {"script": "return document.getElementById('message') ? document.getElementById('message').textContent : ''", "args": []})

@@ -85,49 +85,74 @@ struct PreviousFrame {
 /// The worker's prepared copy of a pane's method: (scene generation, name, parameters).
 type Counter = (u64, String, Vec<(String, String)>, Box<dyn Method>);
 
-/// The background worker and its mailboxes.
+/// What the worker keeps between requests: the last reference (reused while only the
+/// panes change), each pane's prepared counting method, the last frame of a motion.
+#[derive(Default)]
+struct Worker {
+    last: Option<(u64, Camera, Arc<CoverageImage>)>,
+    counters: HashMap<usize, Counter>,
+    previous: Option<PreviousFrame>,
+}
+
+impl Worker {
+    /// The numbers of one view; curves per pixel only with a GPU to count them on.
+    fn answer(&mut self, request: &Request, gpu: Option<&GpuContext>) -> Outcome {
+        let mut outcome = analyse(request, &mut self.last);
+        outcome.temporal = temporal(request, &outcome, &mut self.previous);
+        if let Some(gpu) = gpu {
+            outcome.curves = count_curves(gpu, request, &mut self.counters);
+        }
+        outcome
+    }
+}
+
+/// The background worker and its mailboxes. On the web, which has no threads yet, the
+/// worker answers each request as it is sent, within the frame, without counting
+/// curves (a counting pass waits for the GPU).
 pub struct Analysis {
+    #[cfg(not(target_arch = "wasm32"))]
     requests: Sender<Request>,
+    #[cfg(target_arch = "wasm32")]
+    inline: (Worker, Sender<Outcome>),
     outcomes: Receiver<Outcome>,
     sent: u64,
     answered: u64,
 }
 
 impl Analysis {
+    #[cfg(not(target_arch = "wasm32"))]
     pub fn start(ctx: egui::Context, gpu: Option<GpuContext>) -> Analysis {
         let (requests, inbox) = channel::<Request>();
         let (outbox, outcomes) = channel();
-        let worker = move || {
-            let mut last: Option<(u64, Camera, Arc<CoverageImage>)> = None;
-            let mut counters: HashMap<usize, Counter> = HashMap::new();
-            let mut previous: Option<PreviousFrame> = None;
-            while let Ok(mut request) = inbox.recv() {
-                // Only the newest view matters.
-                while let Ok(newer) = inbox.try_recv() {
-                    request = newer;
-                }
-                let mut outcome = analyse(&request, &mut last);
-                outcome.temporal = temporal(&request, &outcome, &mut previous);
-                if let Some(gpu) = &gpu {
-                    outcome.curves = count_curves(gpu, &request, &mut counters);
-                }
-                if outbox.send(outcome).is_err() {
-                    return;
-                }
-                ctx.request_repaint();
-            }
-        };
-        // A page (wasm32) has no threads yet: there the view's numbers are not worked
-        // out (see `web`) and no request is sent.
-        #[cfg(target_arch = "wasm32")]
-        drop(worker);
-        #[cfg(not(target_arch = "wasm32"))]
         std::thread::Builder::new()
             .name("reference and error".into())
-            .spawn(worker)
+            .spawn(move || {
+                let mut worker = Worker::default();
+                while let Ok(mut request) = inbox.recv() {
+                    // Only the newest view matters.
+                    while let Ok(newer) = inbox.try_recv() {
+                        request = newer;
+                    }
+                    if outbox.send(worker.answer(&request, gpu.as_ref())).is_err() {
+                        return;
+                    }
+                    ctx.request_repaint();
+                }
+            })
             .expect("a thread can be started");
         Analysis {
             requests,
+            outcomes,
+            sent: 0,
+            answered: 0,
+        }
+    }
+
+    #[cfg(target_arch = "wasm32")]
+    pub fn start(_: egui::Context, _: Option<GpuContext>) -> Analysis {
+        let (outbox, outcomes) = channel();
+        Analysis {
+            inline: (Worker::default(), outbox),
             outcomes,
             sent: 0,
             answered: 0,
@@ -138,7 +163,13 @@ impl Analysis {
         self.sent += 1;
         request.id = self.sent;
         // The worker lives as long as the app; if it died, the numbers just stay unknown.
+        #[cfg(not(target_arch = "wasm32"))]
         let _ = self.requests.send(request);
+        #[cfg(target_arch = "wasm32")]
+        {
+            let (worker, outbox) = &mut self.inline;
+            let _ = outbox.send(worker.answer(&request, None));
+        }
     }
 
     /// Whether the newest request is still being worked on.

@@ -680,12 +680,6 @@ impl Explorer {
     /// Once the view has rested: reads each pane's coverage back once and asks the
     /// background worker for the reference, the errors and the curves per pixel.
     pub(super) fn settle(&mut self, ctx: &egui::Context) {
-        // A page cannot wait for a read-back within a frame: until the read-backs are
-        // asynchronous, the web explorer draws the panes without their numbers (the
-        // status bar says so).
-        if cfg!(target_arch = "wasm32") {
-            return;
-        }
         let (Some(camera), Some(scene)) = (self.canvas.camera, self.scene.scene().cloned()) else {
             return;
         };

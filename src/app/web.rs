@@ -67,10 +67,10 @@ impl WebHandle {
     }
 }
 
-/// What the page cannot do yet, said in the status bar: the explorer reads nothing back
-/// on the web (a read-back waits for the GPU within the frame, which a page cannot).
-pub const LIMITS: &str = "web page: the panes draw, but nothing is read back yet — no reference, \
-    error figures, inspector or sweep here (the desktop explorer has them)";
+/// What the page cannot do yet, said in the status bar: what waits for the GPU within a
+/// frame, and what needs a thread.
+pub const LIMITS: &str = "web page: the reference and the errors are worked out within the frame; \
+    no curves per pixel, worst-pixel jump or sweep here yet (the desktop explorer has them)";
 
 /// After each frame: once every pane drawing a method has drawn the view, the page's
 /// title ends in `· ready` (what a driver waits for).
