@@ -85,6 +85,13 @@ struct PreviousFrame {
 /// The worker's prepared copy of a pane's method: (scene generation, name, parameters).
 type Counter = (u64, String, Vec<(String, String)>, Box<dyn Method>);
 
+/// Where the worker works out the numbers, as the panes and the status bar say it.
+pub const WHERE: &str = if cfg!(target_arch = "wasm32") {
+    "within the frame"
+} else {
+    "background"
+};
+
 /// What the worker keeps between requests: the last reference (reused while only the
 /// panes change), each pane's prepared counting method, the last frame of a motion.
 #[derive(Default)]

@@ -509,7 +509,10 @@ impl Explorer {
         if matches!(&self.settings.panes[index].source, PaneSource::Method { name, .. } if name == REFERENCE)
         {
             if let Some(ms) = self.reference.cpu_ms {
-                lines.push(format!("CPU {ms:.0} ms (exact, background)"));
+                lines.push(format!(
+                    "CPU {ms:.0} ms (exact, {})",
+                    super::analysis::WHERE
+                ));
             }
             return lines;
         }

@@ -341,7 +341,10 @@ impl Explorer {
                     );
             }
             if let Some(ms) = self.reference.cpu_ms {
-                ui.weak(format!("reference {ms:.0} ms (CPU, background)"));
+                ui.weak(format!(
+                    "reference {ms:.0} ms (CPU, {})",
+                    super::analysis::WHERE
+                ));
             }
             if self.analysis.busy() {
                 ui.spinner();
