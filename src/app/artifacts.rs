@@ -10,7 +10,7 @@ use super::gpu_view::lock;
 use super::panes::{REFERENCE, pane_letter};
 use super::settings::{CameraSettings, PaneSource, SceneSettings};
 use crate::camera::Camera;
-use crate::methods::frame;
+use crate::gpu::{CoverageTarget, PendingReadback};
 use crate::metrics::{self, PixelError};
 use crate::reference;
 
@@ -25,6 +25,28 @@ const ARTIFACT_MAGNIFY: u32 = 16;
 pub struct WorstPixelRequest {
     camera: CameraSettings,
     scene: SceneSettings,
+}
+
+/// A search for a pane's artifacts under way: its method drawn into a frame of its own,
+/// read back without waiting (`PendingReadback`), then compared with the reference on
+/// a later frame; and what to do with the answer.
+pub struct ArtifactSearch {
+    pane: usize,
+    camera: Camera,
+    then: Then,
+    // Kept alive until the read-back is taken.
+    _target: CoverageTarget,
+    readback: PendingReadback,
+}
+
+/// What a search is for.
+#[derive(Clone, Copy)]
+enum Then {
+    /// A case's frame larger than the pane: move the pane's window onto the frame's
+    /// worst pixel, then go to the worst pixel as `Step(None)` does.
+    BringCaseWorst,
+    /// Go to the worst pixel (None) or step on from the one `shown` (Some(forward)).
+    Step(Option<bool>, Option<(u32, u32)>),
 }
 
 /// One pane's pixels over the threshold, and the one shown.
@@ -81,8 +103,6 @@ impl Explorer {
         if ready {
             self.worst_pixel_pending = None;
             self.bring_case_worst_into_pane(pane);
-            self.step_through_artifacts(None, pane);
-            // The magnifier moved after this frame's panes were laid out.
             ctx.request_repaint();
         }
     }
@@ -95,21 +115,12 @@ impl Explorer {
         let (Some(frame), Some((width, height))) =
             (self.scene.case_camera().copied(), self.canvas.pane_size)
         else {
-            return;
+            return self.step_through_artifacts(None, pane);
         };
         if frame.width <= width && frame.height <= height {
-            return;
+            return self.step_through_artifacts(None, pane);
         }
-        let worst = match self.find_artifacts(pane, &frame) {
-            Ok((_, (pixel, _))) => pixel,
-            Err(message) => {
-                self.set_status(format!("pane {}: {message}", pane_letter(pane)));
-                return;
-            }
-        };
-        self.settings
-            .camera
-            .show_frame_pixel(worst, (width, height));
+        self.start_search(pane, frame, Then::BringCaseWorst);
     }
 
     /// Whether pane `index` shows a GPU method (not the reference or a difference).
@@ -150,27 +161,15 @@ impl Explorer {
             .and_then(|a| a.pixels.get(a.current))
             .map(|p| p.0);
         if !current {
-            match self.find_artifacts(pane, &camera) {
-                Ok((pixels, worst)) => {
-                    let found = shown.and_then(|s| pixels.iter().position(|p| p.0 == s));
-                    self.artifacts = Some(Artifacts {
-                        pane,
-                        source,
-                        scene_generation: generation,
-                        camera,
-                        worst,
-                        current: found.unwrap_or(0),
-                        found_again: found.is_some(),
-                        pixels,
-                    });
-                }
-                Err(message) => {
-                    self.artifacts = None;
-                    self.set_status(format!("pane {}: {message}", pane_letter(pane)));
-                    return;
-                }
-            }
+            self.start_search(pane, camera, Then::Step(step, shown));
+            return;
         }
+        self.show_artifact(step, pane, true);
+    }
+
+    /// Centres the magnifier on the artifact `step` asks for among those found, and says
+    /// which in the status bar; `current`: the list was already this view's.
+    fn show_artifact(&mut self, step: Option<bool>, pane: usize, current: bool) {
         let Some(artifacts) = self.artifacts.as_mut() else {
             return;
         };
@@ -216,38 +215,128 @@ impl Explorer {
         camera.focus = [f64::from(x) + 0.5, f64::from(y) + 0.5];
     }
 
-    /// Pane `pane`'s pixels over the threshold at the ×1 `camera`, worst first, and its
-    /// worst pixel: its prepared method drawn into a frame of its own and read back as
-    /// `render` does (coverage over 1 taken down to the union's 1), against the CPU
-    /// reference.
-    fn find_artifacts(
+    /// Starts working out pane `pane`'s pixels over the threshold at the ×1 `camera`:
+    /// its prepared method drawn into a frame of its own and read back as `render` does
+    /// (coverage over 1 taken down to the union's 1), compared with the CPU reference
+    /// once the GPU has answered ([`Explorer::poll_artifact_search`]).
+    fn start_search(&mut self, pane: usize, camera: Camera, then: Then) {
+        match self.draw_for_search(pane, &camera) {
+            Ok((target, readback)) => {
+                self.artifact_search = Some(ArtifactSearch {
+                    pane,
+                    camera,
+                    then,
+                    _target: target,
+                    readback,
+                });
+            }
+            Err(message) => {
+                self.artifacts = None;
+                self.set_status(format!("pane {}: {message}", pane_letter(pane)));
+            }
+        }
+    }
+
+    fn draw_for_search(
         &self,
         pane: usize,
         camera: &Camera,
-    ) -> Result<(Vec<PixelError>, PixelError), String> {
+    ) -> Result<(CoverageTarget, PendingReadback), String> {
         let Some((gpu, _)) = &self.gpu else {
             return Err("no wgpu device".into());
-        };
-        let Some(scene) = self.scene.scene() else {
-            return Err("no scene".into());
         };
         if !self.pane_is_gpu_method(pane) {
             return Err("worst pixels are a GPU method's; this pane shows none".into());
         }
-        let image = {
-            let mut surface = lock(&self.panes[pane].surface);
-            let method = surface
-                .method
-                .as_mut()
-                .ok_or("the pane's method is not ready")?;
-            frame::render_image(gpu, method.as_mut(), camera)
-                .map_err(|e| e.to_string())?
-                .clamp_to_union()
+        let mut surface = lock(&self.panes[pane].surface);
+        let method = surface
+            .method
+            .as_mut()
+            .ok_or("the pane's method is not ready")?;
+        let target =
+            CoverageTarget::new(gpu, camera.width, camera.height).map_err(|e| e.to_string())?;
+        gpu.catching_errors("drawing the pane's frame", || {
+            let mut encoder = gpu.device.create_command_encoder(&Default::default());
+            method.encode(gpu, &mut encoder, &target, camera)?;
+            gpu.queue.submit([encoder.finish()]);
+            Ok(())
+        })
+        .map_err(|e| e.to_string())?;
+        let readback = target.start_readback(gpu).map_err(|e| e.to_string())?;
+        Ok((target, readback))
+    }
+
+    /// Once a frame: finishes the search under way when the GPU has answered.
+    pub(super) fn poll_artifact_search(&mut self, ctx: &egui::Context) {
+        let Some((gpu, _)) = self.gpu.clone() else {
+            return;
         };
+        if !self
+            .artifact_search
+            .as_ref()
+            .is_some_and(|s| s.readback.is_answered(&gpu))
+        {
+            if self.artifact_search.is_some() {
+                ctx.request_repaint();
+            }
+            return;
+        }
+        let Some(search) = self.artifact_search.take() else {
+            return;
+        };
+        let pane = search.pane;
+        let found = search
+            .readback
+            .take(&gpu)
+            .ok_or_else(|| "the GPU never answered a read-back".to_string())
+            .and_then(|image| image.map_err(|e| e.to_string()))
+            .and_then(|image| self.compare_with_reference(&image.clamp_to_union(), &search.camera));
+        let (pixels, worst) = match found {
+            Ok(found) => found,
+            Err(message) => {
+                self.artifacts = None;
+                self.set_status(format!("pane {}: {message}", pane_letter(pane)));
+                return;
+            }
+        };
+        match search.then {
+            Then::BringCaseWorst => {
+                if let Some(size) = self.canvas.pane_size {
+                    self.settings.camera.show_frame_pixel(worst.0, size);
+                }
+                self.step_through_artifacts(None, pane);
+            }
+            Then::Step(step, shown) => {
+                let found = shown.and_then(|s| pixels.iter().position(|p| p.0 == s));
+                self.artifacts = Some(Artifacts {
+                    pane,
+                    source: self.settings.panes[pane].source.clone(),
+                    scene_generation: self.scene.generation(),
+                    camera: search.camera,
+                    worst,
+                    current: found.unwrap_or(0),
+                    found_again: found.is_some(),
+                    pixels,
+                });
+                self.show_artifact(step, pane, false);
+            }
+        }
+        // The magnifier moved after this frame's panes were laid out.
+        ctx.request_repaint();
+    }
+
+    /// The pixels of `image` over the threshold against the reference at `camera`,
+    /// worst first, and its worst pixel.
+    fn compare_with_reference(
+        &self,
+        image: &crate::coverage::CoverageImage,
+        camera: &Camera,
+    ) -> Result<(Vec<PixelError>, PixelError), String> {
+        let scene = self.scene.scene().ok_or("no scene")?;
         let reference = reference::rasterize(scene, camera).map_err(|e| e.to_string())?;
-        let over = metrics::pixels_over(&image, &reference, ARTIFACT_THRESHOLD)
+        let over = metrics::pixels_over(image, &reference, ARTIFACT_THRESHOLD)
             .map_err(|e| e.to_string())?;
-        let stats = metrics::compare(&image, &reference).map_err(|e| e.to_string())?;
+        let stats = metrics::compare(image, &reference).map_err(|e| e.to_string())?;
         Ok((over, (stats.worst_pixel, stats.max)))
     }
 }

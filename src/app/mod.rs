@@ -133,6 +133,8 @@ pub struct Explorer {
     help_open: bool,
     /// The pixels the magnifier was last centred on by "worst pixel", to step on from.
     artifacts: Option<artifacts::Artifacts>,
+    /// A search for a pane's artifacts waiting for the GPU's answer.
+    artifact_search: Option<artifacts::ArtifactSearch>,
     blink: blink::Blink,
     cases: cases_menu::CasesMenu,
     /// Go to the worst pixel once a pane is ready (see `go_to_worst_pixel_when_ready`).
@@ -233,6 +235,7 @@ impl Explorer {
             font_dialog: FontDialog::default(),
             help_open: false,
             artifacts: None,
+            artifact_search: None,
             blink: blink::Blink::default(),
             cases: cases_menu::CasesMenu::default(),
             worst_pixel_pending: None,
@@ -313,6 +316,7 @@ impl Explorer {
         self.view_settled()
             && !(placing && self.scene.scene().is_some())
             && self.worst_pixel_pending.is_none()
+            && self.artifact_search.is_none()
     }
 
     /// Whether the reference and every pane's numbers are worked out for this view, and
@@ -406,6 +410,7 @@ impl Explorer {
         self.settle(&ctx);
         self.tick_playback(&ctx);
         self.answer_worst_pixel_request(&ctx);
+        self.poll_artifact_search(&ctx);
         if self.settings.continuous {
             ctx.request_repaint();
         }

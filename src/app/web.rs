@@ -70,7 +70,7 @@ impl WebHandle {
 /// What the page cannot do yet, said in the status bar: what waits for the GPU within a
 /// frame, and what needs a thread.
 pub const LIMITS: &str = "web page: the reference and the errors are worked out within the frame; \
-    no curves per pixel, worst-pixel jump or sweep here yet (the desktop explorer has them)";
+    no curves per pixel or sweep here yet (the desktop explorer has them)";
 
 /// After each frame: once every pane drawing a method has drawn the view, the page's
 /// title ends in `· ready` (what a driver waits for).
