@@ -15,6 +15,7 @@ def call(method, path, body=None):
         data=None if body is None else json.dumps(body).encode(), headers={"Content-Type": "application/json"})
     with urllib.request.urlopen(req, timeout=60) as r:
         return json.load(r)["value"]
+title = ""
 try:
     for _ in range(50):
         try:
@@ -37,8 +38,8 @@ try:
     time.sleep(float(os.environ.get("WEB_DRIVE_SETTLE", "0")))
     png = base64.b64decode(call("GET", f"/session/{session}/screenshot"))
     open(out, "wb").write(png)
-    logs = call("POST", f"/session/{session}/execute/sync", {"script": "return document.getElementById('message') ? document.getElementById('message').textContent : ''", "args": []})
-    print("message:", logs)
+    message = call("POST", f"/session/{session}/execute/sync", {"script": "return document.getElementById('message') ? document.getElementById('message').textContent : ''", "args": []})
+    print("message:", message)
     try:
         for entry in call("POST", f"/session/{session}/se/log", {"type": "browser"})[-15:]:
             print("console:", entry.get("level"), entry.get("message")[:400])
@@ -47,3 +48,5 @@ try:
     call("DELETE", f"/session/{session}")
 finally:
     driver.kill()
+# A driver that can fail: not ready in time, or an error in the title, is exit 1.
+sys.exit(0 if title.endswith("· ready") else 1)

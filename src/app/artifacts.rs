@@ -34,6 +34,10 @@ pub struct ArtifactSearch {
     pane: usize,
     camera: Camera,
     then: Then,
+    /// What it was started for: an answer for a view changed since is dropped.
+    source: PaneSource,
+    scene_generation: u64,
+    settings_camera: CameraSettings,
     // Kept alive until the read-back is taken.
     _target: CoverageTarget,
     readback: PendingReadback,
@@ -226,6 +230,9 @@ impl Explorer {
                     pane,
                     camera,
                     then,
+                    source: self.settings.panes[pane].source.clone(),
+                    scene_generation: self.scene.generation(),
+                    settings_camera: self.settings.camera,
                     _target: target,
                     readback,
                 });
@@ -285,6 +292,14 @@ impl Explorer {
             return;
         };
         let pane = search.pane;
+        // The method, the scene or the camera changed while the GPU worked: the answer
+        // is for a view no longer shown.
+        if search.source != self.settings.panes[pane].source
+            || search.scene_generation != self.scene.generation()
+            || search.settings_camera != self.settings.camera
+        {
+            return;
+        }
         let found = search
             .readback
             .take(&gpu)

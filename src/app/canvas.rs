@@ -720,17 +720,22 @@ impl Explorer {
         // Read each drawn pane back without waiting: started once the view has rested
         // and every pane has drawn it, taken on the frames after, then sent.
         if self.canvas.reading.as_ref().is_none_or(|r| r.key != key) {
+            // Every pane drawn for this view first, so that no read-back is started and
+            // then dropped.
+            let all_drawn = self.panes[..visible].iter().all(|pane| {
+                let surface = lock(&pane.surface);
+                surface.method.is_none() || surface.draw_error.is_some() || surface.shows(&camera)
+            });
+            if !all_drawn {
+                self.canvas.reading = None;
+                ctx.request_repaint();
+                return;
+            }
             let mut pending = Vec::new();
             for (index, pane) in self.panes[..visible].iter_mut().enumerate() {
                 let surface = lock(&pane.surface);
                 if surface.method.is_none() || surface.draw_error.is_some() {
                     continue;
-                }
-                if !surface.shows(&camera) {
-                    // Not drawn yet for this view: look again next frame.
-                    drop(surface);
-                    ctx.request_repaint();
-                    return;
                 }
                 let target = surface.target.as_ref().expect("drawn, so it has a target");
                 match target.start_readback(&gpu) {

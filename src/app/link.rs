@@ -42,6 +42,9 @@ pub struct LinkedView {
     pub camera_given: bool,
 }
 
+/// The farthest frame a link may show, either way: steps from it cannot overflow.
+const MAX_FRAME: i64 = 1_000_000_000;
+
 /// The keys that place the camera.
 const CAMERA_KEYS: &[&str] = &[
     "size", "origin", "rotate", "skew", "tilt", "offset", "frame", "focus",
@@ -112,8 +115,8 @@ pub fn fragment(settings: &Settings, frame: i64) -> Result<String, String> {
     }
     put("magnify", c.magnify.to_string());
     put("focus", pair(c.focus));
+    put("motion", settings.motion_path.clone());
     if MotionPath::parse(&settings.motion_path).is_ok_and(|p| !p.is_still()) {
-        put("motion", settings.motion_path.clone());
         put("at", frame.to_string());
     }
     Ok(parts
@@ -143,7 +146,7 @@ pub fn open(fragment: &str) -> Result<LinkedView, String> {
         let value = decode(raw).map_err(|e| format!("link: {key}: {e}"))?;
         view.camera_given |= CAMERA_KEYS.contains(&key);
         apply(&mut view, key, &value, &mut layout_given)
-            .map_err(|e| format!("link: {key}={value}: {e}"))?;
+            .map_err(|e| format!("link: {key}={}: {e}", value.escape_debug()))?;
     }
     Ok(view)
 }
@@ -240,8 +243,10 @@ fn apply(
         }
         "at" => {
             view.frame = value
-                .parse()
-                .map_err(|_| "not a frame number".to_string())?
+                .parse::<i64>()
+                .ok()
+                .filter(|n| n.abs() <= MAX_FRAME)
+                .ok_or_else(|| format!("not a frame number from -{MAX_FRAME} to {MAX_FRAME}"))?;
         }
         _ => return pane_key(s, key, value, *layout_given),
     }
@@ -390,7 +395,9 @@ fn decode(text: &str) -> Result<String, String> {
                 .and_then(|h| std::str::from_utf8(h).ok())
                 .and_then(|h| u8::from_str_radix(h, 16).ok())
                 .ok_or_else(|| {
-                    format!("'{}' is not a %XX escape", &text[i..text.len().min(i + 3)])
+                    // By characters: the bytes after a '%' may be a character's middle.
+                    let escape: String = text[i..].chars().take(3).collect();
+                    format!("'{escape}' is not a %XX escape")
                 })?;
             out.push(hex);
             i += 3;
@@ -508,6 +515,9 @@ mod tests {
             ("#frame=1,2,3", "frame=1,2,3"),
             ("#font=99", "font=99"),
             ("#a.outline=yes", "a.outline=yes"),
+            ("#text=%€", "'%€' is not"),
+            ("#case=a%0Ab", "case=a\\nb"),
+            ("#at=9223372036854775807", "at=9223372036854775807"),
         ] {
             let e = open(link).unwrap_err();
             assert!(e.starts_with("link: ") && !e.contains('\n'), "{link}: {e}");

@@ -171,9 +171,18 @@ impl Explorer {
     /// and one line saying what is wrong with it.
     pub fn open_link(&mut self, link: &str) {
         self.auto_fit = canvas::AutoFit::default();
+        // A link carries the view, not the display preferences (colours, display mode,
+        // darkening): those stay as they are.
+        let mut show = |settings: Settings| {
+            self.settings.scene = settings.scene;
+            self.settings.camera = settings.camera;
+            self.settings.layout = settings.layout;
+            self.settings.panes = settings.panes;
+            self.settings.motion_path = settings.motion_path;
+        };
         match link::open(link) {
             Ok(view) => {
-                self.settings = view.settings;
+                show(view.settings);
                 self.playback.frame = view.frame;
                 self.set_status(String::new());
                 if let (Some(case), false) = (self.settings.scene.case.clone(), view.camera_given) {
@@ -181,7 +190,7 @@ impl Explorer {
                 }
             }
             Err(e) => {
-                self.settings = Settings::default();
+                show(Settings::default());
                 self.playback.frame = 0;
                 self.set_status(e);
             }

@@ -199,6 +199,7 @@ impl ParetoSweep {
             })
             .map_err(|e| format!("the sweep needs a thread: {e}"));
         if let Err(why) = started {
+            self.running = None;
             self.problems.push(why);
         }
     }
