@@ -126,16 +126,28 @@ pub fn run_bench(args: &BenchArgs) -> Result<(), Error> {
     Ok(())
 }
 
+/// The view options `--case` replaces (a named view is a whole view).
+const VIEW_OPTIONS: [&str; 11] = [
+    "font",
+    "text",
+    "glyph_id",
+    "size",
+    "width",
+    "height",
+    "origin",
+    "matrix",
+    "world_offset",
+    "tilt",
+    "variation",
+];
+
 /// `glyphscope motion`'s arguments.
 #[derive(Args, Clone, Debug)]
 pub struct MotionArgs {
     #[command(flatten)]
     pub view: ViewArgs,
     /// A named view instead of the view options (see `render --case`).
-    #[arg(long, conflicts_with_all = [
-        "font", "text", "glyph_id", "size", "width", "height", "origin", "matrix",
-        "world_offset", "tilt", "variation",
-    ])]
+    #[arg(long, conflicts_with_all = VIEW_OPTIONS)]
     pub case: Option<String>,
     /// The camera's path, its speed per frame: drift:DX,DY (pixels), rotate:DEG or
     /// rotate:DEG@X,Y (counter-clockwise, about the image centre or pixel X,Y), zoom:F,
@@ -179,10 +191,7 @@ pub struct RenderArgs {
     /// A named view instead of the view options: a hard case of `glyphscope stability`
     /// (unturned, at sub-pixel offset 0) or a bench scene (page, tiny, headlines, …),
     /// the views the explorer's Cases menu loads.
-    #[arg(long, conflicts_with_all = [
-        "font", "text", "glyph_id", "size", "width", "height", "origin", "matrix",
-        "world_offset", "tilt", "variation",
-    ])]
+    #[arg(long, conflicts_with_all = VIEW_OPTIONS)]
     pub case: Option<String>,
     /// The method that draws it; one of the registry's (see `--help`).
     #[arg(long, help = method_help())]

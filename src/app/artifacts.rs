@@ -11,6 +11,7 @@ use super::panes::{REFERENCE, pane_letter};
 use super::settings::{CameraSettings, PaneSource, SceneSettings};
 use crate::camera::Camera;
 use crate::gpu::{CoverageTarget, PendingReadback};
+use crate::methods::frame;
 use crate::metrics::{self, PixelError};
 use crate::reference;
 
@@ -38,8 +39,6 @@ pub struct ArtifactSearch {
     source: PaneSource,
     scene_generation: u64,
     settings_camera: CameraSettings,
-    // Kept alive until the read-back is taken.
-    _target: CoverageTarget,
     readback: PendingReadback,
 }
 
@@ -225,7 +224,7 @@ impl Explorer {
     /// once the GPU has answered ([`Explorer::poll_artifact_search`]).
     fn start_search(&mut self, pane: usize, camera: Camera, then: Then) {
         match self.draw_for_search(pane, &camera) {
-            Ok((target, readback)) => {
+            Ok(readback) => {
                 self.artifact_search = Some(ArtifactSearch {
                     pane,
                     camera,
@@ -233,7 +232,6 @@ impl Explorer {
                     source: self.settings.panes[pane].source.clone(),
                     scene_generation: self.scene.generation(),
                     settings_camera: self.settings.camera,
-                    _target: target,
                     readback,
                 });
             }
@@ -244,11 +242,7 @@ impl Explorer {
         }
     }
 
-    fn draw_for_search(
-        &self,
-        pane: usize,
-        camera: &Camera,
-    ) -> Result<(CoverageTarget, PendingReadback), String> {
+    fn draw_for_search(&self, pane: usize, camera: &Camera) -> Result<PendingReadback, String> {
         let Some((gpu, _)) = &self.gpu else {
             return Err("no wgpu device".into());
         };
@@ -262,15 +256,9 @@ impl Explorer {
             .ok_or("the pane's method is not ready")?;
         let target =
             CoverageTarget::new(gpu, camera.width, camera.height).map_err(|e| e.to_string())?;
-        gpu.catching_errors("drawing the pane's frame", || {
-            let mut encoder = gpu.device.create_command_encoder(&Default::default());
-            method.encode(gpu, &mut encoder, &target, camera)?;
-            gpu.queue.submit([encoder.finish()]);
-            Ok(())
-        })
-        .map_err(|e| e.to_string())?;
-        let readback = target.start_readback(gpu).map_err(|e| e.to_string())?;
-        Ok((target, readback))
+        frame::submit_frame(gpu, method.as_mut(), &target, camera).map_err(|e| e.to_string())?;
+        // The target may go: wgpu keeps what submitted work reads until it is done.
+        target.start_readback(gpu).map_err(|e| e.to_string())
     }
 
     /// Once a frame: finishes the search under way when the GPU has answered.
@@ -302,9 +290,8 @@ impl Explorer {
         }
         let found = search
             .readback
-            .take(&gpu)
-            .ok_or_else(|| "the GPU never answered a read-back".to_string())
-            .and_then(|image| image.map_err(|e| e.to_string()))
+            .take()
+            .map_err(|e| e.to_string())
             .and_then(|image| self.compare_with_reference(&image.clamp_to_union(), &search.camera));
         let (pixels, worst) = match found {
             Ok(found) => found,

@@ -766,16 +766,13 @@ impl Explorer {
         let mut captures = Vec::new();
         let mut counts = Vec::new();
         for (index, readback) in reading.pending {
-            match readback.take(&gpu) {
-                Some(Ok(image)) => {
+            match readback.take() {
+                Ok(image) => {
                     let image = Arc::new(image);
                     self.panes[index].capture = Some((camera, image.clone()));
                     captures.push((index, image));
                 }
-                Some(Err(e)) => self.panes[index].problem = Some(e.to_string()),
-                None => {
-                    self.panes[index].problem = Some("the GPU never answered a read-back".into())
-                }
+                Err(e) => self.panes[index].problem = Some(e.to_string()),
             }
             if let PaneSource::Method { name, params } = &self.settings.panes[index].source {
                 counts.push((index, name.clone(), params.clone()));

@@ -27,6 +27,7 @@
 //! | `magnify`, `focus` | the magnifier's N, and its centre in pane pixels `X,Y` |
 //! | `motion`, `at` | a motion path (`glyphscope motion --path`) and the frame shown |
 
+use super::panes::pane_letter;
 use super::settings::{CaseFrame, FontChoice, Layout, PANES, PaneOverlay, PaneSource, Settings};
 use crate::font::SHIPPED_FONTS;
 use crate::methods::registry;
@@ -327,8 +328,9 @@ fn pane_source(source: &PaneSource) -> String {
     }
 }
 
+/// A pane's key: its letter (`pane_letter`) in lower case.
 fn letter(index: usize) -> String {
-    char::from(b'a' + index as u8).to_string()
+    pane_letter(index).to_ascii_lowercase().to_string()
 }
 
 fn pane_index(letter: &str) -> Option<usize> {

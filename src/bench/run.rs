@@ -211,16 +211,7 @@ impl ViewUnderTest<'_> {
 /// Parameters as `k=v, k=v`, or `default` (the atlas's cache size, the same for every
 /// case of a scene, left out).
 pub fn settings_text(params: &[(String, String)]) -> String {
-    let shown: Vec<String> = params
-        .iter()
-        .filter(|(k, _)| k != "cache_px_per_em")
-        .map(|(k, v)| format!("{k}={v}"))
-        .collect();
-    if shown.is_empty() {
-        "default".into()
-    } else {
-        shown.join(", ")
-    }
+    methods::settings_text(params.iter().filter(|(k, _)| k != "cache_px_per_em"))
 }
 
 /// A view of a scene a peer refused to draw, and why (its documented limit).

@@ -90,12 +90,11 @@ impl CoverageTarget {
     /// [`CoverageImage::range`]) before [`CoverageImage::clamp_to_union`] unites
     /// overlapping instances.
     pub fn readback(&self, gpu: &GpuContext) -> Result<CoverageImage, Error> {
-        let texels = self.read_texels(gpu)?;
-        Ok(CoverageImage {
-            width: self.width,
-            height: self.height,
-            data: texels.iter().map(|t| t[3]).collect(),
-        })
+        Ok(coverage_of(
+            self.width,
+            self.height,
+            &self.read_texels(gpu)?,
+        ))
     }
 
     /// Copies the overlay picture (rgb, premultiplied, over black) back as 8-bit sRGB-less
@@ -116,7 +115,7 @@ impl CoverageTarget {
             let buffer = self.copy_to_buffer(gpu);
             gpu.read_buffer(&buffer)
         })?;
-        Ok(self.texels_of(&bytes))
+        Ok(texels_of(&bytes, self.width, self.padded_row_bytes()))
     }
 
     /// Starts reading the coverage back without waiting for it: the copy is submitted
@@ -179,11 +178,6 @@ impl CoverageTarget {
         gpu.queue.submit([encoder.finish()]);
         buffer
     }
-
-    /// The texels of a copy made by `copy_to_buffer`.
-    fn texels_of(&self, bytes: &[u8]) -> Vec<[f32; 4]> {
-        texels_of(bytes, self.width, self.padded_row_bytes())
-    }
 }
 
 /// Half-float rgba rows, each padded to `padded_row_bytes`, as f32 texels.
@@ -199,6 +193,15 @@ fn texels_of(bytes: &[u8], width: u32, padded_row_bytes: u32) -> Vec<[f32; 4]> {
         );
     }
     texels
+}
+
+/// The coverage (alpha) of a target's texels.
+fn coverage_of(width: u32, height: u32, texels: &[[f32; 4]]) -> CoverageImage {
+    CoverageImage {
+        width,
+        height,
+        data: texels.iter().map(|t| t[3]).collect(),
+    }
 }
 
 /// A read-back under way (see [`CoverageTarget::start_readback`]).
@@ -221,38 +224,27 @@ impl PendingReadback {
             .is_some()
     }
 
-    /// The coverage as the method wrote it, once the GPU has answered; None while it has
-    /// not. Never waits: on the desktop it lets wgpu deliver what has finished.
-    pub fn take(self, gpu: &GpuContext) -> Option<Result<CoverageImage, Error>> {
-        if !self.is_answered(gpu) {
-            return None;
-        }
+    /// The coverage as the method wrote it, once [`PendingReadback::is_answered`]; an
+    /// error before.
+    pub fn take(self) -> Result<CoverageImage, Error> {
         let answer = self
             .state
             .lock()
             .unwrap_or_else(|p| p.into_inner())
-            .take()?;
-        let result = answer
-            .map_err(|e| Error::Gpu(format!("cannot read a buffer back from the GPU: {e}")))
-            .and_then(|()| {
-                let bytes = self
-                    .buffer
-                    .get_mapped_range(..)
-                    .map_err(|e| {
-                        Error::Gpu(format!("cannot read a buffer back from the GPU: {e}"))
-                    })?
-                    .to_vec();
-                self.buffer.unmap();
-                Ok(CoverageImage {
-                    width: self.width,
-                    height: self.height,
-                    data: texels_of(&bytes, self.width, self.padded_row_bytes)
-                        .iter()
-                        .map(|t| t[3])
-                        .collect(),
-                })
-            });
-        Some(result)
+            .take()
+            .ok_or_else(|| Error::Gpu("a read-back was taken before the GPU answered".into()))?;
+        let unreadable = |e: &dyn std::fmt::Display| {
+            Error::Gpu(format!("cannot read a buffer back from the GPU: {e}"))
+        };
+        answer.map_err(|e| unreadable(&e))?;
+        let bytes = self
+            .buffer
+            .get_mapped_range(..)
+            .map_err(|e| unreadable(&e))?
+            .to_vec();
+        self.buffer.unmap();
+        let texels = texels_of(&bytes, self.width, self.padded_row_bytes);
+        Ok(coverage_of(self.width, self.height, &texels))
     }
 }
 

@@ -19,6 +19,27 @@ pub fn render_frame(
     target: &CoverageTarget,
     camera: &Camera,
 ) -> Result<(), Error> {
+    encode_frame(gpu, method, target, camera, true)
+}
+
+/// Encodes one frame of `method` into `target` and submits it, without waiting: what
+/// the explorer draws offscreen within its frame loop, then reads back asynchronously.
+pub fn submit_frame(
+    gpu: &GpuContext,
+    method: &mut dyn Method,
+    target: &CoverageTarget,
+    camera: &Camera,
+) -> Result<(), Error> {
+    encode_frame(gpu, method, target, camera, false)
+}
+
+fn encode_frame(
+    gpu: &GpuContext,
+    method: &mut dyn Method,
+    target: &CoverageTarget,
+    camera: &Camera,
+    wait: bool,
+) -> Result<(), Error> {
     check_frame(target, camera)?;
     gpu.catching_errors(&format!("rendering with '{}'", method.name()), || {
         let mut encoder = gpu
@@ -28,7 +49,7 @@ pub fn render_frame(
             });
         method.encode(gpu, &mut encoder, target, camera)?;
         gpu.queue.submit([encoder.finish()]);
-        gpu.wait_idle()
+        if wait { gpu.wait_idle() } else { Ok(()) }
     })
 }
 

@@ -205,6 +205,20 @@ pub fn parse_overlay(
     }
 }
 
+/// Parameters as `k=v, k=v`, or `default` when there are none: how tables and reports
+/// name a setting.
+pub fn settings_text<'a>(params: impl IntoIterator<Item = &'a (String, String)>) -> String {
+    let shown: Vec<String> = params
+        .into_iter()
+        .map(|(k, v)| format!("{k}={v}"))
+        .collect();
+    if shown.is_empty() {
+        "default".into()
+    } else {
+        shown.join(", ")
+    }
+}
+
 /// The value of parameter `key`, if given (the last one wins).
 pub fn param<'a>(params: &'a Params, key: &str) -> Option<&'a str> {
     params

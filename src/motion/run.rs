@@ -52,15 +52,7 @@ impl MethodSpec {
 
     /// `key=value, …`, or `default`.
     pub fn settings(&self) -> String {
-        let params: Vec<String> = self
-            .params
-            .iter()
-            .map(|(k, v)| format!("{k}={v}"))
-            .collect();
-        match params.is_empty() {
-            true => "default".into(),
-            false => params.join(", "),
-        }
+        crate::methods::settings_text(&self.params)
     }
 
     fn is_reference(&self) -> bool {
