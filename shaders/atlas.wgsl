@@ -27,18 +27,12 @@ struct Entry {
 // snapping, the phase-0 bitmap resampled at the exact position.
 override PHASES: u32 = 4u;
 
-struct Varyings {
-    @builtin(position) position: vec4<f32>,
-    @location(0) local: vec2<f32>,
-    @location(1) @interpolate(flat) entry: u32,
-}
-
 fn translation(shift: vec2<f32>) -> mat3x3<f32> {
     return mat3x3<f32>(vec3<f32>(1.0, 0.0, 0.0), vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(shift, 1.0));
 }
 
 @vertex
-fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u32) -> Varyings {
+fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u32) -> GlyphQuad {
     var inst = instances[index];
     // One bitmap per glyph when nothing snaps (PHASES = 0).
     let phases = max(PHASES, 1u);
@@ -55,18 +49,17 @@ fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u
         inst.to_local = inst.to_local * translation(pen - snapped);
     }
     let e = entries[entry];
-    let quad = glyph_quad(inst, e.quad.xy, e.quad.zw, vertex, frame.size);
-    var out: Varyings;
-    out.position = quad.position;
-    out.local = quad.local;
-    out.entry = entry;
-    return out;
+    var quad = glyph_quad(inst, e.quad.xy, e.quad.zw, vertex, frame.size);
+    // Here the quad's `glyph` names the bitmap: the glyph at its phase.
+    quad.glyph = entry;
+    return quad;
 }
 
 @fragment
-fn fs_main(in: Varyings) -> @location(0) vec4<f32> {
-    let e = entries[in.entry];
-    let texel = e.origin + vec2<f32>(in.local.x, -in.local.y) * e.texels_per_unit;
+fn fs_main(in: GlyphQuad) -> @location(0) vec4<f32> {
+    let e = entries[in.glyph];
+    let local = quad_local(in);
+    let texel = e.origin + vec2<f32>(local.x, -local.y) * e.texels_per_unit;
     // Kept on the bitmap's own texels (its zero border included): pixels of the quad's
     // dilation beyond it read that border, never a neighbour's bitmap.
     let inside = clamp(texel, e.texels.xy + 0.5, e.texels.zw - 0.5);

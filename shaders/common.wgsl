@@ -67,24 +67,42 @@ fn dilated_corner(inst: GlyphInstance, rect_min: vec2<f32>, rect_max: vec2<f32>,
     return project(inst.to_local, here + delta);
 }
 
-// What a quad method's fragments receive: the local position (interpolated
-// perspective-correctly) and which distinct glyph the instance draws.
+// What a quad method's fragments receive: the instance's image → local map (the same at
+// every vertex) and which distinct glyph it draws. A fragment maps its own pixel centre
+// through the map (`quad_local`) instead of interpolating a local position: interpolated,
+// the position would move with the rasterizer's snapping of the quad's corners, up to
+// 1/32 px where the snap is 1/16 px (SwiftShader's 4 bits of sub-pixel precision;
+// lavapipe and desktop GPUs have 8), and every method would draw the glyph that far off.
 struct GlyphQuad {
     @builtin(position) position: vec4<f32>,
-    @location(0) local: vec2<f32>,
-    @location(1) @interpolate(flat) glyph: u32,
+    @location(0) @interpolate(flat) to_local_0: vec3<f32>,
+    @location(1) @interpolate(flat) to_local_1: vec3<f32>,
+    @location(2) @interpolate(flat) to_local_2: vec3<f32>,
+    @location(3) @interpolate(flat) glyph: u32,
 }
+
+// How far past the pixel footprint the quad reaches, in pixels: more than the corners can
+// move when the rasterizer snaps them (≤ 1/32 px at 4 bits), so snapping never drops a
+// pixel the glyph touches.
+const SNAP_MARGIN: f32 = 0.0625;
 
 // Strip vertex `vertex` (0–3) of the quad covering the local rectangle of instance
 // `inst`, grown by the pixel footprint: strip vertices 0, 1, 2, 3 take corners 0, 1,
 // 3, 2 (a Gray code), two triangles.
 fn glyph_quad(inst: GlyphInstance, rect_min: vec2<f32>, rect_max: vec2<f32>, vertex: u32, size: vec2<f32>) -> GlyphQuad {
-    let local = dilated_corner(inst, rect_min, rect_max, vertex ^ (vertex >> 1u), 0.0);
+    let local = dilated_corner(inst, rect_min, rect_max, vertex ^ (vertex >> 1u), SNAP_MARGIN);
     var out: GlyphQuad;
     out.position = image_to_clip(inst.to_image * vec3<f32>(local, 1.0), size);
-    out.local = local;
+    out.to_local_0 = inst.to_local[0];
+    out.to_local_1 = inst.to_local[1];
+    out.to_local_2 = inst.to_local[2];
     out.glyph = inst.glyph;
     return out;
+}
+
+// The local position of the fragment's pixel centre (perspective included).
+fn quad_local(q: GlyphQuad) -> vec2<f32> {
+    return project(mat3x3<f32>(q.to_local_0, q.to_local_1, q.to_local_2), q.position.xy);
 }
 
 // Which roots of a quadratic count as crossings of a ray along +x through the origin,

@@ -393,7 +393,7 @@ const GRID_LINE = vec3<f32>(1.0, 0.25, 0.2);
 
 @fragment
 fn fs_main(in: GlyphQuad) -> @location(0) vec4<f32> {
-    let p = in.local;
+    let p = quad_local(in);
     // Font units per pixel step, here (perspective included): the footprint. Taken
     // before any branch, where derivatives are defined.
     let dx = dpdx(p);

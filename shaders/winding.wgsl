@@ -122,22 +122,23 @@ fn fs_main(in: GlyphQuad) -> @location(0) vec4<f32> {
         return vec4<f32>(1.0);
     }
     let g = glyphs[in.glyph];
+    let local = quad_local(in);
     // One pixel step in local units, x and y: the footprint under the full transform,
     // perspective included.
-    let jx = dpdx(in.local);
-    let jy = dpdy(in.local);
+    let jx = dpdx(local);
+    let jy = dpdy(local);
     // The algorithm: winding_area.wgsl's or winding_rays.wgsl's.
     var c: Coverage;
     if AREA {
-        c = area_pixel(g, in.local, jx, jy);
+        c = area_pixel(g, local, jx, jy);
     } else {
-        c = rays_pixel(g, in.local, jx, jy);
+        c = rays_pixel(g, local, jx, jy);
     }
     let coverage = c.value;
     let evaluated = c.evaluated;
 
     if OVERLAY == 1u {
-        let root_class = nearest_class(g, in.local, jx, jy);
+        let root_class = nearest_class(g, local, jx, jy);
         var picture = vec3<f32>(0.5 * coverage);
         if root_class < 8u {
             picture = CLASS_COLORS[root_class];
