@@ -6,58 +6,22 @@
 //! Without a GPU adapter these tests fail (the harness cannot make its device).
 
 mod common;
+#[path = "common/explorer.rs"]
+mod explorer;
 
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use common::gpu;
+use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
-use egui_kittest::{Harness, wgpu::WgpuTestRenderer};
+use explorer::{harness, settle};
 use glyphscope::app::Explorer;
 use glyphscope::app::settings::{Layout, PaneOverlay, PaneSettings, PaneSource, Settings};
 use glyphscope::coverage::CoverageImage;
 use glyphscope::methods::registry::{self, REFERENCE};
 use glyphscope::methods::{self, Overlay};
 use glyphscope::metrics;
-
-const SIZE: [f32; 2] = [1200.0, 700.0];
-
-/// The real app (as `Explorer::new` makes it for eframe) with `settings`.
-fn harness(settings: Settings) -> Harness<'static, Explorer> {
-    let mut harness = Harness::builder()
-        .with_size(SIZE)
-        .renderer(WgpuTestRenderer::from_setup(
-            glyphscope::app::wgpu_setup_on(gpu()),
-        ))
-        .build_eframe(|cc| {
-            let mut app = Explorer::new(cc);
-            app.settings = settings;
-            app
-        });
-    harness.step();
-    harness
-}
-
-/// Steps and draws frames until the view has rested and its numbers are in, two frames
-/// running (a click's events can span frames); returns the screen.
-fn settle(harness: &mut Harness<'static, Explorer>) -> image::RgbaImage {
-    let start = Instant::now();
-    let mut was_settled = false;
-    loop {
-        harness.step();
-        let screen = harness.render().expect("the harness draws with wgpu");
-        let settled = harness.state().settled();
-        if settled && was_settled {
-            return screen;
-        }
-        was_settled = settled;
-        assert!(
-            start.elapsed() < Duration::from_secs(60),
-            "the view never settled"
-        );
-        std::thread::sleep(Duration::from_millis(10));
-    }
-}
 
 /// The stored byte a coverage shows as, white text on black (sRGB of linear coverage).
 fn shown(coverage: f32) -> f32 {
@@ -356,6 +320,54 @@ fn a_font_opens_from_disk() {
     assert!(
         changed > 5000,
         "the text looks the same in the new font ({changed} px changed)"
+    );
+}
+
+/// The web page's way in: a font as bytes with a name, no path (its file picker, a drop).
+/// The same font file opened as bytes draws exactly what it draws opened from disk; a
+/// view with it cannot travel in a link, and says why; a file that is not a font is
+/// refused by name and leaves the font as it was.
+#[test]
+fn a_font_opens_from_bytes_as_from_disk() {
+    let single = Settings {
+        layout: Layout::Single,
+        ..Settings::default()
+    };
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("fonts/lmroman10-regular.otf");
+    let mut from_disk = harness(single.clone());
+    settle(&mut from_disk);
+    from_disk.state_mut().open_font(path.clone());
+    settle(&mut from_disk);
+    let disk_pixels = from_disk.state().pane_capture(0).unwrap();
+    drop(from_disk);
+
+    let mut from_bytes = harness(single);
+    settle(&mut from_bytes);
+    let bytes: std::sync::Arc<[u8]> = std::fs::read(&path).unwrap().into();
+    from_bytes
+        .state_mut()
+        .open_font_bytes("lmroman10-regular.otf".into(), bytes.clone());
+    settle(&mut from_bytes);
+    let app = from_bytes.state();
+    assert_eq!(app.settings.scene.font.label(), "lmroman10-regular.otf");
+    assert_eq!(app.pane_problem(0), None);
+    assert_eq!(app.pane_capture(0).unwrap(), disk_pixels);
+    let why = app.link().unwrap_err();
+    assert!(why.contains("opened from this computer"), "{why}");
+
+    let font = app.settings.scene.font.clone();
+    from_bytes
+        .state_mut()
+        .open_font_bytes("notes.txt".into(), bytes);
+    settle(&mut from_bytes);
+    assert_eq!(from_bytes.state().settings.scene.font, font);
+    assert!(
+        from_bytes
+            .state()
+            .status_text()
+            .contains("'notes.txt' is not a .ttf/.otf font"),
+        "{}",
+        from_bytes.state().status_text()
     );
 }
 
@@ -1268,8 +1280,8 @@ fn motion_steps_plays_and_charts_one_point_per_frame() {
 
 /// A link is a view: the link copied from an explorer that loaded a case, magnified on
 /// its worst pixel, opens in a fresh explorer on the same camera, the same panes and
-/// exactly the same pixels; a malformed link opens the default view and says in the
-/// status bar what is wrong.
+/// exactly the same pixels, and a font opened over it leaves the case; a malformed link
+/// opens the default view and says in the status bar what is wrong.
 #[test]
 fn a_copied_link_opens_the_same_view_and_a_malformed_one_says_why() {
     let mut first = harness(Settings::default());
@@ -1301,6 +1313,13 @@ fn a_copied_link_opens_the_same_view_and_a_malformed_one_says_why() {
         link,
         "the link of the opened view is the one opened"
     );
+    // A font opened over the case a link opened leaves the case, as over one loaded
+    // from the Cases menu.
+    let font = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("fonts/lmroman10-regular.otf");
+    second.state_mut().open_font(font);
+    settle(&mut second);
+    assert_eq!(second.state().settings.scene.case, None);
+    drop(second);
 
     let mut bad = harness(Settings::default());
     bad.state_mut().open_link("#case=inter-overlaps&size=-4");

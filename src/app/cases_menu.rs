@@ -57,11 +57,17 @@ impl Explorer {
 
     /// Shows the named view `name` in the panes (placed once the scene is built).
     pub fn load_case(&mut self, name: &str) {
+        self.settings.scene.case = Some(name.to_owned());
+        self.remember_the_scene_under_the_case();
+        self.auto_fit.pending = true;
+    }
+
+    /// Keeps the font, text and glyph settings a case is shown over, so that a change to
+    /// them (a font opened, a key) leaves the case.
+    pub(super) fn remember_the_scene_under_the_case(&mut self) {
         let mut over = self.settings.scene.clone();
         over.case = None;
         self.cases.loaded_over = Some(over);
-        self.settings.scene.case = Some(name.to_owned());
-        self.auto_fit.pending = true;
     }
 
     /// The loaded case's name, what it is, and a button back to the text.

@@ -91,6 +91,7 @@ impl Explorer {
 
     fn scene_controls(&mut self, ui: &mut egui::Ui) {
         self.case_controls(ui);
+        let mut ask_for_font = false;
         let scene = &mut self.settings.scene;
         ui.horizontal(|ui| {
             let label = ui.label("font");
@@ -118,9 +119,13 @@ impl Explorer {
                 ))
                 .clicked()
             {
-                self.font_dialog.open = true;
+                ask_for_font = true;
             }
         });
+        if ask_for_font {
+            self.ask_for_font();
+        }
+        let scene = &mut self.settings.scene;
         if let Some(font) = self.scene.font() {
             for axis in font.axes() {
                 let mut value = scene
@@ -319,11 +324,7 @@ impl Explorer {
         ui.horizontal(|ui| {
             // The message first (the worst pixel, a case, a screenshot): what was just
             // asked for is what the clipping must not hide.
-            let status = self
-                .status
-                .lock()
-                .unwrap_or_else(|p| p.into_inner())
-                .clone();
+            let status = self.status_text();
             if !status.is_empty() {
                 ui.label(status);
                 ui.separator();

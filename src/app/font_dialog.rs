@@ -1,13 +1,15 @@
 //! "Open font…": a path field and a folder listing of the font files in it, inside the
 //! app, so it works the same on any desktop and under Xvfb or a test harness (a native
-//! dialog needs a desktop portal). Dropping a file on the window opens it too.
+//! dialog needs a desktop portal). Dropping a file on the window opens it too. The web
+//! page has no file system: there "Open font…" is the browser's file picker (`web`),
+//! and a dropped file arrives as bytes.
 
 use std::path::{Path, PathBuf};
 
 use eframe::egui;
 
 use super::Explorer;
-use super::settings::FontChoice;
+use super::settings::{FontBytes, FontChoice};
 
 pub struct FontDialog {
     pub open: bool,
@@ -32,15 +34,41 @@ impl Explorer {
         self.settings.scene.variations.clear();
     }
 
+    /// Opens a font given as bytes (the web page's file picker, a file dropped on the
+    /// page), named `name`.
+    pub fn open_font_bytes(&mut self, name: String, bytes: std::sync::Arc<[u8]>) {
+        if !is_font_file(Path::new(&name)) {
+            self.set_status(format!("'{name}' is not a .ttf/.otf font"));
+            return;
+        }
+        self.settings.scene.font = FontChoice::Opened {
+            name,
+            bytes: FontBytes(bytes),
+        };
+        self.settings.scene.variations.clear();
+    }
+
+    /// "Open font…": the dialog on the desktop, the browser's file picker on the page.
+    pub(super) fn ask_for_font(&mut self) {
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            self.font_dialog.open = true;
+        }
+        #[cfg(target_arch = "wasm32")]
+        if let Err(e) = super::web::pick_font() {
+            self.set_status(e);
+        }
+    }
+
+    /// A file dropped on the desktop window. (On the web page the page itself reads a
+    /// dropped file, which egui would hand over only as a future, and passes its bytes
+    /// to `open_font_bytes`.)
     pub(super) fn take_dropped_files(&mut self, ctx: &egui::Context) {
-        let dropped: Vec<PathBuf> = ctx.input(|i| {
-            i.raw
-                .dropped_files
-                .iter()
-                .map(|f| f.path().to_path_buf())
-                .collect()
-        });
-        if let Some(path) = dropped.into_iter().next() {
+        if cfg!(target_arch = "wasm32") {
+            return;
+        }
+        let dropped = ctx.input(|i| i.raw.dropped_files.first().map(|f| f.path().to_path_buf()));
+        if let Some(path) = dropped {
             if is_font_file(&path) {
                 self.open_font(path);
             } else {

@@ -68,6 +68,11 @@ pub fn fragment(settings: &Settings, frame: i64) -> Result<String, String> {
                         path.display()
                     ));
                 }
+                FontChoice::Opened { name, .. } => {
+                    return Err(format!(
+                        "the font {name} was opened from this computer: a link carries only the shipped fonts"
+                    ));
+                }
             }
             put("text", scene.text.clone());
             if !scene.variations.is_empty() {

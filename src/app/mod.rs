@@ -183,6 +183,7 @@ impl Explorer {
         match link::open(link) {
             Ok(view) => {
                 show(view.settings);
+                self.remember_the_scene_under_the_case();
                 self.playback.frame = view.frame;
                 self.set_status(String::new());
                 if let (Some(case), false) = (self.settings.scene.case.clone(), view.camera_given) {
@@ -380,6 +381,14 @@ impl Explorer {
             .map_or(DVec2::ZERO, |(w, h)| DVec2::new(f64::from(w), f64::from(h)))
     }
 
+    /// The status line's message (a link's error, the worst pixel, a case).
+    pub fn status_text(&self) -> String {
+        self.status
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .clone()
+    }
+
     fn set_status(&self, message: String) {
         *self.status.lock().unwrap_or_else(|p| p.into_inner()) = message;
     }
@@ -392,6 +401,13 @@ impl eframe::App for Explorer {
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         eframe::set_value(storage, eframe::APP_KEY, &self.settings);
+    }
+
+    /// What lets the page reach the explorer between frames (`web::WebHandle`: a font
+    /// the page read, a fragment typed into the address).
+    #[cfg(target_arch = "wasm32")]
+    fn as_any_mut(&mut self) -> Option<&mut dyn std::any::Any> {
+        Some(&mut *self)
     }
 }
 

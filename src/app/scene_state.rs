@@ -33,6 +33,9 @@ impl SceneState {
                 FontChoice::Shipped(i) if *i < SHIPPED_FONTS.len() => Ok(Font::shipped(*i)),
                 FontChoice::Shipped(i) => Err(format!("there is no shipped font {i}")),
                 FontChoice::File(path) => Font::from_path(path).map_err(|e| e.to_string()),
+                FontChoice::Opened { name, bytes } => {
+                    Font::from_bytes(bytes.0.to_vec(), name).map_err(|e| e.to_string())
+                }
             };
             self.font = Some((wanted.font.clone(), font));
         }

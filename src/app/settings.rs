@@ -3,6 +3,7 @@
 //! mended on loading where a value no longer fits this build.
 
 use std::path::PathBuf;
+use std::sync::Arc;
 
 use serde::{Deserialize, Serialize};
 
@@ -117,6 +118,32 @@ pub enum FontChoice {
     Shipped(usize),
     /// A .ttf/.otf opened from disk.
     File(PathBuf),
+    /// A font given as bytes, with no path: the web page's file picker or a file dropped
+    /// on the page. The bytes are not remembered between runs (see [`sanitize`]).
+    Opened {
+        name: String,
+        #[serde(skip)]
+        bytes: FontBytes,
+    },
+}
+
+/// A font file's bytes, shared; two are the same font when they are the same bytes in
+/// memory (the settings are compared every frame: comparing megabytes would be slow).
+#[derive(Clone, Default)]
+pub struct FontBytes(pub Arc<[u8]>);
+
+impl PartialEq for FontBytes {
+    fn eq(&self, other: &Self) -> bool {
+        Arc::ptr_eq(&self.0, &other.0)
+    }
+}
+
+impl Eq for FontBytes {}
+
+impl std::fmt::Debug for FontBytes {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{} bytes", self.0.len())
+    }
 }
 
 impl FontChoice {
@@ -129,6 +156,7 @@ impl FontChoice {
                 || path.display().to_string(),
                 |n| n.to_string_lossy().into(),
             ),
+            FontChoice::Opened { name, .. } => name.clone(),
         }
     }
 }
@@ -273,9 +301,13 @@ pub enum PaneOverlay {
 
 /// Keeps remembered settings usable with this build (fonts, pane references).
 pub(super) fn sanitize(settings: &mut Settings) {
-    if let FontChoice::Shipped(i) = settings.scene.font
-        && i >= SHIPPED_FONTS.len()
-    {
+    let usable = match &settings.scene.font {
+        FontChoice::Shipped(i) => *i < SHIPPED_FONTS.len(),
+        FontChoice::File(_) => true,
+        // Remembered from an earlier run without its bytes.
+        FontChoice::Opened { bytes, .. } => !bytes.0.is_empty(),
+    };
+    if !usable {
         settings.scene.font = FontChoice::Shipped(0);
     }
     for (index, pane) in settings.panes.iter_mut().enumerate() {
@@ -337,5 +369,32 @@ mod tests {
                 second: None
             }
         );
+    }
+
+    /// A font opened from bytes is remembered by name only; the next run, without its
+    /// bytes, opens the default font rather than an empty one.
+    #[test]
+    fn a_font_opened_from_bytes_is_not_remembered_without_them() {
+        let bytes = FontBytes(Arc::from(crate::font::SHIPPED_FONTS[0].2));
+        let mut s = Settings::default();
+        s.scene.font = FontChoice::Opened {
+            name: "mine.ttf".into(),
+            bytes: bytes.clone(),
+        };
+        let mut kept = s.clone();
+        sanitize(&mut kept);
+        assert_eq!(kept.scene.font, s.scene.font, "bytes in hand: kept");
+        let json = serde_json::to_string(&s).unwrap();
+        assert!(
+            json.len() < 4096,
+            "the bytes are not written: {} bytes",
+            json.len()
+        );
+        let mut back: Settings = serde_json::from_str(&json).unwrap();
+        sanitize(&mut back);
+        assert_eq!(back.scene.font, FontChoice::Shipped(0));
+        // The same bytes copied are another font: compared by identity, not content.
+        let copy = FontBytes(Arc::from(&*bytes.0));
+        assert_ne!(copy, bytes);
     }
 }

@@ -269,7 +269,7 @@ impl Explorer {
             Action::ToggleContinuous => self.settings.continuous ^= true,
             Action::PlayPause | Action::StepFrame(_) | Action::Rewind => self.transport(action),
             Action::ToggleSweep => self.sweep.open ^= true,
-            Action::OpenFont => self.font_dialog.open = true,
+            Action::OpenFont => self.ask_for_font(),
             Action::Screenshot => self.screenshot(ctx),
             Action::ToggleHelp => self.help_open ^= true,
         }
