@@ -49,6 +49,21 @@ pub struct SceneSource {
 }
 
 impl Scene {
+    /// The same scene with each glyph whose contours overlap replaced by their nonzero
+    /// union ([`crate::geometry::merge_overlaps`]): what a method with `overlaps=merge`
+    /// draws from. A glyph whose union cannot be taken is kept as it is.
+    pub fn with_overlaps_merged(&self) -> Scene {
+        let mut merged = self.clone();
+        for glyph in &mut merged.glyphs {
+            if let Ok(Some(outline)) =
+                crate::geometry::merge_overlaps(&glyph.outline, self.units_per_em)
+            {
+                glyph.outline = outline;
+            }
+        }
+        merged
+    }
+
     /// Shapes `text` (possibly several lines) in `font`.
     pub fn from_text(font: &Font, text: &str) -> Result<Scene, Error> {
         let shaped = shaping::shape(font, text)?;

@@ -3,7 +3,10 @@
 //! from lyon_geom; what is ours is the outline model and the error-bounded conversion
 //! policy around it.
 
+mod overlaps;
 mod quadratic;
+
+pub use overlaps::merge_overlaps;
 
 pub use quadratic::{
     DEFAULT_QUAD_TOLERANCE_EM, Quad, cubic_to_quadratics, distance_to_segment,
@@ -133,6 +136,28 @@ impl Outline {
                 .collect(),
         }
     }
+}
+
+/// Contours as one kurbo path in the same units, each closed: how the geometry meets
+/// kurbo's users (the union in `merge_overlaps`, the linebender peers).
+pub fn kurbo_path(contours: &[Contour]) -> kurbo::BezPath {
+    let point = |p: DVec2| kurbo::Point::new(p.x, p.y);
+    let mut path = kurbo::BezPath::new();
+    for contour in contours {
+        let Some(first) = contour.segments.first() else {
+            continue;
+        };
+        path.move_to(point(first.start()));
+        for segment in &contour.segments {
+            match *segment {
+                Segment::Line(_, b) => path.line_to(point(b)),
+                Segment::Quad(_, c, b) => path.quad_to(point(c), point(b)),
+                Segment::Cubic(_, c1, c2, b) => path.curve_to(point(c1), point(c2), point(b)),
+            }
+        }
+        path.close_path();
+    }
+    path
 }
 
 /// The control points of a segment, by value.

@@ -19,7 +19,6 @@ use glam::{DMat2, DVec2};
 use super::registry::{Claim, ClaimedSetting};
 use crate::Error;
 use crate::camera::Camera;
-use crate::geometry::{Outline, Segment};
 use crate::gpu::kit::{self, ColorOut, PipelineBuilder, Slot};
 use crate::gpu::shaders::Shader;
 
@@ -263,7 +262,7 @@ impl LinebenderScene {
                 paths: scene
                     .glyphs
                     .iter()
-                    .map(|g| outline_path(&g.outline))
+                    .map(|g| crate::geometry::kurbo_path(&g.outline.contours))
                     .collect(),
                 scene: scene.clone(),
             },
@@ -285,29 +284,6 @@ pub fn font_data(source: &SceneSource) -> (::vello::peniko::FontData, Vec<i16>) 
         .map(|c| c.get())
         .collect();
     (::vello::peniko::FontData::new(blob, 0), coords)
-}
-
-/// An outline as a kurbo path in font units (y up), for scenes made of synthetic
-/// outlines, which no font holds: the linebender peers fill them as paths.
-pub fn outline_path(outline: &Outline) -> ::vello::kurbo::BezPath {
-    use ::vello::kurbo::{BezPath, Point};
-    let point = |p: DVec2| Point::new(p.x, p.y);
-    let mut path = BezPath::new();
-    for contour in &outline.contours {
-        let Some(first) = contour.segments.first() else {
-            continue;
-        };
-        path.move_to(point(first.start()));
-        for segment in &contour.segments {
-            match *segment {
-                Segment::Line(_, b) => path.line_to(point(b)),
-                Segment::Quad(_, c, b) => path.quad_to(point(c), point(b)),
-                Segment::Cubic(_, c1, c2, b) => path.curve_to(point(c1), point(c2), point(b)),
-            }
-        }
-        path.close_path();
-    }
-    path
 }
 
 /// A kurbo affine map from a 2×2 linear part and a translation.
