@@ -245,6 +245,10 @@ fn every_overlay_toggles_and_draws_or_is_greyed_with_a_reason() {
             harness.step();
         }
         // The error against the reference, coloured exactly like `metrics::error_image`.
+        // Methods with many parameters push the overlay row below the panel's fold;
+        // scrolling is animated over several frames.
+        harness.get_by_label("error").scroll_to_me();
+        harness.run_steps(30);
         harness.get_by_label("error").click();
         let screen = settle(&mut harness);
         let app = harness.state();
@@ -265,9 +269,7 @@ fn every_overlay_toggles_and_draws_or_is_greyed_with_a_reason() {
         assert!(worst <= 1, "{method}: error overlay off by {worst}");
         harness.get_by_label("error").click();
         // The outline, on top of coverage.
-        // Methods with many parameters push the checkbox below the panel's fold.
         harness.get_by_label("outline points").scroll_to_me();
-        // Scrolling is animated over several frames.
         harness.run_steps(30);
         harness.get_by_label("outline points").click();
         let outlined = settle(&mut harness);
@@ -369,6 +371,37 @@ fn a_font_opens_from_bytes_as_from_disk() {
         "{}",
         from_bytes.state().status_text()
     );
+}
+
+/// The merged outline: on `inter-overlaps`, green curves (the nonzero union sdf-cells
+/// draws from) appear under the font's orange outline when the pane asks for them, and
+/// the link carries the choice.
+#[test]
+fn the_merged_outline_is_drawn_under_the_fonts() {
+    let mut settings = Settings {
+        layout: Layout::Single,
+        ..Settings::default()
+    };
+    settings.panes[0] = PaneSettings::method(methods::sdf_cells::INFO.name);
+    let mut harness = harness(settings);
+    settle(&mut harness);
+    harness.state_mut().load_case("inter-overlaps");
+    settle(&mut harness);
+    let green = |screen: &image::RgbaImage| {
+        screen
+            .pixels()
+            .filter(|p| p[1] > 180 && p[0] < 110 && p[2] < 140)
+            .count()
+    };
+    let without = green(&settle(&mut harness));
+    harness.state_mut().settings.panes[0].merged = true;
+    let with = green(&settle(&mut harness));
+    assert!(
+        with > without + 500,
+        "green pixels: {with} with the merged outline, {without} without"
+    );
+    let link = harness.state().link().unwrap();
+    assert!(link.contains("&a.merged=1"), "{link}");
 }
 
 #[test]

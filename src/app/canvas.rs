@@ -13,7 +13,7 @@ use super::analysis::Request;
 use super::blink::BLINKING_PANE;
 use super::display::{CoverageAdjust, DisplayMode};
 use super::gpu_view::{CompositeMode, PanePaint, Source, lock};
-use super::outline_painter;
+use super::outline_painter::{self, Style};
 use super::panes::{REFERENCE, pane_letter, subtrahend_label};
 use super::settings::{Layout, PaneOverlay, PaneSource};
 use crate::camera::Camera;
@@ -430,11 +430,17 @@ impl Explorer {
                 .filter(|r| (r.width, r.height) == (image.width, image.height));
             paint_values(&painter, rect, block, ppp, image, reference.as_deref());
         }
-        if settings.outline
-            && let Some(scene) = self.scene.scene()
-            && let Err(e) = outline_painter::paint(&painter, scene, camera, ppp, block)
-        {
-            notes.push(e);
+        let outlines = [
+            (settings.merged, self.scene.merged_scene(), Style::Merged),
+            (settings.outline, self.scene.scene(), Style::Font),
+        ];
+        for (shown, scene, style) in outlines {
+            if shown
+                && let Some(scene) = scene
+                && let Err(e) = outline_painter::paint(&painter, scene, camera, ppp, block, style)
+            {
+                notes.push(e);
+            }
         }
         let mut lines = vec![self.pane_title(index)];
         lines.extend(self.pane_numbers(index));

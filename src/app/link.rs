@@ -24,6 +24,7 @@
 //! | `a` … `d` | a pane's method, `NAME` or `NAME:KEY=VALUE:…`; or `diff:FIRST[:SECOND]`, panes by letter |
 //! | `a.overlay` … | `error` or a method overlay's name |
 //! | `a.outline` … | `1`: the outline drawn over the pane |
+//! | `a.merged` … | `1`: the merged outline (overlaps removed) drawn under it |
 //! | `magnify`, `focus` | the magnifier's N, and its centre in pane pixels `X,Y` |
 //! | `motion`, `at` | a motion path (`glyphscope motion --path`) and the frame shown |
 
@@ -117,6 +118,9 @@ pub fn fragment(settings: &Settings, frame: i64) -> Result<String, String> {
         }
         if pane.outline {
             put(&format!("{letter}.outline"), "1".into());
+        }
+        if pane.merged {
+            put(&format!("{letter}.merged"), "1".into());
         }
     }
     put("magnify", c.magnify.to_string());
@@ -259,7 +263,7 @@ fn apply(
     Ok(())
 }
 
-/// `a` … `d`, `a.overlay`, `a.outline`.
+/// `a` … `d`, `a.overlay`, `a.outline`, `a.merged`.
 fn pane_key(s: &mut Settings, key: &str, value: &str, layout_given: bool) -> Result<(), String> {
     let (letter, field) = key.split_once('.').unwrap_or((key, ""));
     let index = pane_index(letter).ok_or_else(|| "unknown key".to_string())?;
@@ -281,13 +285,8 @@ fn pane_key(s: &mut Settings, key: &str, value: &str, layout_given: bool) -> Res
                 name => PaneOverlay::Method(name.into()),
             }
         }
-        "outline" => {
-            pane.outline = match value {
-                "1" => true,
-                "0" => false,
-                _ => return Err("not 0 or 1".into()),
-            }
-        }
+        "outline" => pane.outline = flag(value)?,
+        "merged" => pane.merged = flag(value)?,
         _ => return Err("unknown key".into()),
     }
     Ok(())
@@ -330,6 +329,15 @@ fn pane_source(source: &PaneSource) -> String {
             }
             text
         }
+    }
+}
+
+/// A `1` or `0` flag.
+fn flag(value: &str) -> Result<bool, String> {
+    match value {
+        "1" => Ok(true),
+        "0" => Ok(false),
+        _ => Err("not 0 or 1".into()),
     }
 }
 
@@ -452,6 +460,7 @@ mod tests {
         s.panes[0].overlay = PaneOverlay::Method("cells".into());
         s.panes[1].overlay = PaneOverlay::Error;
         s.panes[1].outline = true;
+        s.panes[1].merged = true;
         s.panes[3].source = PaneSource::Difference {
             first: 0,
             second: Some(1),

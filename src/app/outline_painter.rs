@@ -15,6 +15,18 @@ const TOLERANCE_PX: f64 = 0.2;
 
 const OUTLINE: egui::Color32 = egui::Color32::from_rgb(255, 170, 0);
 const HANDLE: egui::Color32 = egui::Color32::from_rgb(120, 170, 255);
+/// The merged outline: wide and green under the font's, so that a curve the union
+/// dropped (one inside the fill) shows orange alone.
+const MERGED: egui::Color32 = egui::Color32::from_rgb(60, 220, 90);
+
+/// How an outline is drawn.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum Style {
+    /// The font's outline: curves, on-curve points filled, control points on handles.
+    Font,
+    /// A merged outline: its curves alone, wide.
+    Merged,
+}
 
 /// Draws the outline of the instances in view, each image pixel `block` framebuffer
 /// pixels a side (the magnifier); returns how many glyphs were in view, or an error
@@ -25,6 +37,7 @@ pub fn paint(
     camera: &Camera,
     pixels_per_point: f32,
     block: u32,
+    style: Style,
 ) -> Result<usize, String> {
     let view = Rect {
         min: DVec2::ZERO,
@@ -35,9 +48,15 @@ pub fn paint(
     let origin = painter.clip_rect().min;
     let scale = block as f32 / pixels_per_point;
     let to_screen = |p: DVec2| origin + egui::vec2(p.x as f32, p.y as f32) * scale;
-    let line = egui::Stroke::new(1.0, OUTLINE);
+    let line = match style {
+        Style::Font => egui::Stroke::new(1.0, OUTLINE),
+        Style::Merged => egui::Stroke::new(4.0, MERGED),
+    };
     for [a, b] in &drawing.lines {
         painter.line_segment([to_screen(*a), to_screen(*b)], line);
+    }
+    if style == Style::Merged {
+        return Ok(drawing.glyphs);
     }
     let handle = egui::Stroke::new(0.5, HANDLE);
     for [a, b] in &drawing.handles {

@@ -429,6 +429,12 @@ fn overlay_controls(ui: &mut egui::Ui, pane: &mut PaneSettings, catalog: &Catalo
         );
         ui.checkbox(&mut pane.outline, "outline points")
             .on_hover_text("the font's outline: on-curve points filled, off-curve hollow");
+        ui.checkbox(&mut pane.merged, "merged outline")
+            .on_hover_text(
+                "green, under the font's outline: each glyph's contours merged into their nonzero \
+             union (what sdf-cells' overlaps=merge draws from); a curve inside the fill shows \
+             orange alone",
+            );
     });
 }
 

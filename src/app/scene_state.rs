@@ -16,6 +16,8 @@ pub struct SceneState {
     built_for: Option<SceneSettings>,
     font: Option<(FontChoice, Result<Font, String>)>,
     scene: Option<Result<Arc<Scene>, String>>,
+    /// The scene with overlapping contours merged, made the first time a pane asks.
+    merged: std::cell::OnceCell<Arc<Scene>>,
     /// A named view's own camera, when the scene is one.
     case_camera: Option<Camera>,
     generation: u64,
@@ -28,6 +30,7 @@ impl SceneState {
         }
         self.built_for = Some(wanted.clone());
         self.generation += 1;
+        self.merged = Default::default();
         if self.font.as_ref().map(|(c, _)| c) != Some(&wanted.font) {
             let font = match &wanted.font {
                 FontChoice::Shipped(i) if *i < SHIPPED_FONTS.len() => Ok(Font::shipped(*i)),
@@ -72,6 +75,15 @@ impl SceneState {
 
     pub fn scene(&self) -> Option<&Arc<Scene>> {
         self.scene.as_ref().and_then(|s| s.as_ref().ok())
+    }
+
+    /// The scene with overlapping contours merged (see [`Scene::with_overlaps_merged`]).
+    pub fn merged_scene(&self) -> Option<&Arc<Scene>> {
+        let scene = self.scene()?;
+        Some(
+            self.merged
+                .get_or_init(|| Arc::new(scene.with_overlaps_merged())),
+        )
     }
 
     /// Why the scene could not be built (a font that fails fails the scene built from

@@ -256,6 +256,9 @@ pub struct PaneSettings {
     pub overlay: PaneOverlay,
     /// The font's outline with its on- and off-curve points, drawn on top.
     pub outline: bool,
+    /// The outline with overlapping contours merged (what `overlaps=merge` draws from),
+    /// drawn under the font's.
+    pub merged: bool,
 }
 
 impl Default for PaneSettings {
@@ -273,6 +276,7 @@ impl PaneSettings {
             },
             overlay: PaneOverlay::None,
             outline: false,
+            merged: false,
         }
     }
 }

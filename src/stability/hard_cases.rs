@@ -107,6 +107,12 @@ pub fn all() -> Vec<HardCase> {
         traits: &[Trait::TouchingContours],
         ..case
     };
+    // A contour crossing itself so that its filled area is lobes meeting at the
+    // crossing (a node): overlapping as drawn, touching once merged.
+    let lobes_at_a_node = |case: HardCase| HardCase {
+        traits: &[Trait::Overlapping, Trait::TouchingContours],
+        ..case
+    };
     // Two edges inside one pixel.
     let subpixel_detail = |case: HardCase| HardCase {
         traits: &[Trait::SubpixelDetail],
@@ -292,7 +298,7 @@ pub fn all() -> Vec<HardCase> {
                 polygon(&octagon(11.0, 11.0, 4.5)),
             ],
         ),
-        overlapping(synthetic(
+        lobes_at_a_node(synthetic(
             "figure-8",
             "one contour crossing itself: the two lobes wind opposite ways",
             vec![polygon(&[
@@ -326,7 +332,7 @@ pub fn all() -> Vec<HardCase> {
                 (20.0, 2.0),
             )],
         ),
-        overlapping(synthetic(
+        lobes_at_a_node(synthetic(
             "cubic-loop",
             "a cubic that loops over itself",
             vec![cubic_closed(

@@ -6,9 +6,9 @@ use glam::DVec2;
 use super::cells::{Grid, Mode, cell_lists, row_bands};
 use super::curves::CurveLayout;
 use super::encoding::{EncodedCells, MAX_BEGIN_SLOT};
-use super::params::{EncodingChoice, GridChoice, Settings};
+use super::params::{EncodingChoice, GridChoice, Overlaps, Settings};
 use crate::Error;
-use crate::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Rect};
+use crate::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Rect, merge_overlaps};
 
 /// Border cells also serve points this far outside the grid (em): the pixels the quad
 /// is dilated by at small sizes (half a pixel's diagonal is 1/16 em at 11 px/em).
@@ -39,6 +39,11 @@ impl PreparedGlyph {
         units_per_em: f64,
         settings: &Settings,
     ) -> Result<PreparedGlyph, Error> {
+        let merged = match settings.overlaps {
+            Overlaps::Merge => merge_overlaps(outline, units_per_em).map_err(Error::Input)?,
+            Overlaps::Keep => None,
+        };
+        let outline = merged.as_ref().unwrap_or(outline);
         let quadratics = outline.to_quadratics(DEFAULT_QUAD_TOLERANCE_EM * units_per_em);
         let layout = CurveLayout::new(&quadratics);
         let curves = layout.curve_slots.len();

@@ -39,6 +39,14 @@ pub const PARAMS: &[ParamSpec] = &[
                list: offset + count into an index list; auto: packed where it fits.",
     },
     ParamSpec {
+        key: "overlaps",
+        choices: &["merge", "keep"],
+        range: None,
+        help: "merge: a glyph whose contours overlap is drawn from their nonzero union \
+               (geometry::merge_overlaps), as kocsis1david's font-demo asks; keep: from \
+               the contours as the font has them.",
+    },
+    ParamSpec {
         key: "outline",
         choices: &["0", "0.02", "0.05"],
         range: None,
@@ -107,9 +115,19 @@ pub struct Effects {
     pub glow: f64,
 }
 
+/// What preparation does with overlapping contours.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Overlaps {
+    /// Replaced by their nonzero union, where it differs from them.
+    Merge,
+    /// Kept as the font draws them.
+    Keep,
+}
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {
     pub mode: Mode,
+    pub overlaps: Overlaps,
     pub bias_em: f64,
     pub grid: GridChoice,
     pub encoding: EncodingChoice,
@@ -121,6 +139,7 @@ impl Default for Settings {
     fn default() -> Settings {
         Settings {
             mode: Mode::Estimate,
+            overlaps: Overlaps::Merge,
             bias_em: DEFAULT_BIAS_EM,
             grid: GridChoice::Auto,
             encoding: EncodingChoice::Auto,
@@ -159,8 +178,14 @@ impl Settings {
             Some("list") => EncodingChoice::List,
             Some(other) => return Err(bad("encoding", other, "auto, packed or list")),
         };
+        let overlaps = match param(params, "overlaps") {
+            None | Some("merge") => Overlaps::Merge,
+            Some("keep") => Overlaps::Keep,
+            Some(other) => return Err(bad("overlaps", other, "merge or keep")),
+        };
         Ok(Settings {
             mode,
+            overlaps,
             bias_em: number(params, "bias", defaults.bias_em, 0.0, 0.1)?,
             grid,
             encoding,
