@@ -28,7 +28,7 @@ build)
     cargo rustc --lib --release --target wasm32-unknown-unknown --crate-type cdylib
     mkdir -p "$out"
     wasm-bindgen --target web --no-typescript --out-dir "$out" \
-        target/wasm32-unknown-unknown/release/glyphscope.wasm
+        "${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/release/glyphscope.wasm"
     cp tools/web/index.html "$out/"
     echo "$out/index.html"
     ;;
