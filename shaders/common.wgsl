@@ -23,8 +23,8 @@ struct Frame {
 @group(0) @binding(0) var<uniform> frame: Frame;
 @group(0) @binding(1) var<storage, read> instances: array<GlyphInstance>;
 
-// A homogeneous image point (X·w, Y·w, w) → clip space, keeping w so that varyings are
-// interpolated perspective-correctly.
+// A homogeneous image point (X·w, Y·w, w) → clip space, keeping w (the quad's corners
+// under perspective; the methods interpolate no varyings, see `quad_local`).
 fn image_to_clip(h: vec3<f32>, size: vec2<f32>) -> vec4<f32> {
     return vec4<f32>(2.0 * h.x / size.x - h.z, h.z - 2.0 * h.y / size.y, 0.0, h.z);
 }

@@ -373,11 +373,10 @@ fn a_font_opens_from_bytes_as_from_disk() {
     );
 }
 
-/// The merged outline: on `inter-overlaps`, green curves (the nonzero union sdf-cells
-/// draws from) appear under the font's orange outline when the pane asks for them, and
-/// the link carries the choice.
-#[test]
-fn the_merged_outline_is_drawn_under_the_fonts() {
+/// Orange outline pixels with no green within 4 pixels, and green pixels, in `case`
+/// drawn by sdf-cells at ×4 with the font's outline and the merged one: the first counts
+/// the curves the union dropped (those inside the fill).
+fn merged_outline_on(case: &str) -> (usize, usize, String) {
     let mut settings = Settings {
         layout: Layout::Single,
         ..Settings::default()
@@ -385,22 +384,44 @@ fn the_merged_outline_is_drawn_under_the_fonts() {
     settings.panes[0] = PaneSettings::method(methods::sdf_cells::INFO.name);
     let mut harness = harness(settings);
     settle(&mut harness);
-    harness.state_mut().load_case("inter-overlaps");
+    harness.state_mut().load_case(case);
     settle(&mut harness);
-    let green = |screen: &image::RgbaImage| {
-        screen
-            .pixels()
-            .filter(|p| p[1] > 180 && p[0] < 110 && p[2] < 140)
-            .count()
-    };
-    let without = green(&settle(&mut harness));
-    harness.state_mut().settings.panes[0].merged = true;
-    let with = green(&settle(&mut harness));
+    let app = harness.state_mut();
+    app.settings.camera.magnify = 4;
+    app.settings.panes[0].outline = true;
+    app.settings.panes[0].merged = true;
+    let screen = settle(&mut harness);
+    let is_green = |p: &image::Rgba<u8>| p[1] > 180 && p[0] < 110 && p[2] < 140;
+    let is_orange = |p: &image::Rgba<u8>| p[0] > 220 && (140..200).contains(&p[1]) && p[2] < 60;
+    let (w, h) = screen.dimensions();
+    let alone = (4..h - 4)
+        .flat_map(|y| (4..w - 4).map(move |x| (x, y)))
+        .filter(|&(x, y)| is_orange(screen.get_pixel(x, y)))
+        .filter(|&(x, y)| {
+            (y - 4..=y + 4).all(|v| (x - 4..=x + 4).all(|u| !is_green(screen.get_pixel(u, v))))
+        })
+        .count();
+    let green = screen.pixels().filter(|p| is_green(p)).count();
+    (alone, green, harness.state().link().unwrap())
+}
+
+/// The merged outline is drawn, green and wide, under the font's orange one: where no
+/// glyph has overlapping contours (`strong-skew`, DejaVu) every orange curve has green
+/// under it; on `inter-overlaps` the curves inside the fill, which the union drops,
+/// stay orange alone. The link carries the choice.
+#[test]
+fn the_merged_outline_is_drawn_under_the_fonts() {
+    let (alone_plain, green_plain, _) = merged_outline_on("strong-skew");
+    let (alone, green, link) = merged_outline_on("inter-overlaps");
+    println!("orange alone: {alone_plain} on strong-skew, {alone} on inter-overlaps");
     assert!(
-        with > without + 500,
-        "green pixels: {with} with the merged outline, {without} without"
+        green_plain > 500 && green > 500,
+        "green: {green_plain}, {green}"
     );
-    let link = harness.state().link().unwrap();
+    assert!(
+        alone_plain <= 5 && alone > 20,
+        "orange with no green near: {alone_plain} without overlaps, {alone} with"
+    );
     assert!(link.contains("&a.merged=1"), "{link}");
 }
 

@@ -33,8 +33,9 @@ use kurbo::Shape;
 const PX_PER_EM: f64 = 32.0;
 const MAX_PIXEL_CHANGE: f32 = 1e-4;
 
-/// The outline's signed area by contour (kurbo's closed form), summed as magnitudes: the
-/// merged outline winds 0 or 1 everywhere, so this is its filled area.
+/// The outline's signed areas by contour (kurbo's closed form), summed: the merged
+/// outline winds 0 or 1 everywhere (holes against outer contours), so the sum's
+/// magnitude is its filled area.
 fn filled_area_of_merged(outline: &Outline) -> f64 {
     outline
         .contours
@@ -98,9 +99,9 @@ fn merged_changes_nothing(outline: &Outline, units_per_em: f64, what: &str) -> b
     true
 }
 
-/// Every glyph of `font`: how many were merged, of how many with an outline, and the
-/// merge's time per glyph (all glyphs; ms).
-fn check_font(font: &Font, label: &str) {
+/// Checks every glyph of `font`; prints how many were merged, of how many with an
+/// outline, and the merge's time per glyph (all glyphs; ms); returns the two counts.
+fn check_font(font: &Font, label: &str) -> (u32, u32) {
     let units_per_em = font.units_per_em();
     let (mut glyphs, mut merged, mut merge_ms) = (0, 0, 0.0);
     for id in 0..font.glyph_count() {
@@ -122,6 +123,7 @@ fn check_font(font: &Font, label: &str) {
         100.0 * f64::from(merged) / f64::from(glyphs),
         merge_ms / f64::from(glyphs)
     );
+    (merged, glyphs)
 }
 
 #[test]
@@ -129,31 +131,32 @@ fn merging_inter_changes_no_pixel_at_either_weight() {
     let inter = Font::shipped(2);
     for weight in [400.0, 900.0] {
         let font = inter.with_variations(&[("wght".into(), weight)]).unwrap();
-        check_font(&font, &format!("Inter wght {weight}"));
+        let (merged, glyphs) = check_font(&font, &format!("Inter wght {weight}"));
+        // A variable font draws its glyphs with overlapping contours (Inter's designers
+        // overlap strokes at joins): if few were merged, merging would be checked on
+        // nothing. (It merges 37%.)
+        assert!(merged * 4 >= glyphs, "{merged} of {glyphs} merged");
     }
 }
 
 #[test]
 fn merging_lohit_bengali_changes_no_pixel() {
-    check_font(&Font::shipped(3), "Lohit Bengali");
+    let (merged, _) = check_font(&Font::shipped(3), "Lohit Bengali");
+    assert!(merged > 0, "no conjunct of Lohit overlaps");
 }
 
 #[test]
 fn merging_the_overlapping_hard_cases_changes_no_pixel() {
-    let mut merged = 0;
     for case in hard_cases::all() {
         if !case.traits.contains(&Trait::Overlapping) {
             continue;
         }
-        for glyph in &case.scene.glyphs {
-            if merged_changes_nothing(&glyph.outline, case.scene.units_per_em, case.name) {
-                merged += 1;
-            }
-        }
+        let merged = case
+            .scene
+            .glyphs
+            .iter()
+            .filter(|g| merged_changes_nothing(&g.outline, case.scene.units_per_em, case.name))
+            .count();
+        assert!(merged > 0, "{}: nothing merged", case.name);
     }
-    // Every overlapping case has a glyph whose contours overlap: each is merged.
-    assert!(
-        merged >= 6,
-        "only {merged} glyphs of the overlapping cases were merged"
-    );
 }

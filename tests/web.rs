@@ -117,17 +117,33 @@ fn answer(mut stream: TcpStream, dir: &Path) {
     stream.write_all(&body).ok();
 }
 
+/// The Chromium binary on the PATH (Debian's package installs `chromium`).
+fn chromium() -> String {
+    std::env::var_os("PATH")
+        .iter()
+        .flat_map(std::env::split_paths)
+        .map(|dir| dir.join("chromium"))
+        .find(|path| path.is_file())
+        .unwrap_or_else(|| {
+            panic!("no chromium on the PATH: apt-get install chromium (.ci/run does)")
+        })
+        .display()
+        .to_string()
+}
+
 /// A headless Chromium driven through chromedriver's W3C endpoint.
 struct Browser {
     driver: Child,
     port: u16,
     session: String,
+    /// This browser's turn, given up after the browser is closed (`Drop`).
+    _turn: std::sync::MutexGuard<'static, ()>,
 }
 
 impl Browser {
     /// Starts Chromium with `flags`. One browser at a time: SwiftShader on 2 cores is
     /// slow enough alone.
-    fn start(flags: &[&str]) -> (Browser, std::sync::MutexGuard<'static, ()>) {
+    fn start(flags: &[&str]) -> Browser {
         static ONE_AT_A_TIME: Mutex<()> = Mutex::new(());
         let turn = ONE_AT_A_TIME.lock().unwrap_or_else(|p| p.into_inner());
         let port = TcpListener::bind("127.0.0.1:0")
@@ -148,6 +164,7 @@ impl Browser {
             driver,
             port,
             session: String::new(),
+            _turn: turn,
         };
         let start = Instant::now();
         while browser.call("GET", "/status", None).is_err() {
@@ -161,13 +178,13 @@ impl Browser {
         args.extend_from_slice(flags);
         let capabilities = json!({"capabilities": {"alwaysMatch": {
             "browserName": "chrome",
-            "goog:chromeOptions": {"binary": "/usr/bin/chromium", "args": args},
+            "goog:chromeOptions": {"binary": chromium(), "args": args},
         }}});
         let session = browser
             .call("POST", "/session", Some(capabilities))
             .unwrap_or_else(|e| panic!("Chromium did not start: {e}"));
         browser.session = session["sessionId"].as_str().unwrap().to_owned();
-        (browser, turn)
+        browser
     }
 
     /// One WebDriver command; its `value`, or the error it answered.
@@ -337,17 +354,16 @@ fn shows_the_explorer(screen: &RgbaImage) -> Result<(), String> {
 
 #[test]
 fn the_page_draws_the_explorer_and_a_blank_canvas_fails_the_check() {
-    let (browser, _turn) = Browser::start(&FLAGS);
+    let browser = Browser::start(&FLAGS);
     let title = browser.open("");
     assert!(title.ends_with("· ready"), "{title}");
     let screen = browser.screenshot();
     shows_the_explorer(&screen).unwrap();
     drop(browser);
-    drop(_turn);
 
     // The flag that makes an adapter exist, without the ones that make the canvas
     // composite: the title still says ready, and only the pixels tell.
-    let (browser, _turn) = Browser::start(&FLAGS[..1]);
+    let browser = Browser::start(&FLAGS[..1]);
     let title = browser.open("");
     assert!(title.ends_with("· ready"), "{title}");
     let blank = browser.screenshot();
@@ -363,7 +379,7 @@ fn the_page_draws_the_explorer_and_a_blank_canvas_fails_the_check() {
 /// the address then drops the fragment, which cannot carry that font.
 #[test]
 fn the_address_follows_the_view_and_the_page_opens_fragments_and_fonts() {
-    let (browser, _turn) = Browser::start(&FLAGS);
+    let browser = Browser::start(&FLAGS);
     let title = browser.open("");
     assert!(title.ends_with("· ready"), "{title}");
     let first = browser.view_where("a first view at rest", |view| view["link"] != "");
@@ -407,7 +423,7 @@ fn the_address_follows_the_view_and_the_page_opens_fragments_and_fonts() {
 
 #[test]
 fn a_malformed_link_opens_the_default_view_and_says_what_is_wrong() {
-    let (browser, _turn) = Browser::start(&FLAGS);
+    let browser = Browser::start(&FLAGS);
     let title = browser.open("#case=inter-overlaps&size=-4");
     assert!(title.ends_with("· ready"), "{title}");
     let status = browser.body_data("status");
@@ -485,7 +501,7 @@ fn a_desktop_link_opens_the_same_pixels_at_the_focus_on_the_page() {
     for (case, method) in [("inter-overlaps", "sdf-cells"), ("strong-skew", "winding")] {
         links.push((case, method, desktop_link(case, method)));
     }
-    let (browser, _turn) = Browser::start(&FLAGS);
+    let browser = Browser::start(&FLAGS);
     for (case, method, (link, desktop_focus, offset)) in links {
         let title = browser.open(&link);
         assert!(title.ends_with("· ready"), "{title}");
@@ -528,7 +544,6 @@ fn a_desktop_link_opens_the_same_pixels_at_the_focus_on_the_page() {
         let page_reference: Vec<f32> = serde_json::from_value(view["reference"].clone()).unwrap();
         assert_eq!(page_pixels.len() as u32, cols * rows);
         assert_eq!(page_reference.len() as u32, cols * rows);
-        // The focus and the pixels around it that the window holds.
         // Every pixel of the page's window that the frame holds: the focus and what
         // the magnifier shows around it.
         let mut compared = 0;

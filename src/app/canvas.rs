@@ -430,13 +430,19 @@ impl Explorer {
                 .filter(|r| (r.width, r.height) == (image.width, image.height));
             paint_values(&painter, rect, block, ppp, image, reference.as_deref());
         }
+        // The merged scene is made only when a pane shows it (a union per glyph).
         let outlines = [
-            (settings.merged, self.scene.merged_scene(), Style::Merged),
-            (settings.outline, self.scene.scene(), Style::Font),
+            (
+                settings.merged.then(|| self.scene.merged_scene()).flatten(),
+                Style::Merged,
+            ),
+            (
+                settings.outline.then(|| self.scene.scene()).flatten(),
+                Style::Font,
+            ),
         ];
-        for (shown, scene, style) in outlines {
-            if shown
-                && let Some(scene) = scene
+        for (scene, style) in outlines {
+            if let Some(scene) = scene
                 && let Err(e) = outline_painter::paint(&painter, scene, camera, ppp, block, style)
             {
                 notes.push(e);

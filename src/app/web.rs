@@ -142,8 +142,8 @@ struct Shown {
     ready: bool,
     link: Option<String>,
     status: String,
-    /// The captures `data-view` was written from (by address).
-    captures: Vec<usize>,
+    /// The view at rest and the link `data-view` was written for.
+    view: Option<(super::canvas::CanvasKey, Option<String>)>,
 }
 
 thread_local! {
@@ -189,17 +189,20 @@ pub(super) fn after_frame(app: &Explorer) {
         if !app.settled() {
             return;
         }
+        // Written again when the view at rest changes, or only its link does (an
+        // outline switched on changes no pixel a pane reads back).
+        let rested = app
+            .canvas
+            .analysed
+            .clone()
+            .map(|key| (key, shown.link.clone()));
+        if rested == shown.view {
+            return;
+        }
         let visible = app.settings.layout.panes();
         let captures: Vec<_> = (0..visible)
             .filter_map(|i| app.pane_capture(i).map(|c| (i, c)))
             .collect();
-        let addresses: Vec<usize> = captures
-            .iter()
-            .map(|(_, c)| Arc::as_ptr(c) as usize)
-            .collect();
-        if addresses == shown.captures {
-            return;
-        }
         let numbers = ViewNumbers {
             link: shown.link.clone().unwrap_or_default(),
             window: app.magnified_window(),
@@ -218,7 +221,7 @@ pub(super) fn after_frame(app: &Explorer) {
         };
         if let Ok(json) = serde_json::to_string(&numbers) {
             body.set_attribute("data-view", &json).ok();
-            shown.captures = addresses;
+            shown.view = rested;
         }
     });
 }

@@ -19,15 +19,19 @@ use linesweeper::{BinaryOp, FillRule};
 use super::{Contour, Outline, Segment, kurbo_path};
 
 /// How much the union's area may differ from the sum of the contours' areas, in em²,
-/// before the glyph counts as overlapping: above the union's own rounding (its curves
-/// are the input's, split in f64), below any overlap that can reach a pixel (a sliver
-/// 1/1000 em wide and long is 1e-6 em²).
-const SAME_AREA_EM2: f64 = 1e-9;
+/// before the glyph counts as overlapping when its contours are as many as the union's
+/// (a fold of one contour over itself): above the union's own rounding (its curves are
+/// the input's, split in f64, good to about 1e-15 of the area), and at 10⁶ px/em, the
+/// largest size, still 1e-6 of a pixel.
+const SAME_AREA_EM2: f64 = 1e-12;
 
 /// The nonzero union of `outline`'s contours, when it differs from the outline: when
-/// contours overlap, cross themselves, nest the same way or wind against the rest.
-/// `None` when the outline is already its own union (the usual glyph: outer contours
-/// and their holes, nothing crossing), and then it is kept exactly as it is.
+/// contours overlap, cross or fold over themselves, nest the same way, share an edge or
+/// have no area (the union has fewer or more contours, or less area). `None` when the
+/// outline is already its own union (the usual glyph: outer contours and their holes,
+/// nothing crossing), and then it is kept exactly as it is. (Orientation alone is not a
+/// difference: the union turns every contour its own way, which a method that needs one
+/// way sets itself.)
 pub fn merge_overlaps(outline: &Outline, units_per_em: f64) -> Result<Option<Outline>, String> {
     if outline.is_empty() {
         return Ok(None);
@@ -39,7 +43,8 @@ pub fn merge_overlaps(outline: &Outline, units_per_em: f64) -> Result<Option<Out
     let area = |paths: &mut dyn Iterator<Item = f64>| paths.map(f64::abs).sum::<f64>();
     let before = area(&mut outline.contours.iter().map(|c| contour_path(c).area()));
     let after = area(&mut contours.iter().map(|c| c.area()));
-    if (before - after).abs() <= SAME_AREA_EM2 * units_per_em * units_per_em {
+    let same_area = (before - after).abs() <= SAME_AREA_EM2 * units_per_em * units_per_em;
+    if same_area && contours.len() == outline.contours.len() {
         return Ok(None);
     }
     // The union's outer contours turn the way the original's largest contour does, so a

@@ -11,8 +11,9 @@ use crate::Error;
 use crate::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Rect, merge_overlaps};
 
 /// Border cells also serve points this far outside the grid (em): the pixels the quad
-/// is dilated by at small sizes (half a pixel's diagonal is 1/16 em at 11 px/em).
-pub const OUTSIDE_EM: f64 = 1.0 / 16.0;
+/// is dilated by at small sizes (half a pixel's diagonal plus the rasterizer's snap
+/// margin, `SNAP_MARGIN` in common.wgsl, is 0.8 px at 45°: 1/12 em at 9.6 px/em).
+pub const OUTSIDE_EM: f64 = 1.0 / 12.0;
 /// The automatic grid aims at this many cells per curve, in square-ish cells.
 const CELLS_PER_CURVE: f64 = 4.0;
 /// The most cells along a side the automatic grid uses (a forced grid may use more).
@@ -39,8 +40,10 @@ impl PreparedGlyph {
         units_per_em: f64,
         settings: &Settings,
     ) -> Result<PreparedGlyph, Error> {
+        // The union fails only on non-finite points, which no scene holds; the glyph is
+        // then drawn as it is, as the explorer's merged outline shows it.
         let merged = match settings.overlaps {
-            Overlaps::Merge => merge_overlaps(outline, units_per_em).map_err(Error::Input)?,
+            Overlaps::Merge => merge_overlaps(outline, units_per_em).ok().flatten(),
             Overlaps::Keep => None,
         };
         let outline = merged.as_ref().unwrap_or(outline);

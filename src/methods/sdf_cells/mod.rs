@@ -71,7 +71,9 @@ pub const INFO: MethodInfo = MethodInfo {
                 temporal: None,
                 statement: "estimate (font-demo's), overlapping contours merged first: no \
                             pixel off by more than 0.65 on text whose contours do not \
-                            touch, an edge to a pixel; cracks along touching contours",
+                            touch, an edge to a pixel; cracks from a point where contours \
+                            touch, or where a contour crossing itself leaves lobes meeting \
+                            (a figure-8's node, which merging cannot remove)",
             },
         },
         ClaimedSetting {
