@@ -168,6 +168,36 @@ fn overlapping_contours_stay_within_a_quarter() {
     }
 }
 
+/// With `overlaps=merge` the same overlapping glyphs are drawn from their nonzero union:
+/// no contours overlap any more, so they meet the bound of glyphs without overlaps
+/// (MAE and max ≤ 0.02, the test above), not a quarter.
+#[test]
+fn merged_overlaps_are_exact_like_plain_glyphs() {
+    let inter = Font::shipped(2);
+    for weight in [400.0, 900.0] {
+        let font = inter.with_variations(&[("wght".into(), weight)]).unwrap();
+        let scene = glyphs_of(&font, "ÖkonomieAB&@Rg48$", true);
+        let (mut worst_mae, mut max) = (0.0f64, 0.0f64);
+        for size in [16.0, 48.0] {
+            for (name, matrix) in transforms() {
+                for k in [0, 5, 10, 15] {
+                    let cam = framed(&scene, size, matrix, subpixel(k));
+                    let s = error(&[("overlaps", "merge")], &scene, &cam);
+                    assert!(
+                        s.mae_255 <= 0.02 && s.max <= 0.02,
+                        "wght {weight}, {size} px/em, {name}, offset {k}: {s:?}"
+                    );
+                    worst_mae = worst_mae.max(s.mae_255);
+                    max = max.max(s.max);
+                }
+            }
+        }
+        println!(
+            "Inter wght {weight}, overlapping glyphs merged: worst MAE {worst_mae:.4}/255, max {max:.4}"
+        );
+    }
+}
+
 /// One edge of a square 400 px across crosses pixel rows and columns at every angle in
 /// 5° steps and at 4 phases: each pixel is the reference's to within the target's
 /// rounding (and f32's share, far below it).
@@ -373,6 +403,10 @@ fn bad_settings_are_clear_errors() {
         (
             vec![("aa", "area"), ("rays", "1")],
             "rays=1 does not apply to aa=area",
+        ),
+        (
+            vec![("overlaps", "merge"), ("fill", "evenodd")],
+            "overlaps=merge takes the nonzero union",
         ),
     ] {
         let params: Vec<(String, String)> = params

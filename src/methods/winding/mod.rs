@@ -173,6 +173,14 @@ pub const PARAMS: &[ParamSpec] = &[
         help: "Fill rule. Fonts mean nonzero.",
     },
     ParamSpec {
+        key: "overlaps",
+        choices: &["keep", "merge"],
+        range: None,
+        help: "merge: a glyph whose contours overlap is drawn from their nonzero union \
+               (geometry::merge_overlaps), so aa=area needs no sub-pixels there; keep: \
+               from the contours as the font has them. Nonzero fill only.",
+    },
+    ParamSpec {
         key: "overlay",
         choices: &["none", "classes", "cost"],
         range: None,
@@ -223,6 +231,8 @@ pub struct Settings {
     /// 1 or 4 sub-pixel samples; 0: 4 where a pixel spans over 1/32 em, else 1.
     pub samples: u32,
     pub even_odd: bool,
+    /// Draw each glyph from the nonzero union of its contours (`overlaps=merge`).
+    pub merge_overlaps: bool,
     /// None: no bands, every curve for every ray.
     pub bands: Option<BandCount>,
     pub overlay: Option<Overlay>,
@@ -235,6 +245,7 @@ impl Default for Settings {
             rays: Rays::XY,
             samples: 0,
             even_odd: false,
+            merge_overlaps: false,
             bands: Some(BandCount::Auto),
             overlay: None,
         }
@@ -292,6 +303,20 @@ impl Settings {
                 "evenodd" => true,
                 _ => return Err(bad("fill", v, "nonzero, evenodd")),
             };
+        }
+        if let Some(v) = param(params, "overlaps") {
+            s.merge_overlaps = match v {
+                "keep" => false,
+                "merge" => true,
+                _ => return Err(bad("overlaps", v, "keep, merge")),
+            };
+        }
+        if s.merge_overlaps && s.even_odd {
+            return Err(Error::Input(
+                "winding: overlaps=merge takes the nonzero union, which fill=evenodd would \
+                 not draw the same"
+                    .into(),
+            ));
         }
         if let Some(v) = param(params, "bands") {
             s.bands = match v {
@@ -487,7 +512,14 @@ impl Method for Winding {
             Antialiasing::Rays => Layout::Rays,
             Antialiasing::Area => Layout::Area,
         };
-        let data = GlyphData::of_scene(scene, band_count, layout);
+        let merged;
+        let outlines = if self.settings.merge_overlaps {
+            merged = scene.with_overlaps_merged();
+            &merged
+        } else {
+            scene
+        };
+        let data = GlyphData::of_scene(outlines, band_count, layout);
         gpu.catching_errors("preparing 'winding'", || {
             let instances = Instances::new(gpu, scene);
             let storage = wgpu::BufferUsages::STORAGE;
