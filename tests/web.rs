@@ -357,8 +357,13 @@ fn the_page_draws_the_explorer_and_a_blank_canvas_fails_the_check() {
     let browser = Browser::start(&FLAGS);
     let title = browser.open("");
     assert!(title.ends_with("· ready"), "{title}");
+    // A first start, at rest: on sdf-cells' worst pixel, its numbers in. This is the
+    // README's picture of the page (screenshots/web-page.png is a copy of it).
+    browser.view_where("the first start at rest", |_| true);
     let screen = browser.screenshot();
     shows_the_explorer(&screen).unwrap();
+    let picture = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/web-page.png");
+    screen.save(&picture).unwrap();
     drop(browser);
 
     // The flag that makes an adapter exist, without the ones that make the canvas

@@ -141,11 +141,11 @@ fn every_font_size_and_transform_is_exact_where_contours_do_not_overlap() {
 }
 
 /// Inter's glyphs whose contours overlap, at its default weight and at 900, at 16 and
-/// 48 px/em: the pixels where their curves meet another are integrated in sub-pixels,
-/// and none is off by more than a quarter.
-#[test]
-fn overlapping_contours_stay_within_a_quarter() {
+/// 48 px/em, under every transform at four offsets, drawn by winding with `params`: each
+/// view named, with its error.
+fn overlapping_inter_views(params: &[(&str, &str)]) -> Vec<(String, ErrorStats)> {
     let inter = Font::shipped(2);
+    let mut views = Vec::new();
     for weight in [400.0, 900.0] {
         let font = inter.with_variations(&[("wght".into(), weight)]).unwrap();
         let scene = glyphs_of(&font, "ÖkonomieAB&@Rg48$", true);
@@ -157,45 +157,36 @@ fn overlapping_contours_stay_within_a_quarter() {
             for (name, matrix) in transforms() {
                 for k in [0, 5, 10, 15] {
                     let cam = framed(&scene, size, matrix, subpixel(k));
-                    let s = error(&[], &scene, &cam);
-                    assert_eq!(
-                        s.pixels_over_025, 0,
-                        "wght {weight}, {size} px/em, {name}, offset {k}: {s:?}"
-                    );
+                    let view = format!("wght {weight}, {size} px/em, {name}, offset {k}");
+                    views.push((view, error(params, &scene, &cam)));
                 }
             }
         }
+    }
+    views
+}
+
+/// Overlapping contours as the font draws them: the pixels where their curves meet
+/// another are integrated in sub-pixels, and none is off by more than a quarter.
+#[test]
+fn overlapping_contours_stay_within_a_quarter() {
+    for (view, s) in overlapping_inter_views(&[]) {
+        assert_eq!(s.pixels_over_025, 0, "{view}: {s:?}");
     }
 }
 
 /// With `overlaps=merge` the same overlapping glyphs are drawn from their nonzero union:
 /// no contours overlap any more, so they meet the bound of glyphs without overlaps
-/// (MAE and max ≤ 0.02, the test above), not a quarter.
+/// (MAE and max ≤ 0.02, as above), not a quarter.
 #[test]
 fn merged_overlaps_are_exact_like_plain_glyphs() {
-    let inter = Font::shipped(2);
-    for weight in [400.0, 900.0] {
-        let font = inter.with_variations(&[("wght".into(), weight)]).unwrap();
-        let scene = glyphs_of(&font, "ÖkonomieAB&@Rg48$", true);
-        let (mut worst_mae, mut max) = (0.0f64, 0.0f64);
-        for size in [16.0, 48.0] {
-            for (name, matrix) in transforms() {
-                for k in [0, 5, 10, 15] {
-                    let cam = framed(&scene, size, matrix, subpixel(k));
-                    let s = error(&[("overlaps", "merge")], &scene, &cam);
-                    assert!(
-                        s.mae_255 <= 0.02 && s.max <= 0.02,
-                        "wght {weight}, {size} px/em, {name}, offset {k}: {s:?}"
-                    );
-                    worst_mae = worst_mae.max(s.mae_255);
-                    max = max.max(s.max);
-                }
-            }
-        }
-        println!(
-            "Inter wght {weight}, overlapping glyphs merged: worst MAE {worst_mae:.4}/255, max {max:.4}"
-        );
+    let (mut worst_mae, mut max) = (0.0f64, 0.0f64);
+    for (view, s) in overlapping_inter_views(&[("overlaps", "merge")]) {
+        assert!(s.mae_255 <= 0.02 && s.max <= 0.02, "{view}: {s:?}");
+        worst_mae = worst_mae.max(s.mae_255);
+        max = max.max(s.max);
     }
+    println!("Inter's overlapping glyphs merged: worst MAE {worst_mae:.4}/255, max {max:.4}");
 }
 
 /// One edge of a square 400 px across crosses pixel rows and columns at every angle in

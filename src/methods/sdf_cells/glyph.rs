@@ -6,9 +6,9 @@ use glam::DVec2;
 use super::cells::{Grid, Mode, cell_lists, row_bands};
 use super::curves::CurveLayout;
 use super::encoding::{EncodedCells, MAX_BEGIN_SLOT};
-use super::params::{EncodingChoice, GridChoice, Overlaps, Settings};
+use super::params::{EncodingChoice, GridChoice, Settings};
 use crate::Error;
-use crate::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Rect, merge_overlaps};
+use crate::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Rect};
 
 /// Border cells also serve points this far outside the grid (em): the pixels the quad
 /// is dilated by at small sizes (half a pixel's diagonal plus the rasterizer's snap
@@ -40,13 +40,6 @@ impl PreparedGlyph {
         units_per_em: f64,
         settings: &Settings,
     ) -> Result<PreparedGlyph, Error> {
-        // The union fails only on non-finite points, which no scene holds; the glyph is
-        // then drawn as it is, as the explorer's merged outline shows it.
-        let merged = match settings.overlaps {
-            Overlaps::Merge => merge_overlaps(outline, units_per_em).ok().flatten(),
-            Overlaps::Keep => None,
-        };
-        let outline = merged.as_ref().unwrap_or(outline);
         let quadratics = outline.to_quadratics(DEFAULT_QUAD_TOLERANCE_EM * units_per_em);
         let layout = CurveLayout::new(&quadratics);
         let curves = layout.curve_slots.len();

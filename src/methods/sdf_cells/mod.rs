@@ -296,6 +296,14 @@ impl SceneData {
     /// What `sdf-cells` uploads for `scene` with `settings`: every distinct glyph
     /// prepared, then laid out in the shader's buffers.
     pub fn of_scene(scene: &Scene, settings: &Settings) -> Result<SceneData, Error> {
+        let merged;
+        let scene = match settings.overlaps {
+            params::Overlaps::Merge => {
+                merged = scene.with_overlaps_merged();
+                &merged
+            }
+            params::Overlaps::Keep => scene,
+        };
         let prepared = scene
             .glyphs
             .iter()
