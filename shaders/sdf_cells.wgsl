@@ -121,9 +121,44 @@ struct Field {
     second: f32,
     // Curves evaluated.
     cost: u32,
-    // Estimate: where the curve that gave `value` starts in `points`.
-    owner: u32,
+    // Estimate: the curve that gave `value`, and the part of the outline it stands for.
+    owner: Curve,
+    part: Part,
 }
+
+// Estimate: a curve as the estimate reads it, with what its joins need of its
+// neighbours (the layout stores them beside it: `points[i - 2 ..= i + 4]`).
+struct Curve {
+    start: vec2<f32>,
+    control: vec2<f32>,
+    end: vec2<f32>,
+    // The previous curve's start and control point.
+    previous_start: vec2<f32>,
+    previous_control: vec2<f32>,
+    // The next curve's control point and end.
+    next_control: vec2<f32>,
+    next_end: vec2<f32>,
+}
+
+fn load_curve(i: u32) -> Curve {
+    return Curve(points[i], points[i + 1u], points[i + 2u], points[i - 2u], points[i - 1u],
+        points[i + 3u], points[i + 4u]);
+}
+
+// Estimate: the part of the outline a curve's side comes from.
+struct Part {
+    // The distance to its chord.
+    udist: f32,
+    // Whether p projects inside the chord: the side is the curve's own tangent line.
+    inner: bool,
+    // Where the side is a corner's (p nearest to both curves at their join): that point,
+    // and a direction along the bisector of the narrower wedge between the two curves;
+    // else NO_CORNER.
+    corner: vec2<f32>,
+    wedge: vec2<f32>,
+}
+
+const NO_CORNER = vec2<f32>(FAR, FAR);
 
 fn keep_two_smallest(field: ptr<function, Field>, d: f32) {
     if d < (*field).nearest {
@@ -134,12 +169,6 @@ fn keep_two_smallest(field: ptr<function, Field>, d: f32) {
     }
 }
 
-// From font-demo: signed distance from p to the line a→b, positive on its right (y up).
-fn dist_to_line(a: vec2<f32>, b: vec2<f32>, p: vec2<f32>) -> f32 {
-    let dir = b - a;
-    return dot(normalize(vec2<f32>(-dir.y, dir.x)), a - p);
-}
-
 // From font-demo: where p projects on the chord a→b, as a parameter clamped to [0, 1].
 fn calc_t(a: vec2<f32>, b: vec2<f32>, p: vec2<f32>) -> f32 {
     let dir = b - a;
@@ -147,53 +176,164 @@ fn calc_t(a: vec2<f32>, b: vec2<f32>, p: vec2<f32>) -> f32 {
     return clamp(dot(p - a, dir) / max(dot(dir, dir), 1e-30), 0.0, 1.0);
 }
 
+// Whether curve a runs straight into curve b along one contour: b starts where a ends
+// and its control point is a's successor's. Equal ends alone do not say it: where two
+// contours touch, their curves share ends too.
+fn precedes(a: Curve, b: Curve) -> bool {
+    return all(a.end == b.start) && all(a.next_control == b.control);
+}
+
+fn ends_at(c: Curve, v: vec2<f32>) -> bool {
+    return all(c.start == v) || all(c.end == v);
+}
+
+// Whether the line of a side (its value and gradient at p) passes through v, as an edge
+// does where another contour's corner touches it; to 1e-3 of the distance, far above
+// f32 rounding.
+fn passes_through(value: f32, gradient: vec2<f32>, v: vec2<f32>, p: vec2<f32>, udist: f32) -> bool {
+    return abs(value + dot(gradient, v - p)) <= 1e-3 * udist;
+}
+
+// A tie at the join where a curve starting at `a` runs into the curve from `b` to `c`
+// (a seen from that curve's chord, on its right where the outline turns right): min
+// where the outline turns right (convex: inside both), else max.
+fn merge_at_join(a: vec2<f32>, b: vec2<f32>, c: vec2<f32>, kept: f32, bez: f32) -> f32 {
+    let chord = c - b;
+    let turn = dot(vec2<f32>(chord.y, -chord.x), a - b);
+    return select(min(bez, kept), max(bez, kept), turn <= 0.0);
+}
+
+// A signed distance, the unit direction in which it grows, and whether a corner gave it
+// (p nearest to both curves meeting there at their join).
+struct Side {
+    value: f32,
+    gradient: vec2<f32>,
+    corner: bool,
+    // For a corner: along the bisector of the narrower wedge between its two curves.
+    wedge: vec2<f32>,
+}
+
+// The signed distance from p to the line a→b, positive on its right (y up), as
+// font-demo's `dist_to_line`.
+fn side_of_line(a: vec2<f32>, b: vec2<f32>, p: vec2<f32>) -> Side {
+    let dir = normalize(b - a);
+    let gradient = vec2<f32>(dir.y, -dir.x);
+    return Side(dot(gradient, p - a), gradient, false, vec2<f32>(0.0));
+}
+
+// font-demo's side of p for a curve: its tangent line at t, the parameter where p
+// projects on its chord. Where the control point sits on an endpoint that tangent
+// vanishes at the end and the chord stands in.
+fn tangent_side(c: Curve, t: f32, p: vec2<f32>) -> Side {
+    let q0 = mix(c.start, c.control, t);
+    let q1 = mix(c.control, c.end, t);
+    let degenerate = all(q0 == q1);
+    return side_of_line(select(q0, c.start, degenerate), select(q1, c.end, degenerate), p);
+}
+
+// The side of p at a join v where the outline comes in from `before` and leaves towards
+// `after` (the tangents' far points), for a curve whose chord is nearest to p at v
+// (`own`: its tangent side). Past both tangents there, v is the nearest point of both
+// curves and their corner decides: p is inside both tangent lines where the outline
+// turns right (convex), inside either where it turns left. Elsewhere `own` stands, as in
+// font-demo.
+fn join_side(before: vec2<f32>, v: vec2<f32>, after: vec2<f32>, p: vec2<f32>, own: Side) -> Side {
+    let into = normalize(v - before);
+    let out = normalize(after - v);
+    if dot(p - v, into) < 0.0 || dot(p - v, out) > 0.0 {
+        return own;
+    }
+    let into_gradient = vec2<f32>(into.y, -into.x);
+    let out_gradient = vec2<f32>(out.y, -out.x);
+    let incoming = dot(into_gradient, p - v);
+    let outgoing = dot(out_gradient, p - v);
+    let convex = dot(out_gradient, before - v) > 0.0;
+    if (incoming < outgoing) == convex {
+        return Side(incoming, into_gradient, true, out - into);
+    }
+    return Side(outgoing, out_gradient, true, out - into);
+}
+
+// Where two contours touch, at a corner of one lying on the other (the lobes of a
+// figure-8 once merged, squares meeting at a corner, a tip on an edge): `other_inside`
+// is the other part's gradient along the corner's narrower wedge. Where the other is
+// outside there, the two fills meet only at the point and p is inside either (max);
+// where it is inside, the wedge is a hole in its fill and p is inside both (min).
+fn merge_touching(other_inside: f32, kept: f32, value: f32) -> f32 {
+    return select(min(value, kept), max(value, kept), other_inside <= 0.0);
+}
+
+// How curve c's side merges with the value so far when c is within `bias` of the curve
+// that gave it (the owner).
+fn merge_tie(c: Curve, part: Part, side: Side, p: vec2<f32>, field: Field) -> f32 {
+    let owner = field.owner;
+    let kept = field.value;
+    // One runs into the other: the corner at their join. font-demo asks how the
+    // previous curve turns into this one, which is the other join when this curve runs
+    // into the owner (the last curve of a contour meeting its first).
+    let into_owner = precedes(c, owner);
+    let at_join = merge_at_join(select(c.previous_start, c.start, into_owner),
+        select(c.start, owner.start, into_owner), select(c.end, owner.end, into_owner), kept,
+        side.value);
+    if into_owner || precedes(owner, c) {
+        return at_join;
+    }
+    let mine = part.corner;
+    if all(mine != NO_CORNER)
+        && (ends_at(owner, mine) || passes_through(kept, field.gradient, mine, p, part.udist)) {
+        return merge_touching(dot(field.gradient, part.wedge), kept, side.value);
+    }
+    let theirs = field.part.corner;
+    if all(theirs != NO_CORNER)
+        && (ends_at(c, theirs) || passes_through(side.value, side.gradient, theirs, p, part.udist)) {
+        return merge_touching(dot(side.gradient, field.part.wedge), kept, side.value);
+    }
+    // Two parts of the outline that p projects inside: each side is right where its own
+    // part is the nearest, so the nearer decides.
+    if part.inner && field.part.inner {
+        return select(side.value, kept, part.udist >= field.part.udist);
+    }
+    return at_join;
+}
+
 // font-demo's `process_bezier2`: the curve nearest by its chord gives the distance to
-// its tangent line at t; curves within `bias` of that one are merged with min where the
-// outline turns right at their join (convex: inside both) and max where it turns left.
+// its tangent line at t; curves within `bias` of the one that gave it tie and merge
+// (`merge_tie`). Where the chord's nearest point is an end, the curve's side is read at
+// the join there (`join_side`; font-demo leaves that to the tie with the neighbour,
+// which need not be the curve that gave the value). A tie is judged against the curve
+// that gave the value, not the nearest seen: along a chain of curves each within `bias`
+// of the last, a far curve's side would otherwise stand over a nearer one's.
 fn estimate_curve(p: vec2<f32>, i: u32, field: ptr<function, Field>) {
-    let p0 = points[i];
-    let p1 = points[i + 1u];
-    let p2 = points[i + 2u];
-    let t = calc_t(p0, p2, p);
-    let udist = distance(mix(p0, p2, t), p);
+    let c = load_curve(i);
+    let t = calc_t(c.start, c.end, p);
+    let udist = distance(mix(c.start, c.end, t), p);
     let min_udist = (*field).nearest;
     keep_two_smallest(field, udist);
     if udist > min_udist + settings.bias {
         return;
     }
-    // The tangent at t runs from q0 to q1; where the control point sits on an endpoint
-    // that tangent vanishes at the end and the chord stands in.
-    let q0 = mix(p0, p1, t);
-    let q1 = mix(p1, p2, t);
-    let degenerate = all(q0 == q1);
-    let a = select(q0, p0, degenerate);
-    let b = select(q1, p2, degenerate);
-    let bez = dist_to_line(a, b, p);
-    let dir = normalize(b - a);
-    // Gradient of dist_to_line with respect to p.
-    let grad = vec2<f32>(dir.y, -dir.x);
-    if udist >= min_udist - settings.bias {
-        // A tie: which way does the outline turn at the join? font-demo asks how the
-        // previous curve (points[i - 2]) turns into this one. When this curve is the one
-        // before the curve that gave the value (the last curve of a contour meeting its
-        // first, or runs visited out of order), that join is the other one: ask how
-        // this curve turns into that one.
-        let owner = (*field).owner;
-        var prevd = dist_to_line(p0, p2, points[i - 2u]);
-        if all(p2 == points[owner]) {
-            prevd = dist_to_line(points[owner], points[owner + 2u], p0);
-        }
-        let merged = select(min(bez, (*field).value), max(bez, (*field).value), prevd <= 0.0);
-        if merged == bez {
-            (*field).gradient = grad;
-            (*field).owner = i;
-        }
-        (*field).value = merged;
-    } else {
-        (*field).value = bez;
-        (*field).gradient = grad;
-        (*field).owner = i;
+    var side = tangent_side(c, t, p);
+    let at_start = t <= 0.0;
+    let v = select(c.end, c.start, at_start);
+    if at_start || t >= 1.0 {
+        // The join's tangents; the chord stands in for one that vanishes.
+        let own_in = select(c.control, c.start, all(c.control == c.end));
+        let own_out = select(c.control, c.end, all(c.control == c.start));
+        let previous_in = select(c.previous_control, c.previous_start, all(c.previous_control == c.start));
+        let next_out = select(c.next_control, c.next_end, all(c.next_control == c.end));
+        side = join_side(select(own_in, previous_in, at_start), v, select(next_out, own_out, at_start), p, side);
     }
+    let part = Part(udist, t > 0.0 && t < 1.0, select(NO_CORNER, v, side.corner), side.wedge);
+    var merged = side.value;
+    if udist >= (*field).part.udist - settings.bias {
+        merged = merge_tie(c, part, side, p, *field);
+    }
+    if merged == side.value {
+        (*field).gradient = side.gradient;
+        (*field).owner = c;
+        (*field).part = part;
+    }
+    (*field).value = merged;
 }
 
 // The parameter in [0, 1] of the point of the quadratic (p0, p1, p2) nearest to p.
@@ -338,7 +478,9 @@ fn winding_number(g: GlyphCells, p: vec2<f32>) -> Winding {
 }
 
 fn signed_distance(g: GlyphCells, p: vec2<f32>) -> Field {
-    var field = Field(-FAR, vec2<f32>(1.0, 0.0), FAR, FAR, 0u, 0u);
+    let far = vec2<f32>(FAR);
+    var field = Field(-FAR, vec2<f32>(1.0, 0.0), FAR, FAR, 0u, Curve(far, far, far, far, far, far, far),
+        Part(FAR, false, NO_CORNER, vec2<f32>(0.0)));
     let cell = cell_curves(g, cell_index(g, p));
     field.cost = cell.count;
     for (var k = 0u; k < cell.count; k++) {

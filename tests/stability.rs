@@ -55,15 +55,19 @@ fn every_method_keeps_its_claims_on_every_hard_case() {
     );
 }
 
-/// The documented limitations are measured, not assumed: the estimate cracks where
-/// contours touch, and exact distances on detail under a pixel stay within their
-/// looser limitation bound. Overlapping contours, merged first, are inside both claims.
+/// The documented limitations are measured, not assumed: the estimate reads a contour
+/// far under a pixel as a whole one, and exact distances on detail under a pixel stay
+/// within their looser limitation bound. Overlapping contours, merged first, and
+/// touching ones are inside both claims.
 #[test]
 fn limitations_show_their_numbers() {
     let names = [
-        "touching-contours",
+        "tiny-curves",
         "thin-stem",
         "overlapping-same-direction",
+        "figure-8",
+        "touching-contours",
+        "hole-touching-edge",
     ];
     let cases = stability::select_cases(Some(&names.map(String::from))).unwrap();
     let variants = stability::select_variants(Some(&["sdf-cells".into()])).unwrap();
@@ -82,14 +86,14 @@ fn limitations_show_their_numbers() {
             .find(|o| o.case == case && o.variant == variant)
             .unwrap_or_else(|| panic!("{case} × {variant} did not run"))
     };
-    let estimate = find("touching-contours", "sdf-cells");
+    let estimate = find("tiny-curves", "sdf-cells");
     assert_eq!(
         estimate.bound, None,
-        "the estimate bounds nothing where contours touch"
+        "the estimate bounds nothing on detail under a pixel"
     );
     assert!(estimate.limitation);
-    // The full sweep counts 1 309 over 64 frames: about 20 a frame.
-    assert!(estimate.artifact_pixels > 50, "{estimate:?}");
+    // A contour 1e-4 em across, a tenth of a pixel, reads as most of one.
+    assert!(estimate.artifact_pixels > 0, "{estimate:?}");
     assert!(!estimate.breaks_claim());
     let exact = find("thin-stem", "sdf-cells exact");
     assert!(
@@ -98,14 +102,18 @@ fn limitations_show_their_numbers() {
     );
     assert_eq!(exact.bound.map(|b| b.max), Some(0.8));
     assert!(!exact.breaks_claim(), "{exact:?}");
-    for variant in ["sdf-cells", "sdf-cells exact"] {
-        let merged = find("overlapping-same-direction", variant);
-        assert!(
-            !merged.limitation,
-            "{variant}: overlaps are claimed once merged"
-        );
-        assert_eq!(merged.bound.map(|b| b.max), Some(0.65));
-        assert!(!merged.breaks_claim(), "{merged:?}");
+    for case in [
+        "overlapping-same-direction",
+        "figure-8",
+        "touching-contours",
+        "hole-touching-edge",
+    ] {
+        for variant in ["sdf-cells", "sdf-cells exact"] {
+            let claimed = find(case, variant);
+            assert!(!claimed.limitation, "{variant}: {case} is claimed");
+            assert_eq!(claimed.bound.map(|b| b.max), Some(0.65));
+            assert!(!claimed.breaks_claim(), "{claimed:?}");
+        }
     }
 }
 

@@ -164,9 +164,8 @@ pub enum Trait {
     /// Contours overlap or cross themselves: a distance to the outline is not a
     /// distance to the filled area's boundary.
     Overlapping,
-    /// Separate contours meet at a point or along an edge without overlapping, or one
-    /// contour crosses itself so that its filled area is lobes meeting at the crossing
-    /// (a figure-8's node): the filled area's boundary there is made of two edges.
+    /// Separate contours meet at a point or along an edge without overlapping: the
+    /// outline's boundary there is made of two contours' edges.
     TouchingContours,
     /// Several edges, or a whole contour, inside one pixel: one distance per pixel (or
     /// four point samples) cannot resolve them.

@@ -107,12 +107,6 @@ pub fn all() -> Vec<HardCase> {
         traits: &[Trait::TouchingContours],
         ..case
     };
-    // A contour crossing itself so that its filled area is lobes meeting at the
-    // crossing (a node): overlapping as drawn, touching once merged.
-    let lobes_at_a_node = |case: HardCase| HardCase {
-        traits: &[Trait::Overlapping, Trait::TouchingContours],
-        ..case
-    };
     // Two edges inside one pixel.
     let subpixel_detail = |case: HardCase| HardCase {
         traits: &[Trait::SubpixelDetail],
@@ -256,6 +250,15 @@ pub fn all() -> Vec<HardCase> {
             ],
         )),
         touching(synthetic(
+            "hole-touching-edge",
+            "a square with a triangular hole whose tip touches the square's top edge from \
+             inside",
+            vec![
+                polygon(&rect(2.0, 2.0, 18.0, 18.0)),
+                reversed(polygon(&[(6.0, 8.0), (14.0, 8.0), (10.0, 18.0)])),
+            ],
+        )),
+        touching(synthetic(
             "shared-edge",
             "two squares sharing a whole edge, run once each way, off the pixel grid",
             vec![
@@ -298,7 +301,7 @@ pub fn all() -> Vec<HardCase> {
                 polygon(&octagon(11.0, 11.0, 4.5)),
             ],
         ),
-        lobes_at_a_node(synthetic(
+        overlapping(synthetic(
             "figure-8",
             "one contour crossing itself: the two lobes wind opposite ways",
             vec![polygon(&[
@@ -332,7 +335,7 @@ pub fn all() -> Vec<HardCase> {
                 (20.0, 2.0),
             )],
         ),
-        lobes_at_a_node(synthetic(
+        overlapping(synthetic(
             "cubic-loop",
             "a cubic that loops over itself",
             vec![cubic_closed(

@@ -4,14 +4,15 @@
 //! Layout, per contour of n curves (font units, y up):
 //!
 //! ```text
-//!   prev.p0 prev.p1 | c0.p0 c0.p1 | c1.p0 c1.p1 | … | c(n-1).p0 c(n-1).p1 | end pad
+//!   prev.p0 prev.p1 | c0.p0 c0.p1 | c1.p0 c1.p1 | … | c(n-1).p0 c(n-1).p1 | c0.p0 c0.p1 | c0.p2 c0.p2
 //! ```
 //!
 //! Curve k starts at an even point index (its *slot* is that index / 2), its control
 //! point follows, and its end is the next curve's start. The two leading points repeat
-//! the contour's last curve, so `points[i - 2]` is the previous curve's start for every
-//! curve — the estimate's tie-break reads it — and the trailing pad keeps the next
-//! contour on an even index.
+//! the contour's last curve and the trailing ones its first curve, so `points[i - 2 ..=
+//! i]` is the previous curve and `points[i + 2 ..= i + 4]` the next one for every curve:
+//! the estimate reads the corner at either end of a curve from them. The trailing slots
+//! also keep the next contour on an even index.
 
 use glam::DVec2;
 
@@ -47,13 +48,14 @@ impl CurveLayout {
         turn_fill_to_the_right(&mut contours);
         let mut layout = CurveLayout::default();
         for (index, contour) in contours.iter().enumerate() {
-            let last = contour[contour.len() - 1];
+            let (first, last) = (contour[0], contour[contour.len() - 1]);
             layout.push_slot([last[0], last[1]], None);
             for q in contour {
                 layout.curve_slots.push((layout.points.len() / 2) as u32);
                 layout.push_slot([q[0], q[1]], Some(index as u32));
             }
-            layout.push_slot([last[2], last[2]], None);
+            layout.push_slot([first[0], first[1]], None);
+            layout.push_slot([first[2], first[2]], None);
         }
         layout
     }
@@ -398,15 +400,15 @@ mod tests {
     #[test]
     fn layout_puts_curves_on_even_points_after_their_predecessor() {
         let layout = CurveLayout::new(&square(true));
-        // One contour of 4 curves: prefix slot, 4 curve slots, end slot.
-        assert_eq!(layout.slots(), 6);
+        // One contour of 4 curves: prefix slot, 4 curve slots, two end slots.
+        assert_eq!(layout.slots(), 7);
         assert_eq!(layout.curve_slots, vec![1, 2, 3, 4]);
         for (k, &slot) in layout.curve_slots.iter().enumerate() {
-            let i = 2 * slot as usize;
             let previous = layout.curve_slots[(k + 3) % 4];
-            assert_eq!(layout.points[i - 2], layout.curve(previous)[0]);
+            assert_eq!(layout.curve(slot - 1), layout.curve(previous), "the previous curve leads");
             let next = layout.curve_slots[(k + 1) % 4];
             assert_eq!(layout.curve(slot)[2], layout.curve(next)[0], "closed");
+            assert_eq!(layout.curve(slot + 1), layout.curve(next), "the next curve follows");
         }
     }
 

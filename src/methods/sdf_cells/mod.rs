@@ -58,22 +58,21 @@ pub const INFO: MethodInfo = MethodInfo {
             label: params::NAME,
             params: &[],
             claim: Claim {
-                // What the estimate is for: text whose contours do not touch, at sizes
-                // where an edge has a pixel to itself. Overlapping contours are in scope
-                // since preparation merges them (`overlaps=merge`, the default); the
-                // bound was kept, not loosened, when they came in. Last measured
-                // (`cargo run --release -- stability --methods sdf-cells`): see
-                // docs/stability.md.
+                // What the estimate is for: text at sizes where an edge has a pixel to
+                // itself. Overlapping contours are in scope since preparation merges
+                // them (`overlaps=merge`, the default), touching ones since a corner on
+                // another contour is merged by the fills' wedges (`merge_touching` in
+                // the shader); the bound was kept, not loosened, when each came in.
+                // Last measured (`cargo run --release -- stability --methods
+                // sdf-cells`): see docs/stability.md.
                 bound: Some(within(0.65, 2.4)),
-                except: &[Trait::TouchingContours, Trait::SubpixelDetail],
+                except: &[Trait::SubpixelDetail],
                 // Cracks read a covered pixel as empty: no bound.
                 limitation: None,
                 temporal: None,
                 statement: "estimate (font-demo's), overlapping contours merged first: no \
-                            pixel off by more than 0.65 on text whose contours do not \
-                            touch, an edge to a pixel; cracks from a point where contours \
-                            touch, or where a contour crossing itself leaves lobes meeting \
-                            (a figure-8's node, which merging cannot remove)",
+                            pixel off by more than 0.65 with an edge to a pixel, contours \
+                            overlapping or touching included",
             },
         },
         ClaimedSetting {
