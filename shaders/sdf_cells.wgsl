@@ -3,7 +3,9 @@
 //
 // Per distinct glyph (`GlyphCells`): a grid over the outline; the glyph's points in the
 // layout of kocsis1david's font-demo (curve i starts at points[i], an even index;
-// points[i - 2] is the previous curve's start); per cell one u32, either font-demo's
+// points[i - 2 ..= i + 4] hold its previous and next curves too: each contour's points
+// begin with a copy of its last curve and end with a copy of its first); per cell one
+// u32, either font-demo's
 // packed word (three runs of consecutive curves) or an escape to a list of slots
 // (slot = point index / 2).
 // Exact mode adds one band per grid row for the winding number. All math is in the
@@ -156,6 +158,8 @@ struct Part {
     // else NO_CORNER.
     corner: vec2<f32>,
     wedge: vec2<f32>,
+    // The lines the side is made of, as in `Side`.
+    lines: Lines,
 }
 
 const NO_CORNER = vec2<f32>(FAR, FAR);
@@ -183,15 +187,16 @@ fn precedes(a: Curve, b: Curve) -> bool {
     return all(a.end == b.start) && all(a.next_control == b.control);
 }
 
-fn ends_at(c: Curve, v: vec2<f32>) -> bool {
-    return all(c.start == v) || all(c.end == v);
-}
-
-// Whether the line of a side (its value and gradient at p) passes through v, as an edge
-// does where another contour's corner touches it; to 1e-3 of the distance, far above
-// f32 rounding.
-fn passes_through(value: f32, gradient: vec2<f32>, v: vec2<f32>, p: vec2<f32>, udist: f32) -> bool {
-    return abs(value + dot(gradient, v - p)) <= 1e-3 * udist;
+// Where v lies between the ends of a curve whose side is the line (value, gradient at
+// p) through v, as an edge is where another contour's corner touches it, that line's
+// inward normal; else zero. "Through" is to 1e-3 of p's distance from v plus a few f32
+// steps at v's coordinates: a corner on a curved edge is seen only as far as the
+// tangent at p's projection passes through it.
+fn normal_through(start: vec2<f32>, end: vec2<f32>, value: f32, gradient: vec2<f32>, v: vec2<f32>, p: vec2<f32>) -> vec2<f32> {
+    let t = calc_t(start, end, v);
+    let steps = 4.0 * 1.2e-7 * max(abs(v.x), abs(v.y));
+    let through = abs(value + dot(gradient, v - p)) <= 1e-3 * distance(p, v) + steps;
+    return select(vec2<f32>(0.0), gradient, t > 0.0 && t < 1.0 && through);
 }
 
 // A tie at the join where a curve starting at `a` runs into the curve from `b` to `c`
@@ -203,6 +208,21 @@ fn merge_at_join(a: vec2<f32>, b: vec2<f32>, c: vec2<f32>, kept: f32, bez: f32) 
     return select(min(bez, kept), max(bez, kept), turn <= 0.0);
 }
 
+// The lines a side is made of, by their inward normals: a corner's two, inside both
+// (convex) or either; a tangent line's one, twice.
+struct Lines {
+    first: vec2<f32>,
+    second: vec2<f32>,
+    convex: bool,
+}
+
+// Whether the direction w from a side's lines' meeting point points inside them.
+fn inside_along(lines: Lines, w: vec2<f32>) -> bool {
+    let first = dot(lines.first, w) > 0.0;
+    let second = dot(lines.second, w) > 0.0;
+    return select(first || second, first && second, lines.convex);
+}
+
 // A signed distance, the unit direction in which it grows, and whether a corner gave it
 // (p nearest to both curves meeting there at their join).
 struct Side {
@@ -211,6 +231,7 @@ struct Side {
     corner: bool,
     // For a corner: along the bisector of the narrower wedge between its two curves.
     wedge: vec2<f32>,
+    lines: Lines,
 }
 
 // The signed distance from p to the line a→b, positive on its right (y up), as
@@ -218,7 +239,7 @@ struct Side {
 fn side_of_line(a: vec2<f32>, b: vec2<f32>, p: vec2<f32>) -> Side {
     let dir = normalize(b - a);
     let gradient = vec2<f32>(dir.y, -dir.x);
-    return Side(dot(gradient, p - a), gradient, false, vec2<f32>(0.0));
+    return Side(dot(gradient, p - a), gradient, false, vec2<f32>(0.0), Lines(gradient, gradient, true));
 }
 
 // font-demo's side of p for a curve: its tangent line at t, the parameter where p
@@ -248,19 +269,20 @@ fn join_side(before: vec2<f32>, v: vec2<f32>, after: vec2<f32>, p: vec2<f32>, ow
     let incoming = dot(into_gradient, p - v);
     let outgoing = dot(out_gradient, p - v);
     let convex = dot(out_gradient, before - v) > 0.0;
+    let lines = Lines(into_gradient, out_gradient, convex);
     if (incoming < outgoing) == convex {
-        return Side(incoming, into_gradient, true, out - into);
+        return Side(incoming, into_gradient, true, out - into, lines);
     }
-    return Side(outgoing, out_gradient, true, out - into);
+    return Side(outgoing, out_gradient, true, out - into, lines);
 }
 
 // Where two contours touch, at a corner of one lying on the other (the lobes of a
-// figure-8 once merged, squares meeting at a corner, a tip on an edge): `other_inside`
-// is the other part's gradient along the corner's narrower wedge. Where the other is
-// outside there, the two fills meet only at the point and p is inside either (max);
-// where it is inside, the wedge is a hole in its fill and p is inside both (min).
-fn merge_touching(other_inside: f32, kept: f32, value: f32) -> f32 {
-    return select(min(value, kept), max(value, kept), other_inside <= 0.0);
+// figure-8 once merged, squares meeting at a corner, a tip on an edge): whether the
+// other part's lines hold the corner's narrower wedge. Where they do not, the two fills
+// meet only at the point and p is inside either (max); where they do, the wedge is a hole
+// in the other's fill and p is inside both (min).
+fn merge_touching(other_holds_wedge: bool, kept: f32, value: f32) -> f32 {
+    return select(max(value, kept), min(value, kept), other_holds_wedge);
 }
 
 // How curve c's side merges with the value so far when c is within `bias` of the curve
@@ -278,20 +300,42 @@ fn merge_tie(c: Curve, part: Part, side: Side, p: vec2<f32>, field: Field) -> f3
     if into_owner || precedes(owner, c) {
         return at_join;
     }
+    // A corner of one on the other (this curve's on the owner, else the owner's on this
+    // curve): at the other's end, the other's own lines there; between its ends, its
+    // tangent at the corner.
     let mine = part.corner;
-    if all(mine != NO_CORNER)
-        && (ends_at(owner, mine) || passes_through(kept, field.gradient, mine, p, part.udist)) {
-        return merge_touching(dot(field.gradient, part.wedge), kept, side.value);
-    }
     let theirs = field.part.corner;
-    if all(theirs != NO_CORNER)
-        && (ends_at(c, theirs) || passes_through(side.value, side.gradient, theirs, p, part.udist)) {
-        return merge_touching(dot(side.gradient, field.part.wedge), kept, side.value);
+    let my_corner = all(mine != NO_CORNER);
+    let their_corner = all(theirs != NO_CORNER);
+    let v = select(theirs, mine, my_corner);
+    let start = select(c.start, owner.start, my_corner);
+    let end = select(c.end, owner.end, my_corner);
+    let normal = normal_through(start, end, select(side.value, kept, my_corner),
+        select(side.gradient, field.gradient, my_corner), v, p);
+    let on_end = all(start == v) || all(end == v);
+    if (my_corner || their_corner) && (on_end || any(normal != vec2<f32>(0.0))) {
+        var lines = Lines(normal, normal, true);
+        if on_end {
+            lines = part.lines;
+            if my_corner {
+                lines = field.part.lines;
+            }
+        }
+        let wedge = select(field.part.wedge, part.wedge, my_corner);
+        return merge_touching(inside_along(lines, wedge), kept, side.value);
     }
-    // Two parts of the outline that p projects inside: each side is right where its own
-    // part is the nearest, so the nearer decides.
+    // Parts of the outline that do not meet. A side is right where its part is the
+    // nearest when p projects inside the part's chord, or past both tangents at its
+    // corner; the other end of a curve only stands in. Two that p projects inside: the
+    // nearer decides; one, against a stand-in: that one.
     if part.inner && field.part.inner {
         return select(side.value, kept, part.udist >= field.part.udist);
+    }
+    if part.inner && !field.part.inner && !their_corner && part.udist <= field.part.udist {
+        return side.value;
+    }
+    if field.part.inner && !part.inner && !my_corner && field.part.udist <= part.udist {
+        return kept;
     }
     return at_join;
 }
@@ -323,7 +367,8 @@ fn estimate_curve(p: vec2<f32>, i: u32, field: ptr<function, Field>) {
         let next_out = select(c.next_control, c.next_end, all(c.next_control == c.end));
         side = join_side(select(own_in, previous_in, at_start), v, select(next_out, own_out, at_start), p, side);
     }
-    let part = Part(udist, t > 0.0 && t < 1.0, select(NO_CORNER, v, side.corner), side.wedge);
+    let part = Part(udist, t > 0.0 && t < 1.0, select(NO_CORNER, v, side.corner), side.wedge,
+        side.lines);
     var merged = side.value;
     if udist >= (*field).part.udist - settings.bias {
         merged = merge_tie(c, part, side, p, *field);
@@ -480,7 +525,7 @@ fn winding_number(g: GlyphCells, p: vec2<f32>) -> Winding {
 fn signed_distance(g: GlyphCells, p: vec2<f32>) -> Field {
     let far = vec2<f32>(FAR);
     var field = Field(-FAR, vec2<f32>(1.0, 0.0), FAR, FAR, 0u, Curve(far, far, far, far, far, far, far),
-        Part(FAR, false, NO_CORNER, vec2<f32>(0.0)));
+        Part(FAR, false, NO_CORNER, vec2<f32>(0.0), Lines(vec2<f32>(0.0), vec2<f32>(0.0), true)));
     let cell = cell_curves(g, cell_index(g, p));
     field.cost = cell.count;
     for (var k = 0u; k < cell.count; k++) {
@@ -570,7 +615,7 @@ fn fs_main(in: GlyphQuad) -> @location(0) vec4<f32> {
     switch settings.output {
         case OUTPUT_EQUAL_DISTANCE: {
             // Where the two nearest curves are as near as each other, within the bias:
-            // font-demo's purple regions, where its tie-break decides.
+            // font-demo's purple regions, where ties are merged.
             if field.second - field.nearest <= settings.bias {
                 color = mix(color, PURPLE, 0.85);
             }

@@ -55,19 +55,20 @@ fn every_method_keeps_its_claims_on_every_hard_case() {
     );
 }
 
-/// The documented limitations are measured, not assumed: the estimate reads a contour
-/// far under a pixel as a whole one, and exact distances on detail under a pixel stay
-/// within their looser limitation bound. Overlapping contours, merged first, and
-/// touching ones are inside both claims.
+/// The documented limitations are measured, not assumed: the estimate cracks where a
+/// contour's corner touches another's curved edge, and exact distances on detail under a
+/// pixel stay within their looser limitation bound. Overlapping contours, merged first,
+/// are inside both claims; touching ones inside exact mode's.
 #[test]
 fn limitations_show_their_numbers() {
     let names = [
-        "tiny-curves",
+        "tip-on-arc",
+        "touching-contours",
+        "hole-touching-edge",
+        "corners-touching-slanted",
         "thin-stem",
         "overlapping-same-direction",
         "figure-8",
-        "touching-contours",
-        "hole-touching-edge",
     ];
     let cases = stability::select_cases(Some(&names.map(String::from))).unwrap();
     let variants = stability::select_variants(Some(&["sdf-cells".into()])).unwrap();
@@ -86,15 +87,24 @@ fn limitations_show_their_numbers() {
             .find(|o| o.case == case && o.variant == variant)
             .unwrap_or_else(|| panic!("{case} × {variant} did not run"))
     };
-    let estimate = find("tiny-curves", "sdf-cells");
+    let estimate = find("tip-on-arc", "sdf-cells");
     assert_eq!(
         estimate.bound, None,
-        "the estimate bounds nothing on detail under a pixel"
+        "the estimate bounds nothing where contours touch"
     );
     assert!(estimate.limitation);
-    // A contour 1e-4 em across, a tenth of a pixel, reads as most of one.
+    // The full sweep counts 228 over 64 frames; the CI grid runs the worst of them.
     assert!(estimate.artifact_pixels > 0, "{estimate:?}");
     assert!(!estimate.breaks_claim());
+    // Where the touching point is an end or a straight edge, the fills' wedges keep the
+    // estimate within the bound it claims elsewhere (set before these cases existed).
+    for case in ["touching-contours", "hole-touching-edge", "corners-touching-slanted"] {
+        let touching = find(case, "sdf-cells");
+        assert!(touching.limitation, "{case}");
+        assert!(touching.max <= 0.65, "{touching:?}");
+        let exact = find(case, "sdf-cells exact");
+        assert!(!exact.limitation && !exact.breaks_claim(), "{exact:?}");
+    }
     let exact = find("thin-stem", "sdf-cells exact");
     assert!(
         exact.limitation,
@@ -102,17 +112,12 @@ fn limitations_show_their_numbers() {
     );
     assert_eq!(exact.bound.map(|b| b.max), Some(0.8));
     assert!(!exact.breaks_claim(), "{exact:?}");
-    for case in [
-        "overlapping-same-direction",
-        "figure-8",
-        "touching-contours",
-        "hole-touching-edge",
-    ] {
+    for case in ["overlapping-same-direction", "figure-8"] {
         for variant in ["sdf-cells", "sdf-cells exact"] {
-            let claimed = find(case, variant);
-            assert!(!claimed.limitation, "{variant}: {case} is claimed");
-            assert_eq!(claimed.bound.map(|b| b.max), Some(0.65));
-            assert!(!claimed.breaks_claim(), "{claimed:?}");
+            let merged = find(case, variant);
+            assert!(!merged.limitation, "{variant}: {case} is claimed once merged");
+            assert_eq!(merged.bound.map(|b| b.max), Some(0.65));
+            assert!(!merged.breaks_claim(), "{merged:?}");
         }
     }
 }

@@ -259,6 +259,27 @@ pub fn all() -> Vec<HardCase> {
             ],
         )),
         touching(synthetic(
+            "corners-touching-slanted",
+            "triangles whose slanted corners touch at a point, the pair drawn twice with \
+             its contours in either order",
+            corners_touching_slanted(),
+        )),
+        touching(synthetic(
+            "tip-on-arc",
+            "a triangle whose tip touches the top of a quadratic arc from outside",
+            vec![
+                Contour {
+                    segments: vec![
+                        line((2.0, 2.0), (18.0, 2.0)),
+                        line((18.0, 2.0), (18.0, 8.0)),
+                        quad((18.0, 8.0), (10.0, 14.0), (2.0, 8.0)),
+                        line((2.0, 8.0), (2.0, 2.0)),
+                    ],
+                },
+                polygon(&[(10.0, 11.0), (14.0, 18.0), (6.0, 18.0)]),
+            ],
+        )),
+        touching(synthetic(
             "shared-edge",
             "two squares sharing a whole edge, run once each way, off the pixel grid",
             vec![
@@ -605,6 +626,22 @@ fn tiny_curve_contours() -> Vec<Contour> {
     }
     segments.push(line((2.0, 14.0), (2.0, 2.0)));
     vec![Contour { segments }, polygon(&rect(10.0, 17.0, 10.1, 17.1))]
+}
+
+/// Two triangles touching at a corner with slanted, unequal wedges, and the same pair
+/// 20 units to the right with its contours in the other order.
+fn corners_touching_slanted() -> Vec<Contour> {
+    let left = [(2.0, 2.0), (10.0, 10.0), (3.0, 12.0)];
+    let right = [(10.0, 10.0), (16.0, 4.0), (18.0, 14.0)];
+    let shifted = |points: &[(f64, f64)]| -> Vec<(f64, f64)> {
+        points.iter().map(|&(x, y)| (x + 20.0, y)).collect()
+    };
+    vec![
+        polygon(&left),
+        polygon(&right),
+        polygon(&shifted(&right)),
+        polygon(&shifted(&left)),
+    ]
 }
 
 /// Squares 3 units across and 3 apart (beyond the estimate's ties of 1 unit, 0.001 em),

@@ -49,6 +49,7 @@ impl CurveLayout {
         let mut layout = CurveLayout::default();
         for (index, contour) in contours.iter().enumerate() {
             let (first, last) = (contour[0], contour[contour.len() - 1]);
+            debug_assert_eq!(last[2], first[0], "contours are closed");
             layout.push_slot([last[0], last[1]], None);
             for q in contour {
                 layout.curve_slots.push((layout.points.len() / 2) as u32);
@@ -409,6 +410,46 @@ mod tests {
             let next = layout.curve_slots[(k + 1) % 4];
             assert_eq!(layout.curve(slot)[2], layout.curve(next)[0], "closed");
             assert_eq!(layout.curve(slot + 1), layout.curve(next), "the next curve follows");
+        }
+    }
+
+    /// A curve's neighbours sit beside it (`points[i - 2 ..= i + 4]`) in contours of two,
+    /// three and four curves, one after another.
+    #[test]
+    fn every_curve_has_its_neighbours_beside_it() {
+        let line = |a: (f64, f64), b: (f64, f64)| Segment::Line(DVec2::from(a), DVec2::from(b));
+        let quad = |a: (f64, f64), c: (f64, f64), b: (f64, f64)| {
+            Segment::Quad(DVec2::from(a), DVec2::from(c), DVec2::from(b))
+        };
+        let outline = Outline {
+            contours: vec![
+                Contour {
+                    segments: vec![
+                        line((0.0, 0.0), (60.0, 0.0)),
+                        line((60.0, 0.0), (30.0, 50.0)),
+                        line((30.0, 50.0), (0.0, 0.0)),
+                    ],
+                },
+                Contour {
+                    segments: vec![
+                        quad((100.0, 0.0), (150.0, 60.0), (200.0, 0.0)),
+                        line((200.0, 0.0), (100.0, 0.0)),
+                    ],
+                },
+                square_at(300.0, 0.0, 50.0, false),
+            ],
+        };
+        let layout = CurveLayout::new(&outline);
+        let mut start = 0;
+        for contour in [3, 2, 4] {
+            let slots = &layout.curve_slots[start..start + contour];
+            for (k, &slot) in slots.iter().enumerate() {
+                let previous = slots[(k + contour - 1) % contour];
+                let next = slots[(k + 1) % contour];
+                assert_eq!(layout.curve(slot - 1), layout.curve(previous), "{contour}: {k}");
+                assert_eq!(layout.curve(slot + 1), layout.curve(next), "{contour}: {k}");
+            }
+            start += contour;
         }
     }
 

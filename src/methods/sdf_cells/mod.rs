@@ -58,21 +58,23 @@ pub const INFO: MethodInfo = MethodInfo {
             label: params::NAME,
             params: &[],
             claim: Claim {
-                // What the estimate is for: text at sizes where an edge has a pixel to
-                // itself. Overlapping contours are in scope since preparation merges
-                // them (`overlaps=merge`, the default), touching ones since a corner on
-                // another contour is merged by the fills' wedges (`merge_touching` in
-                // the shader); the bound was kept, not loosened, when each came in.
-                // Last measured (`cargo run --release -- stability --methods
-                // sdf-cells`): see docs/stability.md.
+                // What the estimate is for: text whose contours do not touch, at sizes
+                // where an edge has a pixel to itself. Overlapping contours are in scope
+                // since preparation merges them (`overlaps=merge`, the default); the
+                // bound was kept, not loosened, when they came in. Touching contours
+                // stay out: a corner on another contour's straight edge or end is read
+                // by the fills' wedges (`merge_touching` in the shader), but one on a
+                // curved edge still cracks (tip-on-arc). Last measured (`cargo run
+                // --release -- stability --methods sdf-cells`): see docs/stability.md.
                 bound: Some(within(0.65, 2.4)),
-                except: &[Trait::SubpixelDetail],
-                // Cracks read a covered pixel as empty: no bound.
+                except: &[Trait::TouchingContours, Trait::SubpixelDetail],
+                // A crack or a contour under a pixel reads a whole pixel wrong: no bound.
                 limitation: None,
                 temporal: None,
                 statement: "estimate (font-demo's), overlapping contours merged first: no \
-                            pixel off by more than 0.65 with an edge to a pixel, contours \
-                            overlapping or touching included",
+                            pixel off by more than 0.65 on text whose contours do not \
+                            touch, an edge to a pixel; contours touching at a corner crack \
+                            where the corner lies on a curved edge",
             },
         },
         ClaimedSetting {
