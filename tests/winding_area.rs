@@ -166,22 +166,23 @@ fn overlapping_inter_views(params: &[(&str, &str)]) -> Vec<(String, ErrorStats)>
     views
 }
 
-/// Overlapping contours as the font draws them: the pixels where their curves meet
-/// another are integrated in sub-pixels, and none is off by more than a quarter.
+/// Overlapping contours as the font draws them (`overlaps=keep`): the pixels where
+/// their curves meet another are integrated in sub-pixels, and none is off by more than
+/// a quarter.
 #[test]
 fn overlapping_contours_stay_within_a_quarter() {
-    for (view, s) in overlapping_inter_views(&[]) {
+    for (view, s) in overlapping_inter_views(&[("overlaps", "keep")]) {
         assert_eq!(s.pixels_over_025, 0, "{view}: {s:?}");
     }
 }
 
-/// With `overlaps=merge` the same overlapping glyphs are drawn from their nonzero union:
-/// no contours overlap any more, so they meet the bound of glyphs without overlaps
-/// (MAE and max ≤ 0.02, as above), not a quarter.
+/// With `overlaps=merge` (the default) the same overlapping glyphs are drawn from their
+/// nonzero union: no contours overlap any more, so they meet the bound of glyphs without
+/// overlaps (MAE and max ≤ 0.02, as above), not a quarter.
 #[test]
 fn merged_overlaps_are_exact_like_plain_glyphs() {
     let (mut worst_mae, mut max) = (0.0f64, 0.0f64);
-    for (view, s) in overlapping_inter_views(&[("overlaps", "merge")]) {
+    for (view, s) in overlapping_inter_views(&[]) {
         assert!(s.mae_255 <= 0.02 && s.max <= 0.02, "{view}: {s:?}");
         worst_mae = worst_mae.max(s.mae_255);
         max = max.max(s.max);
@@ -306,13 +307,13 @@ fn bands_change_the_cost_not_the_image() {
 
 /// Sub-pixels only where a curve of overlapping contours meets another: on glyphs
 /// without overlaps `samples=auto` is `samples=1`, image and cost; on overlapping ones
-/// it costs more than one integral and less than sub-pixels everywhere.
+/// kept as drawn it costs more than one integral and less than sub-pixels everywhere.
 #[test]
 fn sub_pixels_only_where_overlapping_curves_cross() {
     let cam_of = |scene: &Scene| framed(scene, 24.0, [1.0, 0.0, 0.0, 1.0], DVec2::new(0.2, 0.3));
     let run = |scene: &Scene, samples: &str| {
         let cam = cam_of(scene);
-        let mut method = area_method(&[("samples", samples)]);
+        let mut method = area_method(&[("samples", samples), ("overlaps", "keep")]);
         let image = render(method.as_mut(), scene, &cam);
         let cost = method.curves_per_pixel(gpu(), &cam).unwrap().unwrap();
         (image, cost.mean)
