@@ -115,7 +115,7 @@ pub enum Then {
 }
 
 /// The case README's first picture shows.
-const MICROSCOPE_CASE: &str = "tiny-curves";
+const MICROSCOPE_CASE: &str = "tip-on-arc";
 
 /// sdf-cells beside its own error against the reference, for a loaded case: coverage
 /// and error written in each magnified pixel, the exact outline over both.
