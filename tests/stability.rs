@@ -93,7 +93,7 @@ fn limitations_show_their_numbers() {
         "the estimate bounds nothing where contours touch"
     );
     assert!(estimate.limitation);
-    // The full sweep counts 228 over 64 frames; the CI grid runs the worst of them.
+    // The full sweep counts 455 over 64 frames; the CI grid runs the worst of them.
     assert!(estimate.artifact_pixels > 0, "{estimate:?}");
     assert!(!estimate.breaks_claim());
     // Where the touching point is an end or a straight edge, the fills' wedges keep the
