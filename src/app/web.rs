@@ -167,8 +167,18 @@ pub(super) fn after_frame(app: &Explorer) {
             shown.ready = true;
             document.set_title("glyphscope · ready");
         }
-        // A view that cannot travel in a link (a font from this computer) leaves the
-        // address without a fragment rather than with a stale one.
+        let status = app.status_text();
+        if status != shown.status {
+            body.set_attribute("data-status", &status).ok();
+            shown.status = status;
+        }
+        if !app.settled() {
+            return;
+        }
+        // The address follows the view once it rests: during a drag, a zoom or a play
+        // the link changes every frame, and browsers throttle history updates that
+        // often. A view that cannot travel in a link (a font from this computer) leaves
+        // the address without a fragment rather than with a stale one.
         let link = app.link().ok();
         if link != shown.link {
             let address = link
@@ -180,14 +190,6 @@ pub(super) fn after_frame(app: &Explorer) {
                     .ok();
             }
             shown.link = link;
-        }
-        let status = app.status_text();
-        if status != shown.status {
-            body.set_attribute("data-status", &status).ok();
-            shown.status = status;
-        }
-        if !app.settled() {
-            return;
         }
         // Written again when the view at rest changes, or only its link does (an
         // outline switched on changes no pixel a pane reads back).
