@@ -3,6 +3,7 @@
 //! instance and frame.
 
 use std::collections::HashMap;
+use std::sync::{Arc, OnceLock};
 
 use glam::DVec2;
 
@@ -17,6 +18,34 @@ pub struct Glyph {
     pub id: GlyphId,
     pub outline: Outline,
     pub bounds: Rect,
+    /// The outline's nonzero union where it differs from the outline, taken on first use
+    /// and shared by every copy of the glyph: the methods that merge overlaps, their
+    /// re-preparations when a parameter changes, and the explorer's overlay take it once.
+    union: Arc<OnceLock<Option<Outline>>>,
+}
+
+impl Glyph {
+    pub fn new(id: GlyphId, outline: Outline, bounds: Rect) -> Glyph {
+        Glyph {
+            id,
+            outline,
+            bounds,
+            union: Arc::default(),
+        }
+    }
+
+    /// [`crate::geometry::merge_overlaps`] of the outline, once: None where the outline
+    /// is its own union, or where the union cannot be taken (the glyph is then drawn as
+    /// the font has it).
+    fn union(&self, units_per_em: f64) -> Option<&Outline> {
+        self.union
+            .get_or_init(|| {
+                crate::geometry::merge_overlaps(&self.outline, units_per_em)
+                    .ok()
+                    .flatten()
+            })
+            .as_ref()
+    }
 }
 
 /// One drawn copy of a glyph.
@@ -53,15 +82,20 @@ impl Scene {
     /// union ([`crate::geometry::merge_overlaps`]): what a method with `overlaps=merge`
     /// draws from. A glyph whose union cannot be taken is kept as it is.
     pub fn with_overlaps_merged(&self) -> Scene {
-        let mut merged = self.clone();
-        for glyph in &mut merged.glyphs {
-            if let Ok(Some(outline)) =
-                crate::geometry::merge_overlaps(&glyph.outline, self.units_per_em)
-            {
-                glyph.outline = outline;
-            }
+        let glyphs = self
+            .glyphs
+            .iter()
+            .map(|glyph| match glyph.union(self.units_per_em) {
+                Some(union) => Glyph::new(glyph.id, union.clone(), glyph.bounds),
+                None => glyph.clone(),
+            })
+            .collect();
+        Scene {
+            units_per_em: self.units_per_em,
+            glyphs,
+            instances: self.instances.clone(),
+            source: self.source.clone(),
         }
-        merged
     }
 
     /// Shapes `text` (possibly several lines) in `font`.
@@ -100,11 +134,7 @@ impl Scene {
             let slot = *slots.entry(id).or_insert_with(|| {
                 let outline = font.outline(id);
                 let bounds = outline.control_bounds()?;
-                glyphs.push(Glyph {
-                    id,
-                    outline,
-                    bounds,
-                });
+                glyphs.push(Glyph::new(id, outline, bounds));
                 Some(glyphs.len() as u32 - 1)
             });
             if let Some(glyph) = slot {
@@ -135,11 +165,7 @@ impl Scene {
                 glyph: glyphs.len() as u32,
                 position,
             });
-            glyphs.push(Glyph {
-                id: glyphs.len() as GlyphId,
-                outline,
-                bounds,
-            });
+            glyphs.push(Glyph::new(glyphs.len() as GlyphId, outline, bounds));
         }
         Scene {
             units_per_em,
@@ -174,6 +200,41 @@ mod tests {
         assert_eq!(scene.glyphs.len(), 2);
         assert_eq!(scene.instances.len(), 5, "the space draws nothing");
         assert_eq!(scene.instances[0].glyph, scene.instances[2].glyph);
+    }
+
+    /// The union is taken once per glyph and shared by the scene's copies (each method
+    /// that merges gets its own copy of the scene); a glyph that is its own union stays.
+    #[test]
+    fn a_glyphs_union_is_taken_once_for_every_copy() {
+        let square = |x: f64| {
+            let p = [(x, 0.0), (x + 100.0, 0.0), (x + 100.0, 100.0), (x, 100.0)]
+                .map(|(x, y)| DVec2::new(x, y));
+            crate::geometry::Contour {
+                segments: (0..4)
+                    .map(|i| crate::geometry::Segment::Line(p[i], p[(i + 1) % 4]))
+                    .collect(),
+            }
+        };
+        let overlapping = Outline {
+            contours: vec![square(0.0), square(50.0)],
+        };
+        let alone = Outline {
+            contours: vec![square(0.0)],
+        };
+        let scene = Scene::from_outlines(
+            1000.0,
+            vec![(overlapping.clone(), DVec2::ZERO), (alone.clone(), DVec2::ZERO)],
+        );
+        assert!(scene.glyphs.iter().all(|g| g.union.get().is_none()));
+        let merged = scene.clone().with_overlaps_merged();
+        let union = crate::geometry::merge_overlaps(&overlapping, 1000.0)
+            .unwrap()
+            .unwrap();
+        assert_eq!(merged.glyphs[0].outline, union);
+        assert_eq!(merged.glyphs[1].outline, alone);
+        // The original saw its copy's union: the next merge takes none again.
+        assert_eq!(scene.glyphs[0].union.get(), Some(&Some(union)));
+        assert_eq!(scene.glyphs[1].union.get(), Some(&None));
     }
 
     #[test]

@@ -432,8 +432,8 @@ fn overlay_controls(ui: &mut egui::Ui, pane: &mut PaneSettings, catalog: &Catalo
         ui.checkbox(&mut pane.merged, "merged outline")
             .on_hover_text(
                 "green, under the font's outline: each glyph's contours merged into their nonzero \
-             union (what sdf-cells' overlaps=merge draws from); a curve inside the fill shows \
-             orange alone",
+             union (what sdf-cells and winding draw from with overlaps=merge, their default); a \
+             curve inside the fill shows orange alone",
             );
     });
 }
