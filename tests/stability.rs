@@ -87,6 +87,16 @@ fn limitations_show_their_numbers() {
             .find(|o| o.case == case && o.variant == variant)
             .unwrap_or_else(|| panic!("{case} × {variant} did not run"))
     };
+    // The bounds each setting claims, as registered.
+    let claim = |label: &str| {
+        &glyphscope::methods::sdf_cells::INFO
+            .claims
+            .iter()
+            .find(|setting| setting.label == label)
+            .unwrap_or_else(|| panic!("{label} is not a claimed setting"))
+            .claim
+    };
+    let claimed_max = |label: &str| claim(label).bound.map(|b| b.max);
     let estimate = find("tip-on-arc", "sdf-cells");
     assert_eq!(
         estimate.bound, None,
@@ -101,7 +111,7 @@ fn limitations_show_their_numbers() {
     for case in ["touching-contours", "hole-touching-edge", "corners-touching-slanted"] {
         let touching = find(case, "sdf-cells");
         assert!(touching.limitation, "{case}");
-        assert!(touching.max <= 0.65, "{touching:?}");
+        assert!(touching.max <= claimed_max("sdf-cells").unwrap(), "{touching:?}");
         let exact = find(case, "sdf-cells exact");
         assert!(!exact.limitation && !exact.breaks_claim(), "{exact:?}");
     }
@@ -110,13 +120,16 @@ fn limitations_show_their_numbers() {
         exact.limitation,
         "detail under a pixel is exact mode's limitation"
     );
-    assert_eq!(exact.bound.map(|b| b.max), Some(0.8));
+    assert_eq!(
+        exact.bound.map(|b| b.max),
+        claim("sdf-cells exact").limitation.map(|b| b.max)
+    );
     assert!(!exact.breaks_claim(), "{exact:?}");
     for case in ["overlapping-same-direction", "figure-8"] {
         for variant in ["sdf-cells", "sdf-cells exact"] {
             let merged = find(case, variant);
             assert!(!merged.limitation, "{variant}: {case} is claimed once merged");
-            assert_eq!(merged.bound.map(|b| b.max), Some(0.65));
+            assert_eq!(merged.bound.map(|b| b.max), claimed_max(variant));
             assert!(!merged.breaks_claim(), "{merged:?}");
         }
     }
