@@ -71,6 +71,10 @@ override SAMPLES: u32 = 0u;       // 1, 4 (2×2 sub-pixels tiling the pixel), 0:
 override EVEN_ODD: bool = false;  // fill rule; nonzero by default
 override AXIS: bool = false;      // aa=area: the instances' axes are the image's (no
                                   // rotation, skew or tilt): the pixel is a rectangle
+override SQUARE: bool = false;   // aa=area, not AXIS: the instances' pixel steps lean
+                                  // apart (src/geometry: steps_lean_apart), so a
+                                  // curve across a pixel is integrated in the pixel's
+                                  // own square frame (`across_square`)
 override GRID: bool = true;       // aa=area: the draw's glyphs may need the sub-pixel
                                   // grid (some curves marked as overlapping)
 override USE_BANDS: bool = true;  // false: every curve of the glyph for every ray

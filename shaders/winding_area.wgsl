@@ -11,6 +11,9 @@
 // bounding box in one stretch: cut out, it adds four ramp integrals, one per segment of
 // the pixel's sides (`across_term`), or where the pixel is a rectangle (`AXIS`), one
 // integral (`across_axis`); the part right of the pixel adds its area between heights.
+// Where the instance's pixel steps lean apart (`SQUARE`: rotations, mirrors, most
+// tilts), a curve across the pixel is integrated in the pixel's own square instead,
+// corrected back to the rows' form at its ends (`across_square`): fewer roots.
 // Coverage is fill(F), exact wherever the pixel holds two adjacent winding levels;
 // where a curve marked as overlapping meets another in the pixel (three levels may
 // meet), the mean over a grid of sub-pixels, each integrated the same way
@@ -47,6 +50,14 @@ struct PixelFrame {
     width: f32,
     rise: f32,
     growth: f32,
+    // For `SQUARE`: the pixel's own coordinates α = alpha_of·q, β = beta_of·q of a
+    // point q of this frame, in which the pixel is the square |α|, |β| ≤ ½: α along its
+    // shallower step (pointing right), β along its steeper one (pointing up), det 1.
+    alpha_of: vec2<f32>,
+    beta_of: vec2<f32>,
+    // For `rows_correction`: 1 / beta_of.x, and −beta_of.x / alpha_of.x.
+    inverse_beta_u: f32,
+    correction_scale: f32,
     // False for a pixel that covers no area.
     valid: bool,
 }
@@ -81,6 +92,20 @@ fn pixel_frame(jx_local: vec2<f32>, jy_local: vec2<f32>, direction: f32) -> Pixe
     f.width = 1.0 / (abs(f.left.y) - f.bottom.y);
     f.rise = -(abs(f.left.y) + f.bottom.y);
     f.growth = 0.5 * f.width / f.rise;
+    if SQUARE {
+        // The steeper step pointing up and the other pointing right span the pixel with
+        // a positive determinant, 1 (the frame's scale): the square frame's axes, whose
+        // inverse is their adjugate.
+        let b_steeper = abs(b.y) * abs(a.x) >= abs(a.y) * abs(b.x);
+        var up = 2.0 * select(a, b, b_steeper);
+        var right = 2.0 * select(b, a, b_steeper);
+        up = select(up, -up, up.y < 0.0);
+        right = select(right, -right, right.x < 0.0);
+        f.alpha_of = vec2<f32>(up.y, -up.x);
+        f.beta_of = vec2<f32>(-right.y, right.x);
+        f.inverse_beta_u = 1.0 / f.beta_of.x;
+        f.correction_scale = -f.beta_of.x / f.alpha_of.x;
+    }
     f.valid = true;
     return f;
 }
@@ -121,6 +146,10 @@ fn area_zone(c: Bezier, f: PixelFrame) -> u32 {
         return ZONE_RIGHT;
     }
     return ZONE_ACROSS;
+}
+
+fn blossom_value(c: vec3<f32>, a: f32, b: f32) -> f32 {
+    return c.x * ((1.0 - a) * (1.0 - b)) + c.y * ((1.0 - a) * b + a * (1.0 - b)) + c.z * (a * b);
 }
 
 fn blossom(c: Bezier, a: f32, b: f32) -> vec2<f32> {
@@ -279,6 +308,107 @@ fn across_term(c: Bezier, f: PixelFrame) -> f32 {
         - edge_ramp(pu, pv, -f.left, top, t.z, t.w);
 }
 
+// ∫ G dv along a curve across the pixel, in the pixel's square frame (`SQUARE`: the
+// instance's steps lean apart, see `steps_lean_apart` in src/geometry/mod.rs). Two
+// 1-forms have the pixel's indicator as their derivative: ω_rows = G dv, the one the
+// bands need (it vanishes off the pixel's rows and left of it), and ω_square = c(α)
+// c′(β) dβ with c(x) = clamp(x + ½, 0, 1), the square's own. Their difference is exact,
+// dψ (`rows_correction`), so a curve adds ∫ ω_square + ψ(end) − ψ(start). Where the
+// curve turns in β, it adds instead ∫ ω_swapped = −∫ c(β) c′(α) dα, whose difference
+// from ω_square is d(c(α) c(β)): the steps lean apart, so a curve monotone in x and y
+// turns in α or in β, never both, and the form it is integrated by has its edge
+// coordinate monotone (`clamp_term`). Two levels' roots and two clips, where the
+// parallelogram's four sides took four ramps and six roots (`across_term`).
+fn across_square(c: Bezier, f: PixelFrame) -> f32 {
+    let s0 = vec2<f32>(dot(f.alpha_of, c.p0), dot(f.beta_of, c.p0));
+    let s1 = vec2<f32>(dot(f.alpha_of, c.p1), dot(f.beta_of, c.p1));
+    let s2 = vec2<f32>(dot(f.alpha_of, c.p2), dot(f.beta_of, c.p2));
+    let alpha = vec3<f32>(s0.x, s1.x, s2.x);
+    let beta = vec3<f32>(s0.y, s1.y, s2.y);
+    // β′ is linear in t: it changes sign where its ends' signs differ.
+    let swap = (beta.y - beta.x) * (beta.z - beta.y) < 0.0;
+    let term = clamp_term(select(alpha, beta, swap), select(beta, alpha, swap));
+    let c0 = clamp(s0 + 0.5, vec2<f32>(0.0), vec2<f32>(1.0));
+    let c2 = clamp(s2 + 0.5, vec2<f32>(0.0), vec2<f32>(1.0));
+    let square = select(term, c2.x * c2.y - c0.x * c0.y - term, swap);
+    return square + rows_correction(c.p2, f) - rows_correction(c.p0, f);
+}
+
+// ∫ c(A) dclamp(B, −½, ½) along a curve whose control values are `a` and `b`, B
+// monotone: its stretch within the strip |B| ≤ ½ is cut out (blossoming), its ends put
+// on the strip's edges exactly (or left at the curve's), so that the integral spans the
+// strip's height however long the curve and however coarse its parameter there; A's
+// roots at ±½ cut the stretch into parts on which c(A) is 0, A + ½ or 1, each part's
+// integral from values local to the square.
+fn clamp_term(a: vec3<f32>, b: vec3<f32>) -> f32 {
+    let tb = vec2<f32>(t_at(b, -0.5), t_at(b, 0.5));
+    let t0 = min(tb.x, tb.y);
+    let t1 = max(tb.x, tb.y);
+    let l = monomial(vec3<f32>(blossom_value(a, t0, t0), blossom_value(a, t0, t1), blossom_value(a, t1, t1)));
+    let pb = monomial(vec3<f32>(clamp(b.x, -0.5, 0.5), blossom_value(b, t0, t1), clamp(b.z, -0.5, 0.5)));
+    // B′ = e + d·t.
+    let d = 2.0 * pb.x;
+    let e = pb.y;
+    // The cuts inside [0, 1], in order: the four roots merged from two sorted pairs.
+    let roots = level_roots(l);
+    let inner = vec2<f32>(max(roots.x, roots.z), min(roots.y, roots.w));
+    let cuts = vec4<f32>(min(roots.x, roots.z), min(inner.x, inner.y), max(inner.x, inner.y), max(roots.y, roots.w));
+    // At each cut and at 1, the antiderivatives from 0 of (A + ½)·B′ (a cubic) and of B′.
+    let lz = l.z + 0.5;
+    let cubic = vec4<f32>(l.x * d, l.x * e + l.y * d, l.y * e + lz * d, lz * e) * vec4<f32>(0.25, 1.0 / 3.0, 0.5, 1.0);
+    let h = (((cubic.x * cuts + cubic.y) * cuts + cubic.z) * cuts + cubic.w) * cuts;
+    let h_end = cubic.x + cubic.y + cubic.z + cubic.w;
+    let climb = (0.5 * d * cuts + e) * cuts;
+    let climb_end = 0.5 * d + e;
+    // The five parts, each by A at its middle: 0 below −½, (A + ½)·B′ between, B′ above.
+    let mids = 0.5 * (vec4<f32>(0.0, cuts.xyz) + cuts);
+    let at = (l.x * mids + l.y) * mids + l.z;
+    var parts = select(h - vec4<f32>(0.0, h.xyz), climb - vec4<f32>(0.0, climb.xyz), at > vec4<f32>(0.5));
+    parts = select(parts, vec4<f32>(0.0), at < vec4<f32>(-0.5));
+    let last_mid = 0.5 * (cuts.w + 1.0);
+    let last_at = (l.x * last_mid + l.y) * last_mid + l.z;
+    var last = select(h_end - h.w, climb_end - climb.w, last_at > 0.5);
+    last = select(last, 0.0, last_at < -0.5);
+    return dot(parts, vec4<f32>(1.0)) + last;
+}
+
+// The roots in [0, 1] where the quadratic with monomials `l` takes −½ (x, y) and ½ (z,
+// w), each pair in order (1 for one that does not exist); stable as in `ramp_over`.
+fn level_roots(l: vec3<f32>) -> vec4<f32> {
+    let k = l.z - vec2<f32>(-0.5, 0.5);
+    let discriminant = l.y * l.y - 4.0 * l.x * k;
+    let root = sqrt(max(discriminant, vec2<f32>(0.0)));
+    let q = -0.5 * (l.y + select(-root, root, l.y >= 0.0));
+    let near = select(vec2<f32>(1.0), k / q, q != vec2<f32>(0.0));
+    let far = select(vec2<f32>(1.0), q * (1.0 / l.x), l.x != 0.0);
+    let real = discriminant >= vec2<f32>(0.0);
+    let first = clamp(select(vec2<f32>(1.0), min(near, far), real), vec2<f32>(0.0), vec2<f32>(1.0));
+    let second = clamp(select(vec2<f32>(1.0), max(near, far), real), vec2<f32>(0.0), vec2<f32>(1.0));
+    return vec4<f32>(first.x, second.x, first.y, second.y);
+}
+
+// ψ at a point q of the row frame, dψ = ω_rows − ω_square, 0 far left: along q's row
+// ω_rows vanishes (dv = 0), so ψ is −∫ c(α) c′(β) dβ from the row's far left to q. On
+// the row β runs linearly (β_u = beta_of.x): the strip |β| ≤ ½ is the row's stretch
+// [lo, hi], and there α grows by α_u = alpha_of.x (> 0) a unit of u, so the integral
+// is (β_u / α_u)·∫ c(α) dα between the stretch's start and q (clamped into it). A row
+// along the strip (β_u = 0) adds nothing to ω_square: ψ = 0.
+fn rows_correction(q: vec2<f32>, f: PixelFrame) -> f32 {
+    let s1 = (-0.5 - f.beta_of.y * q.y) * f.inverse_beta_u;
+    let s2 = (0.5 - f.beta_of.y * q.y) * f.inverse_beta_u;
+    let lo = min(s1, s2);
+    let hi = max(s1, s2);
+    let start = f.alpha_of.x * lo + f.alpha_of.y * q.y;
+    let end = f.alpha_of.x * clamp(q.x, lo, hi) + f.alpha_of.y * q.y;
+    let value = f.correction_scale * (clamp_antiderivative(end) - clamp_antiderivative(start));
+    return select(value, 0.0, f.beta_of.x == 0.0);
+}
+
+// ∫ c(x) dx from far below, c(x) = clamp(x + ½, 0, 1).
+fn clamp_antiderivative(x: f32) -> f32 {
+    return select(select(0.5 * (x + 0.5) * (x + 0.5), x, x > 0.5), 0.0, x < -0.5);
+}
+
 // How far aa=area's bands reach beyond their boundaries, in bands (AREA_REACH in
 // bands.rs): a pixel whose centre is in a band lies within its reach when half its
 // height is at most this many bands.
@@ -367,6 +497,8 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
         } else if zone == ZONE_ACROSS && STAGE != 3u {
             if AXIS {
                 result.winding += across_axis(q, frame);
+            } else if SQUARE {
+                result.winding += across_square(q, frame);
             } else {
                 result.winding += across_term(q, frame);
             }

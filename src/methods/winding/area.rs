@@ -53,7 +53,9 @@
 //!
 //! Where P's axes are the image's (no rotation, skew or tilt), P is a rectangle and the
 //! stretch within it is integrated at once ([`across_axis`], the shader's `AXIS`
-//! variant): the same integral, fewer terms.
+//! variant): the same integral, fewer terms. Where P's steps lean apart (the shader's
+//! `SQUARE` variant), a curve across P is integrated in P's own square frame and
+//! corrected back to this frame's form at its ends ([`across_square`]).
 //!
 //! Coverage is `fill(F)`: min(|F|, 1) for nonzero, a triangle wave for even-odd — exact
 //! wherever the winding inside the pixel takes two adjacent values, which every pixel
@@ -79,6 +81,14 @@ pub struct PixelFrame {
     pub left: DVec2,
     /// P spans u in [−reach, reach].
     pub reach: f64,
+    /// P's own coordinates α = alpha_of·q, β = beta_of·q of a point q of this frame, in
+    /// which P is the square |α|, |β| ≤ ½: α along P's shallower step (pointing right),
+    /// β along its steeper one (pointing up), so that α grows along every row.
+    alpha_of: DVec2,
+    beta_of: DVec2,
+    /// Whether P's steps lean apart ([`steps_lean_apart`](crate::geometry::steps_lean_apart)):
+    /// the shader's `SQUARE` draws, which integrate a curve across P in the square frame.
+    pub square: bool,
 }
 
 impl PixelFrame {
@@ -105,12 +115,25 @@ impl PixelFrame {
         } else {
             -middle
         };
+        // The steeper step pointing up and the other pointing right span P with a
+        // positive determinant, 1 (the scale): the square frame's axes, whose inverse is
+        // their adjugate.
+        let (up, right) = if (b.y * a.x).abs() >= (a.y * b.x).abs() {
+            (2.0 * b, 2.0 * a)
+        } else {
+            (2.0 * a, 2.0 * b)
+        };
+        let up = if up.y < 0.0 { -up } else { up };
+        let right = if right.x < 0.0 { -right } else { right };
         Some(PixelFrame {
             direction,
             scale,
             bottom,
             left,
             reach: bottom.x.abs().max(middle.x.abs()),
+            alpha_of: DVec2::new(up.y, -up.x),
+            beta_of: DVec2::new(-right.y, right.x),
+            square: jx.x * jx.y * jy.x * jy.y <= 0.0,
         })
     }
 
@@ -202,6 +225,7 @@ pub fn curve_term(c: Bezier, f: &PixelFrame) -> f64 {
     match zone(&c, f) {
         Zone::Outside => 0.0,
         Zone::Right => area_below(c[2].y, f) - area_below(c[0].y, f),
+        Zone::Across if f.square && !f.is_rectangle() => across_square(c, f),
         Zone::Across => across_term(c, f),
     }
 }
@@ -341,6 +365,120 @@ fn ramp_over(u: [f64; 3], v: [f64; 3], k: f64, offset: f64, t0: f64, t1: f64) ->
         .sum()
 }
 
+/// ∫ G dv along a curve across P, in P's square frame, where P's steps lean apart.
+/// Two 1-forms have P's indicator as their derivative: ω_rows = G dv, the one the bands
+/// need (it vanishes off P's rows and left of P), and ω_square = c(α) c′(β) dβ with c(x)
+/// = clamp(x + ½, 0, 1), P's own. Their difference is closed, so exact: dψ
+/// ([`rows_correction`]), and a curve adds ∫ ω_square + ψ(end) − ψ(start). Where the
+/// curve turns in β it adds instead ∫ ω_swapped + φ(end) − φ(start), ω_swapped =
+/// −c(β) c′(α) dα and φ = c(α) c(β), since ω_square − ω_swapped = dφ. A curve monotone
+/// in x and y turns in α or in β, not both, when P's steps lean apart (its tangent
+/// stays in one quadrant, and only one step's line runs through it), so the form it is
+/// integrated by keeps its edge coordinate monotone ([`clamp_term`]).
+pub fn across_square(c: Bezier, f: &PixelFrame) -> f64 {
+    let square = c.map(|p| DVec2::new(f.alpha_of.dot(p), f.beta_of.dot(p)));
+    let (alpha, beta) = (square.map(|p| p.x), square.map(|p| p.y));
+    // β′ is linear in t: it changes sign where its ends' signs differ.
+    let swap = (beta[1] - beta[0]) * (beta[2] - beta[1]) < 0.0;
+    let term = if swap {
+        let corner = |p: DVec2| (p.x + 0.5).clamp(0.0, 1.0) * (p.y + 0.5).clamp(0.0, 1.0);
+        corner(square[2]) - corner(square[0]) - clamp_term(beta, alpha)
+    } else {
+        clamp_term(alpha, beta)
+    };
+    term + rows_correction(c[2], f) - rows_correction(c[0], f)
+}
+
+/// ∫ c(A) dclamp(B, −½, ½) along a curve whose control values are `a` and `b`, B
+/// monotone: its stretch within the strip |B| ≤ ½ is cut out (blossoming), its ends put
+/// on the strip's edges exactly (or left at the curve's), so that in f32 the integral
+/// spans the strip's height however long the curve and however coarse its parameter
+/// there; A's roots at ±½ cut the stretch into parts on which c(A) is 0, A + ½ or 1.
+fn clamp_term(a: [f64; 3], b: [f64; 3]) -> f64 {
+    let (t0, t1) = stretch(b, -0.5, 0.5);
+    let cut = |c: [f64; 3]| {
+        [blossom_value(c, t0, t0), blossom_value(c, t0, t1), blossom_value(c, t1, t1)]
+    };
+    let l = monomial(cut(a));
+    let pb = monomial([b[0].clamp(-0.5, 0.5), cut(b)[1], b[2].clamp(-0.5, 0.5)]);
+    // B′ = e + d·t.
+    let (d, e) = (2.0 * pb[0], pb[1]);
+    let mut cuts = vec![0.0, 1.0];
+    cuts.extend(level_roots(l));
+    cuts.sort_by(f64::total_cmp);
+    let lz = l[2] + 0.5;
+    let cubic = [
+        l[0] * d / 4.0,
+        (l[0] * e + l[1] * d) / 3.0,
+        (l[1] * e + lz * d) / 2.0,
+        lz * e,
+    ];
+    let with_a = |t: f64| (((cubic[0] * t + cubic[1]) * t + cubic[2]) * t + cubic[3]) * t;
+    let rise = |t: f64| (0.5 * d * t + e) * t;
+    cuts.windows(2)
+        .map(|w| {
+            let mid = 0.5 * (w[0] + w[1]);
+            let at = (l[0] * mid + l[1]) * mid + l[2];
+            if at < -0.5 {
+                0.0
+            } else if at > 0.5 {
+                rise(w[1]) - rise(w[0])
+            } else {
+                with_a(w[1]) - with_a(w[0])
+            }
+        })
+        .sum()
+}
+
+/// The roots in [0, 1] where the quadratic with monomials `l` takes −½ or ½, by the
+/// stable form of the quadratic formula.
+fn level_roots(l: [f64; 3]) -> Vec<f64> {
+    let mut roots = Vec::new();
+    for level in [-0.5, 0.5] {
+        let k = l[2] - level;
+        let discriminant = l[1] * l[1] - 4.0 * l[0] * k;
+        if discriminant.is_nan() || discriminant < 0.0 {
+            continue;
+        }
+        let root = discriminant.sqrt();
+        let q = -0.5 * (l[1] + if l[1] >= 0.0 { root } else { -root });
+        if q != 0.0 {
+            roots.push(k / q);
+        }
+        if l[0] != 0.0 {
+            roots.push(q / l[0]);
+        }
+    }
+    roots.into_iter().map(|r| r.clamp(0.0, 1.0)).collect()
+}
+
+/// ψ at a point q of the frame, dψ = ω_rows − ω_square, 0 far left. Along q's row ω_rows
+/// vanishes (dv = 0), so ψ = −∫ c(α) c′(β) dβ along the row from far left to q: β runs
+/// linearly there (β_u = beta_of.x), so the strip |β| ≤ ½ is a stretch [lo, hi] of u,
+/// on which α grows by α_u = alpha_of.x > 0 a unit of u; the integral is (β_u / α_u)
+/// times ∫ c(α) dα from the stretch's start to q clamped into it. A row along the strip
+/// (β_u = 0) adds nothing to ω_square: ψ = 0.
+fn rows_correction(q: DVec2, f: &PixelFrame) -> f64 {
+    let beta_u = f.beta_of.x;
+    if beta_u == 0.0 {
+        return 0.0;
+    }
+    let ends = [-0.5, 0.5].map(|level| (level - f.beta_of.y * q.y) / beta_u);
+    let (lo, hi) = (ends[0].min(ends[1]), ends[0].max(ends[1]));
+    let alpha_at = |u: f64| f.alpha_of.x * u + f.alpha_of.y * q.y;
+    // ∫ c(x) dx from far below.
+    let antiderivative = |x: f64| {
+        if x < -0.5 {
+            0.0
+        } else if x > 0.5 {
+            x
+        } else {
+            0.5 * (x + 0.5) * (x + 0.5)
+        }
+    };
+    -beta_u / f.alpha_of.x * (antiderivative(alpha_at(q.x.clamp(lo, hi))) - antiderivative(alpha_at(lo)))
+}
+
 /// Monomial coefficients (t², t, 1) of a quadratic given by its control values.
 fn monomial(c: [f64; 3]) -> [f64; 3] {
     [c[0] - 2.0 * c[1] + c[2], 2.0 * (c[1] - c[0]), c[0]]
@@ -399,6 +537,11 @@ pub fn t_at(c: [f64; 3], value: f64) -> f64 {
         return ((value - c[0]) / (c[2] - c[0])).clamp(0.0, 1.0);
     }
     (-2.0 * k / denominator).clamp(0.0, 1.0)
+}
+
+/// A quadratic's blossom at (a, b), for one coordinate (control values `c`).
+fn blossom_value(c: [f64; 3], a: f64, b: f64) -> f64 {
+    c[0] * ((1.0 - a) * (1.0 - b)) + c[1] * ((1.0 - a) * b + a * (1.0 - b)) + c[2] * (a * b)
 }
 
 /// The curve's blossom at (a, b): the point at t when a = b = t; the middle control
@@ -790,6 +933,50 @@ mod tests {
                 assert!((a - b).abs() < 1e-12, "{f:?} {c:?}: {a} vs {b}");
             }
         }
+    }
+
+    /// Where P's steps lean apart, the square frame's term is the four ramps' term, on
+    /// curves of every direction, size and position about P: long ones running far
+    /// past it, short ones inside it, ones touching its corners' heights.
+    #[test]
+    fn the_square_frame_term_is_the_general_term() {
+        // A small linear congruential generator: the same curves every run.
+        let mut state = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = move || {
+            state = state.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut compared = 0;
+        let mut swapped = 0;
+        for step in 0..64 {
+            let angle = f64::from(step) * 5.7 + 0.3;
+            let stretch = 0.6 + 1.4 * next();
+            let m = rotation(angle) * glam::DMat2::from_cols(DVec2::new(stretch, 0.0), DVec2::new(0.3 * (next() - 0.5), 1.0 / stretch));
+            let to_local = m.inverse();
+            let direction = if step % 2 == 0 { 1.0 } else { -1.0 };
+            let Some(f) = PixelFrame::new(to_local.x_axis, to_local.y_axis, direction) else {
+                continue;
+            };
+            if !f.square || f.is_rectangle() {
+                continue;
+            }
+            for _ in 0..200 {
+                let size = [0.3, 2.0, 40.0][(next() * 3.0) as usize];
+                let start = DVec2::new(next() - 0.5, next() - 0.5) * 3.0;
+                let curve = [start, start + DVec2::new(next() - 0.5, next() - 0.5) * size, start + DVec2::new(next() - 0.5, next() - 0.5) * size];
+                for piece in monotone_pieces(curve).into_iter().flatten() {
+                    if zone(&piece, &f) != Zone::Across {
+                        continue;
+                    }
+                    let beta = piece.map(|p| f.beta_of.dot(p));
+                    swapped += usize::from((beta[1] - beta[0]) * (beta[2] - beta[1]) < 0.0);
+                    let (a, b) = (across_square(piece, &f), across_term(piece, &f));
+                    assert!((a - b).abs() < 1e-9 * (1.0 + size), "{f:?} {piece:?}: {a} vs {b}");
+                    compared += 1;
+                }
+            }
+        }
+        assert!(compared > 5000 && swapped > 500, "{compared} compared, {swapped} swapped");
     }
 
     #[test]

@@ -38,7 +38,7 @@ use super::{
 };
 use crate::Error;
 use crate::camera::Camera;
-use crate::geometry::keeps_axes;
+use crate::geometry::{Rect, keeps_axes, steps_lean_apart};
 use crate::gpu::kit::{self, PipelineBuilder, Slot};
 use crate::gpu::shaders::Shader;
 use crate::gpu::{CoverageTarget, GpuContext};
@@ -347,22 +347,29 @@ impl Settings {
 struct Variant {
     /// The instance's axes are the image's: the pixel is a rectangle in its frame.
     axis: bool,
+    /// Otherwise, the instance's pixel steps lean apart over the view: a curve across a
+    /// pixel is integrated in the pixel's square frame.
+    square: bool,
     /// The glyph's pixels may need the sub-pixel grid.
     grid: bool,
 }
 
 impl Settings {
     /// The variant that draws an instance of a glyph with (`marked`) or without curves
-    /// marked as overlapping, through `to_image`. `aa=rays` reads neither constant.
-    fn variant(&self, marked: bool, to_image: &glam::DMat3) -> Variant {
+    /// marked as overlapping, through `to_image`, into `view` (the target's pixels).
+    /// `aa=rays` reads none of its constants.
+    fn variant(&self, marked: bool, to_image: &glam::DMat3, view: &Rect) -> Variant {
         if self.aa != Antialiasing::Area {
             return Variant {
                 axis: false,
+                square: false,
                 grid: false,
             };
         }
+        let axis = keeps_axes(to_image);
         Variant {
-            axis: keeps_axes(to_image),
+            axis,
+            square: !axis && steps_lean_apart(to_image, view),
             grid: match self.samples {
                 1 => false,
                 4 => true,
@@ -458,6 +465,7 @@ impl Winding {
             ("SAMPLES", f64::from(s.samples)),
             ("EVEN_ODD", f64::from(u8::from(s.even_odd))),
             ("AXIS", f64::from(u8::from(variant.axis))),
+            ("SQUARE", f64::from(u8::from(variant.square))),
             ("GRID", f64::from(u8::from(variant.grid))),
             ("USE_BANDS", f64::from(u8::from(s.bands.is_some()))),
             ("OVERLAY", output.constant()),
@@ -488,10 +496,14 @@ impl Winding {
             .as_mut()
             .ok_or_else(|| super::not_prepared(NAME))?;
         let marked = &prepared.marked;
+        let view = Rect {
+            min: glam::DVec2::ZERO,
+            max: glam::DVec2::new(f64::from(camera.width), f64::from(camera.height)),
+        };
         let groups = prepared
             .instances
             .update_grouped(gpu, camera, 0.0, |glyph, to_image| {
-                settings.variant(marked[glyph as usize], to_image)
+                settings.variant(marked[glyph as usize], to_image, &view)
             })?;
         let draws: Vec<_> = groups
             .into_iter()
