@@ -40,12 +40,15 @@ pub const FULL_ROUNDS: Rounds = Rounds {
     },
 };
 
-/// `--quick`: one round of a few frames after the full run's warm-up: on lavapipe the
-/// first frames after a method is prepared run slow on the small scenes (the atlas on
-/// `rotated`: 4.1–4.3 ms for the three frames after one warm-up frame, 2.5 ms after),
-/// and a median of three such frames measured the warm-up, not the method.
+/// `--quick`: three rounds of three frames each after the full run's warm-up. On
+/// lavapipe the first frames after a method is prepared run slow on the small scenes
+/// (the atlas on `rotated`: 4.1–4.3 ms for the three frames after one warm-up frame,
+/// 2.5 ms after), and a median of three such frames measured the warm-up, not the
+/// method. One round measured whatever load the machine had while each case ran: three
+/// one-round runs of the same build put `winding` on `rotated` at 1.32×, 2.16× and
+/// 3.04× the atlas (a slow spell of a few seconds covering one case's frames).
 pub const QUICK_ROUNDS: Rounds = Rounds {
-    rounds: 1,
+    rounds: 3,
     per_round: FrameTiming {
         warmup: 3,
         frames: 3,
