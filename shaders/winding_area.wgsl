@@ -103,7 +103,7 @@ fn pixel_frame(jx_local: vec2<f32>, jy_local: vec2<f32>, direction: f32) -> Pixe
         right = select(right, -right, right.x < 0.0);
         f.alpha_of = vec2<f32>(up.y, -up.x);
         f.beta_of = vec2<f32>(-right.y, right.x);
-        f.inverse_beta_u = 1.0 / f.beta_of.x;
+        f.inverse_beta_u = select(1.0 / f.beta_of.x, 0.0, f.beta_of.x == 0.0);
         f.correction_scale = -f.beta_of.x / f.alpha_of.x;
     }
     f.valid = true;
@@ -325,8 +325,12 @@ fn across_square(c: Bezier, f: PixelFrame) -> f32 {
     let s2 = vec2<f32>(dot(f.alpha_of, c.p2), dot(f.beta_of, c.p2));
     let alpha = vec3<f32>(s0.x, s1.x, s2.x);
     let beta = vec3<f32>(s0.y, s1.y, s2.y);
-    // β′ is linear in t: it changes sign where its ends' signs differ.
-    let swap = (beta.y - beta.x) * (beta.z - beta.y) < 0.0;
+    // A coordinate's derivative is linear in t: it changes sign where its ends' signs
+    // differ. The form taken is the one whose edge coordinate turns less: where a step
+    // lies within rounding of an axis, the shader's derivatives may tilt it across,
+    // and a piece starting along that axis then turns in β by a hair.
+    let beta_turn = (beta.y - beta.x) * (beta.z - beta.y);
+    let swap = beta_turn < 0.0 && beta_turn < (alpha.y - alpha.x) * (alpha.z - alpha.y);
     let term = clamp_term(select(alpha, beta, swap), select(beta, alpha, swap));
     let c0 = clamp(s0 + 0.5, vec2<f32>(0.0), vec2<f32>(1.0));
     let c2 = clamp(s2 + 0.5, vec2<f32>(0.0), vec2<f32>(1.0));
@@ -400,7 +404,11 @@ fn rows_correction(q: vec2<f32>, f: PixelFrame) -> f32 {
     let hi = max(s1, s2);
     let start = f.alpha_of.x * lo + f.alpha_of.y * q.y;
     let end = f.alpha_of.x * clamp(q.x, lo, hi) + f.alpha_of.y * q.y;
-    let value = f.correction_scale * (clamp_antiderivative(end) - clamp_antiderivative(start));
+    var value = f.correction_scale * (clamp_antiderivative(end) - clamp_antiderivative(start));
+    // Where the row meets the strip past α = ½, c = 1 there and the integral is the
+    // strip's height crossed, from β's values (α far from the square would cancel).
+    let crossed = clamp(dot(f.beta_of, q), -0.5, 0.5) - select(0.5, -0.5, f.beta_of.x > 0.0);
+    value = select(value, -crossed, start > 0.5);
     return select(value, 0.0, f.beta_of.x == 0.0);
 }
 
@@ -468,7 +476,7 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
     let start = select(band.by_max, band.by_min, direction < 0.0);
     if STAGE == 1u {
         // Setup only: the result must still depend on all of it.
-        result.winding = f32(band.count) + near_end + frame.scale + frame.bottom.x + frame.left.y + frame.reach + frame.width + frame.rise + frame.growth;
+        result.winding = f32(band.count) + near_end + frame.scale + frame.bottom.x + frame.left.y + frame.reach + frame.width + frame.rise + frame.growth + frame.alpha_of.x + frame.beta_of.y + frame.inverse_beta_u + frame.correction_scale;
         return result;
     }
     var across = 0u;

@@ -247,8 +247,9 @@ pub fn keeps_axes(to_image: &DMat3) -> bool {
 /// turns along at most one of the pixel's own axes — the condition of `winding`'s
 /// square frame (`SQUARE` in shaders/winding_area.wgsl). Rotations, mirrors and scales
 /// always lean apart; a skew or a perspective tilt may not. Each component of a step,
-/// times the homogeneous w, is affine in the image point, so the corners of `view`
-/// bound it; a product of those bounds that may be positive anywhere answers false.
+/// times w² (w the homogeneous coordinate), is affine in the image point, so the corners
+/// of `view` bound it; a product of those bounds that may be positive anywhere, or a
+/// corner where they are not finite, answers false.
 pub fn steps_lean_apart(to_image: &DMat3, view: &Rect) -> bool {
     let to_local = to_image.inverse();
     let range = |component: &dyn Fn(DVec2) -> f64| {
@@ -263,7 +264,7 @@ pub fn steps_lean_apart(to_image: &DMat3, view: &Rect) -> bool {
             .iter()
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| (lo.min(v), hi.max(v)))
     };
-    // w times the step along image axis `axis`: column·w − (local·w)·column.z.
+    // w² times the step along image axis `axis`: column·w − (local·w)·column.z.
     let step = |axis: usize, coordinate: usize| {
         let column = to_local.col(axis);
         move |s: DVec2| {
@@ -271,9 +272,12 @@ pub fn steps_lean_apart(to_image: &DMat3, view: &Rect) -> bool {
             column[coordinate] * h.z - h[coordinate] * column.z
         }
     };
+    let finite = view.corners().iter().all(|&s| {
+        (0..2).all(|axis| (0..2).all(|coordinate| step(axis, coordinate)(s).is_finite()))
+    });
     let lean = |axis: usize| times(range(&step(axis, 0)), range(&step(axis, 1)));
     let (lo, hi) = times(lean(0), lean(1));
-    !lo.is_nan() && hi <= 0.0
+    finite && lo.is_finite() && hi <= 0.0
 }
 
 /// An upper bound of the local→image scale over `local` (Frobenius norm of the
@@ -329,7 +333,8 @@ mod tests {
             max: DVec2::new(641.0, 481.0),
         };
         let linear = glam::DMat2::from_angle(0.5) * 0.03;
-        for tilt in [0.0, 1e-4, 5e-4, 1e-3] {
+        // w runs over 1 ± tilt · 8 000 across the view (local units are 1/0.03 px).
+        for tilt in [0.0, 1e-6, 1e-5, 5e-5, 1e-4] {
             let to_image = DMat3::from_cols(
                 linear.x_axis.extend(tilt * 0.3),
                 linear.y_axis.extend(tilt),
@@ -348,8 +353,8 @@ mod tests {
                 }
             }
             assert!(!answer || all_apart, "tilt {tilt}: answered true, but a pixel leans");
-            if tilt == 0.0 {
-                assert!(answer, "a turn without tilt leans apart");
+            if tilt <= 1e-5 {
+                assert!(answer, "tilt {tilt}: a turn with little tilt leans apart");
             }
         }
     }

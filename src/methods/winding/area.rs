@@ -378,8 +378,11 @@ fn ramp_over(u: [f64; 3], v: [f64; 3], k: f64, offset: f64, t0: f64, t1: f64) ->
 pub fn across_square(c: Bezier, f: &PixelFrame) -> f64 {
     let square = c.map(|p| DVec2::new(f.alpha_of.dot(p), f.beta_of.dot(p)));
     let (alpha, beta) = (square.map(|p| p.x), square.map(|p| p.y));
-    // β′ is linear in t: it changes sign where its ends' signs differ.
-    let swap = (beta[1] - beta[0]) * (beta[2] - beta[1]) < 0.0;
+    // A coordinate's derivative is linear in t: it changes sign where its ends' signs
+    // differ. The form taken is the one whose edge coordinate turns less (where a step
+    // lies within rounding of an axis, the shader's derivatives may tilt it across).
+    let beta_turn = (beta[1] - beta[0]) * (beta[2] - beta[1]);
+    let swap = beta_turn < 0.0 && beta_turn < (alpha[1] - alpha[0]) * (alpha[2] - alpha[1]);
     let term = if swap {
         let corner = |p: DVec2| (p.x + 0.5).clamp(0.0, 1.0) * (p.y + 0.5).clamp(0.0, 1.0);
         corner(square[2]) - corner(square[0]) - clamp_term(beta, alpha)
@@ -476,7 +479,14 @@ fn rows_correction(q: DVec2, f: &PixelFrame) -> f64 {
             0.5 * (x + 0.5) * (x + 0.5)
         }
     };
-    -beta_u / f.alpha_of.x * (antiderivative(alpha_at(q.x.clamp(lo, hi))) - antiderivative(alpha_at(lo)))
+    let start = alpha_at(lo);
+    if start > 0.5 {
+        // The row meets the strip past α = ½, where c = 1: the strip's height crossed,
+        // from β's values (α far from the square would cancel).
+        let edge = if beta_u > 0.0 { -0.5 } else { 0.5 };
+        return -(f.beta_of.dot(q).clamp(-0.5, 0.5) - edge);
+    }
+    -beta_u / f.alpha_of.x * (antiderivative(alpha_at(q.x.clamp(lo, hi))) - antiderivative(start))
 }
 
 /// Monomial coefficients (t², t, 1) of a quadratic given by its control values.
@@ -977,6 +987,30 @@ mod tests {
             }
         }
         assert!(compared > 5000 && swapped > 500, "{compared} compared, {swapped} swapped");
+    }
+
+    /// Steps that lean the same way by a rounding's worth (a near-level step tilted
+    /// across the axis, as a shader's derivatives can): a piece leaving along the axis
+    /// turns in β by a hair while it turns in α for real, and the square's term takes
+    /// the form whose edge coordinate turns less, staying with the four ramps' term.
+    #[test]
+    fn the_square_frame_term_survives_a_step_rounded_across_an_axis() {
+        let jx = DVec2::new(1.0, 1e-7);
+        let jy = DVec2::new(0.5, 1.0);
+        let f = PixelFrame::new(jx, jy, 1.0).unwrap();
+        assert!(!f.square, "the steps lean the same way");
+        for offset in [-0.6, -0.2, 0.0, 0.3, 0.7] {
+            // Level at its start (a split point), steeper than jy at its end: α rises
+            // past ½ and comes back.
+            let start = DVec2::new(-1.5, offset - 0.4);
+            let piece = [start, start + DVec2::new(4.0, 0.0), start + DVec2::new(4.5, 8.0)];
+            let beta = piece.map(|p| f.beta_of.dot(p));
+            let alpha = piece.map(|p| f.alpha_of.dot(p));
+            assert!((beta[1] - beta[0]) * (beta[2] - beta[1]) < 0.0, "β turns by a hair");
+            assert!((alpha[1] - alpha[0]) * (alpha[2] - alpha[1]) < 0.0, "α turns");
+            let (a, b) = (across_square(piece, &f), across_term(piece, &f));
+            assert!((a - b).abs() < 1e-5, "offset {offset}: {a} vs {b}");
+        }
     }
 
     #[test]

@@ -496,9 +496,11 @@ impl Winding {
             .as_mut()
             .ok_or_else(|| super::not_prepared(NAME))?;
         let marked = &prepared.marked;
+        // Pixel centres, and the helper lanes' beside the last column and row (their
+        // derivatives are differences with them).
         let view = Rect {
-            min: glam::DVec2::ZERO,
-            max: glam::DVec2::new(f64::from(camera.width), f64::from(camera.height)),
+            min: glam::DVec2::splat(-1.0),
+            max: glam::DVec2::new(f64::from(camera.width), f64::from(camera.height)) + 1.0,
         };
         let groups = prepared
             .instances
