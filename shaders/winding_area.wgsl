@@ -153,7 +153,7 @@ fn blossom_value(c: vec3<f32>, a: f32, b: f32) -> f32 {
 }
 
 fn blossom(c: Bezier, a: f32, b: f32) -> vec2<f32> {
-    return c.p0 * ((1.0 - a) * (1.0 - b)) + c.p1 * ((1.0 - a) * b + a * (1.0 - b)) + c.p2 * (a * b);
+    return vec2<f32>(blossom_value(xs(c), a, b), blossom_value(ys(c), a, b));
 }
 
 fn subcurve(c: Bezier, a: f32, b: f32) -> Bezier {
@@ -231,22 +231,35 @@ fn ramp_over(u: vec3<f32>, v: vec3<f32>, k: f32, offset: f32, t0: f32, t1: f32) 
     let l = vec3<f32>(m.x, 2.0 * m.x * t0 + m.y, (m.x * t0 + m.y) * t0 + m.z - offset);
     let d = 2.0 * v.x;
     let e = d * t0 + v.y;
-    // The roots by the stable form of the quadratic formula, past the stretch for one
-    // that does not exist (ℓ of one sign, or a line).
+    // ℓ's roots, past the stretch for one that does not exist (ℓ of one sign, or a line).
     let span = t1 - t0;
-    let discriminant = l.y * l.y - 4.0 * l.x * l.z;
-    let root = sqrt(max(discriminant, 0.0));
-    let q = -0.5 * (l.y + select(-root, root, l.y >= 0.0));
-    var roots = vec2<f32>(select(span, l.z / q, q != 0.0), select(span, q / l.x, l.x != 0.0));
-    roots = select(roots, vec2<f32>(span), discriminant < 0.0);
-    let cuts = vec4<f32>(0.0, clamp(min(roots.x, roots.y), 0.0, span), clamp(max(roots.x, roots.y), 0.0, span), span);
+    let roots = clamp(sorted_roots(l, span), vec2<f32>(0.0), vec2<f32>(span));
+    let cuts = vec4<f32>(0.0, roots, span);
     // ℓ·v′, a cubic, and its antiderivative at the cuts.
-    let cubic = vec4<f32>(l.x * d, l.x * e + l.y * d, l.y * e + l.z * d, l.z * e) * vec4<f32>(0.25, 1.0 / 3.0, 0.5, 1.0);
+    let cubic = product_antiderivative(l, d, e);
     let h = (((cubic.x * cuts + cubic.y) * cuts + cubic.z) * cuts + cubic.w) * cuts;
     let mids = 0.5 * (cuts.xyz + cuts.yzw);
     let sign = (l.x * mids + l.y) * mids + l.z;
     let parts = h.yzw - h.xyz;
     return dot(select(vec3<f32>(0.0), parts, sign > vec3<f32>(0.0)), vec3<f32>(1.0));
+}
+
+// The roots of the quadratic with monomials `l` (t², t, 1), in order, by the stable
+// form of the quadratic formula (finite as it degenerates to a line); `missing` for one
+// that does not exist.
+fn sorted_roots(l: vec3<f32>, missing: f32) -> vec2<f32> {
+    let discriminant = l.y * l.y - 4.0 * l.x * l.z;
+    let root = sqrt(max(discriminant, 0.0));
+    let q = -0.5 * (l.y + select(-root, root, l.y >= 0.0));
+    var roots = vec2<f32>(select(missing, l.z / q, q != 0.0), select(missing, q / l.x, l.x != 0.0));
+    roots = select(roots, vec2<f32>(missing), discriminant < 0.0);
+    return vec2<f32>(min(roots.x, roots.y), max(roots.x, roots.y));
+}
+
+// The coefficients (t⁴, t³, t², t) of the antiderivative from 0 of l(t)·(e + d·t), l a
+// quadratic's monomials: the integral of a coordinate against another's slope.
+fn product_antiderivative(l: vec3<f32>, d: f32, e: f32) -> vec4<f32> {
+    return vec4<f32>(l.x * d, l.x * e + l.y * d, l.y * e + l.z * d, l.z * e) * vec4<f32>(0.25, 1.0 / 3.0, 0.5, 1.0);
 }
 
 // Monomial coefficients (t², t, 1) of a quadratic given by its control values.
@@ -358,8 +371,7 @@ fn clamp_term(a: vec3<f32>, b: vec3<f32>) -> f32 {
     let inner = vec2<f32>(max(roots.x, roots.z), min(roots.y, roots.w));
     let cuts = vec4<f32>(min(roots.x, roots.z), min(inner.x, inner.y), max(inner.x, inner.y), max(roots.y, roots.w));
     // At each cut and at 1, the antiderivatives from 0 of (A + ½)·B′ (a cubic) and of B′.
-    let lz = l.z + 0.5;
-    let cubic = vec4<f32>(l.x * d, l.x * e + l.y * d, l.y * e + lz * d, lz * e) * vec4<f32>(0.25, 1.0 / 3.0, 0.5, 1.0);
+    let cubic = product_antiderivative(l + vec3<f32>(0.0, 0.0, 0.5), d, e);
     let h = (((cubic.x * cuts + cubic.y) * cuts + cubic.z) * cuts + cubic.w) * cuts;
     let h_end = cubic.x + cubic.y + cubic.z + cubic.w;
     let climb = (0.5 * d * cuts + e) * cuts;
@@ -377,18 +389,11 @@ fn clamp_term(a: vec3<f32>, b: vec3<f32>) -> f32 {
 }
 
 // The roots in [0, 1] where the quadratic with monomials `l` takes −½ (x, y) and ½ (z,
-// w), each pair in order (1 for one that does not exist); stable as in `ramp_over`.
+// w), each pair in order (1 for one that does not exist).
 fn level_roots(l: vec3<f32>) -> vec4<f32> {
-    let k = l.z - vec2<f32>(-0.5, 0.5);
-    let discriminant = l.y * l.y - 4.0 * l.x * k;
-    let root = sqrt(max(discriminant, vec2<f32>(0.0)));
-    let q = -0.5 * (l.y + select(-root, root, l.y >= 0.0));
-    let near = select(vec2<f32>(1.0), k / q, q != vec2<f32>(0.0));
-    let far = select(vec2<f32>(1.0), q * (1.0 / l.x), l.x != 0.0);
-    let real = discriminant >= vec2<f32>(0.0);
-    let first = clamp(select(vec2<f32>(1.0), min(near, far), real), vec2<f32>(0.0), vec2<f32>(1.0));
-    let second = clamp(select(vec2<f32>(1.0), max(near, far), real), vec2<f32>(0.0), vec2<f32>(1.0));
-    return vec4<f32>(first.x, second.x, first.y, second.y);
+    let low = sorted_roots(l + vec3<f32>(0.0, 0.0, 0.5), 1.0);
+    let high = sorted_roots(l - vec3<f32>(0.0, 0.0, 0.5), 1.0);
+    return clamp(vec4<f32>(low, high), vec4<f32>(0.0), vec4<f32>(1.0));
 }
 
 // ψ at a point q of the row frame, dψ = ω_rows − ω_square, 0 far left: along q's row

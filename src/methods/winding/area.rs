@@ -325,33 +325,15 @@ fn ramp_over(u: [f64; 3], v: [f64; 3], k: f64, offset: f64, t0: f64, t1: f64) ->
     ];
     let (d, e) = (2.0 * v[0], 2.0 * v[0] * t0 + v[1]);
     let span = t1 - t0;
-    // The roots by the stable form of the quadratic formula; past the stretch for one
-    // that does not exist.
-    let discriminant = l[1] * l[1] - 4.0 * l[0] * l[2];
-    let (mut r0, mut r1) = (span, span);
-    if discriminant >= 0.0 {
-        let root = discriminant.sqrt();
-        let q = -0.5 * (l[1] + if l[1] >= 0.0 { root } else { -root });
-        if q != 0.0 {
-            r0 = l[2] / q;
-        }
-        if l[0] != 0.0 {
-            r1 = q / l[0];
-        }
-    }
+    // Past the stretch for a root that does not exist.
+    let [r0, r1] = quadratic_roots(l).map(|r| r.unwrap_or(span));
     let cuts = [
         0.0,
         r0.min(r1).clamp(0.0, span),
         r0.max(r1).clamp(0.0, span),
         span,
     ];
-    let cubic = [
-        l[0] * d / 4.0,
-        (l[0] * e + l[1] * d) / 3.0,
-        (l[1] * e + l[2] * d) / 2.0,
-        l[2] * e,
-    ];
-    let antiderivative = |t: f64| (((cubic[0] * t + cubic[1]) * t + cubic[2]) * t + cubic[3]) * t;
+    let antiderivative = product_antiderivative(l, d, e);
     cuts.windows(2)
         .map(|w| {
             let mid = 0.5 * (w[0] + w[1]);
@@ -409,14 +391,7 @@ fn clamp_term(a: [f64; 3], b: [f64; 3]) -> f64 {
     let mut cuts = vec![0.0, 1.0];
     cuts.extend(level_roots(l));
     cuts.sort_by(f64::total_cmp);
-    let lz = l[2] + 0.5;
-    let cubic = [
-        l[0] * d / 4.0,
-        (l[0] * e + l[1] * d) / 3.0,
-        (l[1] * e + lz * d) / 2.0,
-        lz * e,
-    ];
-    let with_a = |t: f64| (((cubic[0] * t + cubic[1]) * t + cubic[2]) * t + cubic[3]) * t;
+    let with_a = product_antiderivative([l[0], l[1], l[2] + 0.5], d, e);
     let rise = |t: f64| (0.5 * d * t + e) * t;
     cuts.windows(2)
         .map(|w| {
@@ -433,26 +408,39 @@ fn clamp_term(a: [f64; 3], b: [f64; 3]) -> f64 {
         .sum()
 }
 
-/// The roots in [0, 1] where the quadratic with monomials `l` takes −½ or ½, by the
-/// stable form of the quadratic formula.
+/// The roots in [0, 1] where the quadratic with monomials `l` takes −½ or ½.
 fn level_roots(l: [f64; 3]) -> Vec<f64> {
-    let mut roots = Vec::new();
-    for level in [-0.5, 0.5] {
-        let k = l[2] - level;
-        let discriminant = l[1] * l[1] - 4.0 * l[0] * k;
-        if discriminant.is_nan() || discriminant < 0.0 {
-            continue;
-        }
-        let root = discriminant.sqrt();
-        let q = -0.5 * (l[1] + if l[1] >= 0.0 { root } else { -root });
-        if q != 0.0 {
-            roots.push(k / q);
-        }
-        if l[0] != 0.0 {
-            roots.push(q / l[0]);
-        }
+    [-0.5, 0.5]
+        .into_iter()
+        .flat_map(|level| quadratic_roots([l[0], l[1], l[2] - level]))
+        .flatten()
+        .map(|r| r.clamp(0.0, 1.0))
+        .collect()
+}
+
+/// The roots of the quadratic with monomials `l` (t², t, 1) by the stable form of the
+/// quadratic formula, which stays finite as it degenerates to a line: None for a root
+/// that does not exist.
+fn quadratic_roots(l: [f64; 3]) -> [Option<f64>; 2] {
+    let discriminant = l[1] * l[1] - 4.0 * l[0] * l[2];
+    if discriminant.is_nan() || discriminant < 0.0 {
+        return [None, None];
     }
-    roots.into_iter().map(|r| r.clamp(0.0, 1.0)).collect()
+    let root = discriminant.sqrt();
+    let q = -0.5 * (l[1] + if l[1] >= 0.0 { root } else { -root });
+    [(q != 0.0).then(|| l[2] / q), (l[0] != 0.0).then(|| q / l[0])]
+}
+
+/// The antiderivative from 0 of l(t)·(e + d·t), l a quadratic given by its monomials:
+/// a quartic, for the integral of a coordinate along a curve against another's slope.
+fn product_antiderivative(l: [f64; 3], d: f64, e: f64) -> impl Fn(f64) -> f64 {
+    let cubic = [
+        l[0] * d / 4.0,
+        (l[0] * e + l[1] * d) / 3.0,
+        (l[1] * e + l[2] * d) / 2.0,
+        l[2] * e,
+    ];
+    move |t: f64| (((cubic[0] * t + cubic[1]) * t + cubic[2]) * t + cubic[3]) * t
 }
 
 /// ψ at a point q of the frame, dψ = ω_rows − ω_square, 0 far left. Along q's row ω_rows
@@ -557,7 +545,7 @@ fn blossom_value(c: [f64; 3], a: f64, b: f64) -> f64 {
 /// The curve's blossom at (a, b): the point at t when a = b = t; the middle control
 /// point of the piece between a and b.
 fn blossom(c: Bezier, a: f64, b: f64) -> DVec2 {
-    c[0] * ((1.0 - a) * (1.0 - b)) + c[1] * ((1.0 - a) * b + a * (1.0 - b)) + c[2] * (a * b)
+    DVec2::new(blossom_value(c.map(|p| p.x), a, b), blossom_value(c.map(|p| p.y), a, b))
 }
 
 /// The curve at t.
