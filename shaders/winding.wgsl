@@ -88,12 +88,28 @@ override OVERLAY: u32 = 0u;       // 0 none, 1 curve classes, 2 cost heat map, 3
 // 4 is the whole shader.
 override STAGE: u32 = 4u;
 
+// The glyph quad, carrying its glyph's record as flat varyings: read once per vertex
+// rather than once per fragment (a software device reads storage lane by lane, each
+// lane's word in turn).
+struct WindingQuad {
+    @builtin(position) position: vec4<f32>,
+    @location(0) @interpolate(flat) to_local_0: vec3<f32>,
+    @location(1) @interpolate(flat) to_local_1: vec3<f32>,
+    @location(2) @interpolate(flat) to_local_2: vec3<f32>,
+    @location(3) @interpolate(flat) bounds: vec4<f32>,
+    // band_count_h, band_count_v, first_band
+    @location(4) @interpolate(flat) bands: vec3<u32>,
+    @location(5) @interpolate(flat) units_per_em: f32,
+}
+
 // One quad per instance over the glyph's control-point bounds.
 @vertex
-fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u32) -> GlyphQuad {
+fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u32) -> WindingQuad {
     let inst = instances[index];
     let g = glyphs[inst.glyph];
-    return glyph_quad(inst, g.bounds.xy, g.bounds.zw, vertex, frame.size);
+    let q = glyph_quad(inst, g.bounds.xy, g.bounds.zw, vertex, frame.size);
+    let bands = vec3<u32>(g.band_count_h, g.band_count_v, g.first_band);
+    return WindingQuad(q.position, q.to_local_0, q.to_local_1, q.to_local_2, g.bounds, bands, g.units_per_em);
 }
 
 // A pixel's coverage, and how many curves it evaluated (the cost overlays).
@@ -121,12 +137,12 @@ fn fill(winding: f32) -> f32 {
 }
 
 @fragment
-fn fs_main(in: GlyphQuad) -> @location(0) vec4<f32> {
+fn fs_main(in: WindingQuad) -> @location(0) vec4<f32> {
     if STAGE == 0u {
         return vec4<f32>(1.0);
     }
-    let g = glyphs[in.glyph];
-    let local = quad_local(in);
+    let g = Glyph(in.bounds, in.bands.x, in.bands.y, in.bands.z, in.units_per_em);
+    let local = quad_local(GlyphQuad(in.position, in.to_local_0, in.to_local_1, in.to_local_2, 0u));
     // One pixel step in local units, x and y: the footprint under the full transform,
     // perspective included.
     let jx = dpdx(local);

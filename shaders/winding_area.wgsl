@@ -429,17 +429,14 @@ const AREA_REACH: f32 = 1.5;
 
 // The band holding every curve at the height of a pixel centred on `centre`, up to
 // `half_height` above and below it: the finest level whose bands are at least the
-// pixel's height over 2·AREA_REACH (see bands.rs).
+// pixel's height over 2·AREA_REACH (see bands.rs). One read, of the band chosen.
 fn area_band(g: Glyph, centre: vec2<f32>, half_height: f32) -> Band {
-    // Level 0, then the band of all curves, then the coarser levels.
-    let all = bands[g.first_band + g.band_count_h];
     var height = (g.bounds.w - g.bounds.y) / f32(g.band_count_h);
-    if !USE_BANDS || !(height > 0.0) {
-        return all;
-    }
+    // Level 0, then the band of all curves, then the coarser levels.
+    let all = g.first_band + g.band_count_h;
     var first = g.first_band;
     var count = g.band_count_h;
-    var next = g.first_band + g.band_count_h + 1u;
+    var next = all + 1u;
     while count > 1u && AREA_REACH * height < half_height {
         first = next;
         height *= 2.0;
@@ -447,7 +444,7 @@ fn area_band(g: Glyph, centre: vec2<f32>, half_height: f32) -> Band {
         next = first + count;
     }
     let index = u32(clamp(floor((centre.y - g.bounds.y) / height), 0.0, f32(count - 1u)));
-    return bands[first + index];
+    return bands[select(first + index, all, !USE_BANDS || !(height > 0.0))];
 }
 
 // What aa=area found in this fragment, for the cost breakdown's counting passes
