@@ -473,7 +473,7 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
     }
     let band = area_band(g, centre, 0.5 * (abs(jx.y) + abs(jy.y)));
     // A curve wholly behind the pixel's nearest point along the walk adds nothing, and
-    // the band is sorted so that every later one lies behind it too.
+    // the band is sorted so that every later one lies behind it too (`behind`).
     let near_end = direction * centre.x - 0.5 * (abs(jx.x) + abs(jy.x));
     let start = select(band.by_max, band.by_min, direction < 0.0);
     if STAGE == 1u {
@@ -486,41 +486,53 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
     // Whether pieces of two different curves cross the pixel.
     var distinct = false;
     var first_parent = 0u;
-    for (var i = 0u; i < band.count; i++) {
-        let c = curves[band_curves[start + i]];
-        // The curve's far end along the walk, from the points themselves (fewer loads).
-        let along = direction * vec3<f32>(c.p0p1.x, c.p0p1.z, c.p2_max.x);
-        if USE_BANDS && max(max(along.x, along.y), along.z) < near_end {
-            break;
-        }
-        result.evaluated++;
-        let q = Bezier(frame_map(frame, c.p0p1.xy - centre), frame_map(frame, c.p0p1.zw - centre), frame_map(frame, c.p2_max.xy - centre));
-        let zone = area_zone(q, frame);
-        if STAGE == 2u {
-            // The walk without its terms.
-            result.winding += f32(zone);
-            continue;
-        }
-        if zone == ZONE_RIGHT {
-            result.winding += area_below(q.p2.y, frame) - area_below(q.p0.y, frame);
-            breakdown_tally.x++;
-        } else if zone == ZONE_ACROSS && STAGE != 3u {
-            if AXIS {
-                result.winding += across_axis(q, frame);
-            } else if SQUARE {
-                result.winding += across_square(q, frame);
-            } else {
-                result.winding += across_term(q, frame);
+    // The walk is tested at its bottom, on the next curve read ahead: a SIMD device
+    // runs a loop until no lane is left in it, and the pass in which the last lanes
+    // leave a loop tested at its top runs the whole body for none of them (lavapipe:
+    // `rotated` 5.74 -> 5.35 ms, see docs/bench.md).
+    var i = 0u;
+    var c = curves[band_curves[start]];
+    if band.count > 0u && !behind(c, direction, near_end) {
+        loop {
+            result.evaluated++;
+            let q = Bezier(frame_map(frame, c.p0p1.xy - centre), frame_map(frame, c.p0p1.zw - centre), frame_map(frame, c.p2_max.xy - centre));
+            let zone = area_zone(q, frame);
+            if STAGE == 2u {
+                // The walk without its terms.
+                result.winding += f32(zone);
+            } else if zone == ZONE_RIGHT {
+                result.winding += area_below(q.p2.y, frame) - area_below(q.p0.y, frame);
+                breakdown_tally.x++;
+            } else if zone == ZONE_ACROSS && STAGE != 3u {
+                if AXIS {
+                    result.winding += across_axis(q, frame);
+                } else if SQUARE {
+                    result.winding += across_square(q, frame);
+                } else {
+                    result.winding += across_term(q, frame);
+                }
+                breakdown_tally.y++;
+                distinct = distinct || (across > 0u && c.parent != first_parent);
+                first_parent = select(first_parent, c.parent, across == 0u);
+                across++;
+                marked = marked || c.overlaps != 0.0;
             }
-            breakdown_tally.y++;
-            distinct = distinct || (across > 0u && c.parent != first_parent);
-            first_parent = select(first_parent, c.parent, across == 0u);
-            across++;
-            marked = marked || c.overlaps != 0.0;
+            i++;
+            c = curves[band_curves[start + min(i, band.count - 1u)]];
+            if i >= band.count || behind(c, direction, near_end) {
+                break;
+            }
         }
     }
     result.mixed = marked && distinct;
     return result;
+}
+
+// Whether curve `c` lies wholly behind the pixel's nearest point along the walk, from
+// its points themselves (fewer loads than its bounds).
+fn behind(c: Curve, direction: f32, near_end: f32) -> bool {
+    let along = direction * vec3<f32>(c.p0p1.x, c.p0p1.z, c.p2_max.x);
+    return USE_BANDS && max(max(along.x, along.y), along.z) < near_end;
 }
 
 // The side of the grid of sub-pixels aa=area integrates where three winding levels
