@@ -108,8 +108,8 @@ fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u
     let inst = instances[index];
     let g = glyphs[inst.glyph];
     let q = glyph_quad(inst, g.bounds.xy, g.bounds.zw, vertex, frame.size);
-    let bands = vec3<u32>(g.band_count_h, g.band_count_v, g.first_band);
-    return WindingQuad(q.position, q.to_local_0, q.to_local_1, q.to_local_2, g.bounds, bands, g.units_per_em);
+    let counts = vec3<u32>(g.band_count_h, g.band_count_v, g.first_band);
+    return WindingQuad(q.position, q.to_local_0, q.to_local_1, q.to_local_2, g.bounds, counts, g.units_per_em);
 }
 
 // A pixel's coverage, and how many curves it evaluated (the cost overlays).
@@ -142,6 +142,7 @@ fn fs_main(in: WindingQuad) -> @location(0) vec4<f32> {
         return vec4<f32>(1.0);
     }
     let g = Glyph(in.bounds, in.bands.x, in.bands.y, in.bands.z, in.units_per_em);
+    // (quad_local reads only the position and the map; the glyph came as its record.)
     let local = quad_local(GlyphQuad(in.position, in.to_local_0, in.to_local_1, in.to_local_2, 0u));
     // One pixel step in local units, x and y: the footprint under the full transform,
     // perspective included.
