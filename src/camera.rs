@@ -146,6 +146,14 @@ impl Camera {
         Ok(())
     }
 
+    /// The image region [0, width] × [0, height] grown by `pixels` on every side.
+    pub fn grown_view(&self, pixels: f64) -> Rect {
+        Rect {
+            min: DVec2::splat(-pixels),
+            max: DVec2::new(f64::from(self.width), f64::from(self.height)) + pixels,
+        }
+    }
+
     /// Pixels per font unit.
     pub fn scale(&self, units_per_em: f64) -> f64 {
         self.size_px_per_em / units_per_em

@@ -252,18 +252,15 @@ pub fn keeps_axes(to_image: &DMat3) -> bool {
 /// corner where they are not finite, answers false.
 pub fn steps_lean_apart(to_image: &DMat3, view: &Rect) -> bool {
     let to_local = to_image.inverse();
-    let range = |component: &dyn Fn(DVec2) -> f64| {
-        view.corners()
+    let extent = |values: [f64; 4]| {
+        values
             .iter()
-            .map(|&s| component(s))
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)))
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| {
+                (lo.min(v), hi.max(v))
+            })
     };
-    let times = |(a, b): (f64, f64), (c, d): (f64, f64)| {
-        let products = [a * c, a * d, b * c, b * d];
-        products
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| (lo.min(v), hi.max(v)))
-    };
+    let range = |component: &dyn Fn(DVec2) -> f64| extent(view.corners().map(component));
+    let times = |(a, b): (f64, f64), (c, d): (f64, f64)| extent([a * c, a * d, b * c, b * d]);
     // w² times the step along image axis `axis`: column·w − (local·w)·column.z.
     let step = |axis: usize, coordinate: usize| {
         let column = to_local.col(axis);
@@ -307,12 +304,21 @@ mod tests {
             min: DVec2::splat(-1.0),
             max: DVec2::new(801.0, 601.0),
         };
-        let at = |linear: glam::DMat2| DMat3::from_cols(linear.x_axis.extend(0.0), linear.y_axis.extend(0.0), DVec3::new(400.0, 300.0, 1.0));
+        let at = |linear: glam::DMat2| {
+            DMat3::from_cols(
+                linear.x_axis.extend(0.0),
+                linear.y_axis.extend(0.0),
+                DVec3::new(400.0, 300.0, 1.0),
+            )
+        };
         for degrees in [0.0, 0.01, 30.0, 45.0, 89.0, 135.0, 200.0] {
             let turn = glam::DMat2::from_angle(f64::to_radians(degrees)) * 0.02;
             assert!(steps_lean_apart(&at(turn), &view), "{degrees}°");
             let flipped = turn * glam::DMat2::from_cols(DVec2::X, DVec2::NEG_Y);
-            assert!(steps_lean_apart(&at(flipped), &view), "{degrees}°, mirrored");
+            assert!(
+                steps_lean_apart(&at(flipped), &view),
+                "{degrees}°, mirrored"
+            );
         }
         // Image x takes local (1, 0.2)·s and image y local (1, 3)·s back: both rise to
         // the right.
@@ -345,14 +351,23 @@ mod tests {
             let mut all_apart = true;
             for j in 0..=12 {
                 for i in 0..=16 {
-                    let s = view.min + (view.max - view.min) * DVec2::new(f64::from(i) / 16.0, f64::from(j) / 12.0);
+                    let s = view.min
+                        + (view.max - view.min)
+                            * DVec2::new(f64::from(i) / 16.0, f64::from(j) / 12.0);
                     let h = 1e-3;
-                    let jx = (project(&to_local, s + DVec2::new(h, 0.0)) - project(&to_local, s - DVec2::new(h, 0.0))) / (2.0 * h);
-                    let jy = (project(&to_local, s + DVec2::new(0.0, h)) - project(&to_local, s - DVec2::new(0.0, h))) / (2.0 * h);
+                    let jx = (project(&to_local, s + DVec2::new(h, 0.0))
+                        - project(&to_local, s - DVec2::new(h, 0.0)))
+                        / (2.0 * h);
+                    let jy = (project(&to_local, s + DVec2::new(0.0, h))
+                        - project(&to_local, s - DVec2::new(0.0, h)))
+                        / (2.0 * h);
                     all_apart &= jx.x * jx.y * jy.x * jy.y <= 1e-18;
                 }
             }
-            assert!(!answer || all_apart, "tilt {tilt}: answered true, but a pixel leans");
+            assert!(
+                !answer || all_apart,
+                "tilt {tilt}: answered true, but a pixel leans"
+            );
             if tilt <= 1e-5 {
                 assert!(answer, "tilt {tilt}: a turn with little tilt leans apart");
             }

@@ -103,10 +103,7 @@ impl Instances {
         margin: f64,
         mut key: impl FnMut(u32, &DMat3) -> K,
     ) -> Result<Vec<(K, Range<u32>)>, Error> {
-        let view = Rect {
-            min: DVec2::splat(-1.0 - margin),
-            max: DVec2::new(f64::from(camera.width), f64::from(camera.height)) + 1.0 + margin,
-        };
+        let view = camera.grown_view(1.0 + margin);
         let mut keyed = Vec::with_capacity(self.placed.len());
         for (index, &(pen, glyph, bounds)) in (0u32..).zip(&self.placed) {
             let to_image = camera.glyph_to_image(self.units_per_em, pen);

@@ -381,11 +381,16 @@ pub fn across_square(c: Bezier, f: &PixelFrame) -> f64 {
 /// there; A's roots at ±½ cut the stretch into parts on which c(A) is 0, A + ½ or 1.
 fn clamp_term(a: [f64; 3], b: [f64; 3]) -> f64 {
     let (t0, t1) = stretch(b, -0.5, 0.5);
-    let cut = |c: [f64; 3]| {
-        [blossom_value(c, t0, t0), blossom_value(c, t0, t1), blossom_value(c, t1, t1)]
-    };
-    let l = monomial(cut(a));
-    let pb = monomial([b[0].clamp(-0.5, 0.5), cut(b)[1], b[2].clamp(-0.5, 0.5)]);
+    let l = monomial([
+        blossom_value(a, t0, t0),
+        blossom_value(a, t0, t1),
+        blossom_value(a, t1, t1),
+    ]);
+    let pb = monomial([
+        b[0].clamp(-0.5, 0.5),
+        blossom_value(b, t0, t1),
+        b[2].clamp(-0.5, 0.5),
+    ]);
     // B′ = e + d·t.
     let (d, e) = (2.0 * pb[0], pb[1]);
     let mut cuts = vec![0.0, 1.0];
@@ -428,7 +433,10 @@ fn quadratic_roots(l: [f64; 3]) -> [Option<f64>; 2] {
     }
     let root = discriminant.sqrt();
     let q = -0.5 * (l[1] + if l[1] >= 0.0 { root } else { -root });
-    [(q != 0.0).then(|| l[2] / q), (l[0] != 0.0).then(|| q / l[0])]
+    [
+        (q != 0.0).then(|| l[2] / q),
+        (l[0] != 0.0).then(|| q / l[0]),
+    ]
 }
 
 /// The antiderivative from 0 of l(t)·(e + d·t), l a quadratic given by its monomials:
@@ -545,7 +553,10 @@ fn blossom_value(c: [f64; 3], a: f64, b: f64) -> f64 {
 /// The curve's blossom at (a, b): the point at t when a = b = t; the middle control
 /// point of the piece between a and b.
 fn blossom(c: Bezier, a: f64, b: f64) -> DVec2 {
-    DVec2::new(blossom_value(c.map(|p| p.x), a, b), blossom_value(c.map(|p| p.y), a, b))
+    DVec2::new(
+        blossom_value(c.map(|p| p.x), a, b),
+        blossom_value(c.map(|p| p.y), a, b),
+    )
 }
 
 /// The curve at t.
@@ -941,7 +952,9 @@ mod tests {
         // A small linear congruential generator: the same curves every run.
         let mut state = 0x2545_f491_4f6c_dd1d_u64;
         let mut next = move || {
-            state = state.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
             (state >> 11) as f64 / (1u64 << 53) as f64
         };
         let mut compared = 0;
@@ -949,7 +962,11 @@ mod tests {
         for step in 0..64 {
             let angle = f64::from(step) * 5.7 + 0.3;
             let stretch = 0.6 + 1.4 * next();
-            let m = rotation(angle) * glam::DMat2::from_cols(DVec2::new(stretch, 0.0), DVec2::new(0.3 * (next() - 0.5), 1.0 / stretch));
+            let m = rotation(angle)
+                * glam::DMat2::from_cols(
+                    DVec2::new(stretch, 0.0),
+                    DVec2::new(0.3 * (next() - 0.5), 1.0 / stretch),
+                );
             let to_local = m.inverse();
             let direction = if step % 2 == 0 { 1.0 } else { -1.0 };
             let Some(f) = PixelFrame::new(to_local.x_axis, to_local.y_axis, direction) else {
@@ -961,7 +978,11 @@ mod tests {
             for _ in 0..200 {
                 let size = [0.3, 2.0, 40.0][(next() * 3.0) as usize];
                 let start = DVec2::new(next() - 0.5, next() - 0.5) * 3.0;
-                let curve = [start, start + DVec2::new(next() - 0.5, next() - 0.5) * size, start + DVec2::new(next() - 0.5, next() - 0.5) * size];
+                let curve = [
+                    start,
+                    start + DVec2::new(next() - 0.5, next() - 0.5) * size,
+                    start + DVec2::new(next() - 0.5, next() - 0.5) * size,
+                ];
                 for piece in monotone_pieces(curve).into_iter().flatten() {
                     if zone(&piece, &f) != Zone::Across {
                         continue;
@@ -969,12 +990,18 @@ mod tests {
                     let beta = piece.map(|p| f.beta_of.dot(p));
                     swapped += usize::from((beta[1] - beta[0]) * (beta[2] - beta[1]) < 0.0);
                     let (a, b) = (across_square(piece, &f), across_term(piece, &f));
-                    assert!((a - b).abs() < 1e-9 * (1.0 + size), "{f:?} {piece:?}: {a} vs {b}");
+                    assert!(
+                        (a - b).abs() < 1e-9 * (1.0 + size),
+                        "{f:?} {piece:?}: {a} vs {b}"
+                    );
                     compared += 1;
                 }
             }
         }
-        assert!(compared > 5000 && swapped > 500, "{compared} compared, {swapped} swapped");
+        assert!(
+            compared > 5000 && swapped > 500,
+            "{compared} compared, {swapped} swapped"
+        );
     }
 
     /// Steps that lean the same way by a rounding's worth (a near-level step tilted
@@ -991,11 +1018,21 @@ mod tests {
             // Level at its start (a split point), steeper than jy at its end: α rises
             // past ½ and comes back.
             let start = DVec2::new(-1.5, offset - 0.4);
-            let piece = [start, start + DVec2::new(4.0, 0.0), start + DVec2::new(4.5, 8.0)];
+            let piece = [
+                start,
+                start + DVec2::new(4.0, 0.0),
+                start + DVec2::new(4.5, 8.0),
+            ];
             let beta = piece.map(|p| f.beta_of.dot(p));
             let alpha = piece.map(|p| f.alpha_of.dot(p));
-            assert!((beta[1] - beta[0]) * (beta[2] - beta[1]) < 0.0, "β turns by a hair");
-            assert!((alpha[1] - alpha[0]) * (alpha[2] - alpha[1]) < 0.0, "α turns");
+            assert!(
+                (beta[1] - beta[0]) * (beta[2] - beta[1]) < 0.0,
+                "β turns by a hair"
+            );
+            assert!(
+                (alpha[1] - alpha[0]) * (alpha[2] - alpha[1]) < 0.0,
+                "α turns"
+            );
             let (a, b) = (across_square(piece, &f), across_term(piece, &f));
             assert!((a - b).abs() < 1e-5, "offset {offset}: {a} vs {b}");
         }

@@ -498,10 +498,7 @@ impl Winding {
         let marked = &prepared.marked;
         // Pixel centres, and the helper lanes' beside the last column and row (their
         // derivatives are differences with them).
-        let view = Rect {
-            min: glam::DVec2::splat(-1.0),
-            max: glam::DVec2::new(f64::from(camera.width), f64::from(camera.height)) + 1.0,
-        };
+        let view = camera.grown_view(1.0);
         let groups = prepared
             .instances
             .update_grouped(gpu, camera, 0.0, |glyph, to_image| {
