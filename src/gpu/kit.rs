@@ -3,7 +3,7 @@
 //! `Frame` uniform and the `GlyphInstance` array of `common.wgsl`), one render pipeline
 //! builder, and the curves-per-pixel tally.
 
-use super::{CoverageTarget, GpuContext, msaa::STENCIL_FORMAT};
+use super::{context::GpuContext, msaa::STENCIL_FORMAT, target::CoverageTarget};
 use crate::Error;
 
 /// A binding of a layout built by [`layout`], at its position in the list.

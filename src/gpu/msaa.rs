@@ -1,7 +1,7 @@
 //! Intermediate attachments a method keeps beside the coverage target: a multisampled
 //! colour buffer (resolved into the target at the end of a pass) and a stencil buffer.
 
-use super::{CoverageTarget, GpuContext};
+use super::{context::GpuContext, target::CoverageTarget};
 
 /// Stencil format every method uses: lavapipe and every desktop GPU have it.
 pub const STENCIL_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Stencil8;

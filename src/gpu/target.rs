@@ -2,7 +2,7 @@
 
 use std::sync::{Arc, Mutex};
 
-use super::GpuContext;
+use super::context::GpuContext;
 use crate::Error;
 use crate::coverage::CoverageImage;
 

@@ -1,7 +1,7 @@
 //! Timestamp queries: a query set with the buffers that resolve it and bring it back to
 //! the CPU. The measured frame loop and the app's live pane timer both time with it.
 
-use super::GpuContext;
+use super::context::GpuContext;
 use crate::Error;
 
 /// Bytes of one resolved timestamp.
