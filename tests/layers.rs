@@ -161,6 +161,13 @@ fn used_paths(module: &[String], source: &str) -> BTreeSet<Vec<String>> {
                 for part in statement.split("crate::").skip(1) {
                     expand_tree(&["crate".to_owned()], part, &mut trees);
                 }
+                for (start, up) in path_starts(statement, &["super::", "self::"]) {
+                    expand_tree(
+                        &[up.trim_end_matches("::").to_owned()],
+                        &statement[start..],
+                        &mut trees,
+                    );
+                }
             }
         }
     }
@@ -168,6 +175,65 @@ fn used_paths(module: &[String], source: &str) -> BTreeSet<Vec<String>> {
         .iter()
         .filter_map(|path| absolute(module, path))
         .filter(|path| !path.is_empty())
+        .collect()
+}
+
+/// Where each path in `code` that begins with one of `starts` continues, with the start
+/// it began with. A path begins where no name or `::` stands just before it: `Self::`
+/// and the second `super::` of `super::super::x` begin none (the first one's path
+/// holds them).
+fn path_starts<'a>(code: &str, starts: &[&'a str]) -> Vec<(usize, &'a str)> {
+    let bytes = code.as_bytes();
+    let mut found = Vec::new();
+    for (at, _) in code.char_indices() {
+        let begins_path = at == 0
+            || !(bytes[at - 1].is_ascii_alphanumeric() || matches!(bytes[at - 1], b'_' | b':'));
+        if let Some(start) = starts
+            .iter()
+            .find(|s| begins_path && code[at..].starts_with(**s))
+        {
+            found.push((at + start.len(), *start));
+        }
+    }
+    found
+}
+
+/// The paths the code of `source` names from where it stands, without `crate::`,
+/// `self::` or `super::`: `use run::run_to` and `run::markdown(..)` in a `mod.rs` name
+/// its child `run`. Names from outside the crate (`std::fmt`) come out too; the caller
+/// keeps those that name a child module.
+fn relative_paths(source: &str) -> Vec<Vec<String>> {
+    let code = code_of(source);
+    let mut trees = Vec::new();
+    for statement in code.split(';') {
+        let statement = statement.trim();
+        let tree = statement
+            .strip_prefix("pub use ")
+            .or_else(|| statement.strip_prefix("pub(crate) use "))
+            .or_else(|| statement.strip_prefix("use "));
+        match tree {
+            Some(tree) => expand_tree(&[], tree, &mut trees),
+            None => {
+                let bytes = statement.as_bytes();
+                for (at, _) in statement.char_indices() {
+                    let begins_path = bytes[at].is_ascii_lowercase()
+                        && (at == 0
+                            || !(bytes[at - 1].is_ascii_alphanumeric()
+                                || matches!(bytes[at - 1], b'_' | b':')));
+                    let name = name_of(&statement[at..]);
+                    if begins_path && statement[at + name.len()..].starts_with("::") {
+                        expand_tree(&[], &statement[at..], &mut trees);
+                    }
+                }
+            }
+        }
+    }
+    trees
+        .into_iter()
+        .filter(|path| {
+            path.first()
+                .is_some_and(|p| !matches!(p.as_str(), "crate" | "self" | "super"))
+        })
         .collect()
 }
 
@@ -338,4 +404,249 @@ fn the_rules_catch_what_they_are_for() {
     assert!(check(&atlas, "use super::registry::{MethodInfo, Role};").is_empty());
     let registry = names(&["methods", "registry"]);
     assert!(check(&registry, "&crate::methods::winding::INFO").is_empty());
+}
+
+/// An import between two entries of one folder: a file of `from` uses `used`, which lies
+/// in `to`. A folder's entries are its files (`mod.rs` too) and its subfolders, each
+/// subfolder taken whole.
+#[derive(Debug, Clone)]
+struct FolderEdge {
+    from: String,
+    to: String,
+    file: String,
+    used: String,
+}
+
+/// The imports between entries of the same folder, for every folder below `src/`, as
+/// (folder, edge). `files` are (module path under `src/`, source); `is_entry(folder,
+/// name)` says whether `name` is a file or subfolder of `folder`, so that a path naming
+/// an item of the folder's `mod.rs` (`super::Thing`, `crate::bench::run_to`) is an
+/// import of `mod.rs`.
+fn folder_edges(
+    files: &[(Vec<String>, String)],
+    is_entry: impl Fn(&[String], &str) -> bool,
+) -> Vec<(Vec<String>, FolderEdge)> {
+    let mut edges = Vec::new();
+    for (path, source) in files {
+        let module: Vec<String> = match path.split_last() {
+            Some((last, parent)) if last == "mod" => parent.to_vec(),
+            _ => path.clone(),
+        };
+        // A `mod.rs` also names its children without a prefix (`pub use run::run_to`).
+        let children = relative_paths(source)
+            .into_iter()
+            .filter(|relative| {
+                path.last().is_some_and(|last| last == "mod") && is_entry(&module, &relative[0])
+            })
+            .map(|relative| [module.as_slice(), &relative].concat());
+        for used in used_paths(&module, source).into_iter().chain(children) {
+            // Every folder holding the file (the root aside: its modules are layers).
+            for depth in 1..path.len() {
+                let folder = &path[..depth];
+                if !used.starts_with(folder) {
+                    continue;
+                }
+                let mine = &path[depth];
+                let theirs = match used.get(depth) {
+                    Some(name) if is_entry(folder, name) => name.clone(),
+                    _ => "mod".to_owned(),
+                };
+                if *mine != theirs {
+                    edges.push((
+                        folder.to_vec(),
+                        FolderEdge {
+                            from: mine.clone(),
+                            to: theirs,
+                            file: path.join("/"),
+                            used: used.join("::"),
+                        },
+                    ));
+                }
+            }
+        }
+    }
+    edges
+}
+
+/// A loop among `edges` (one folder's), as the edges around it, if there is one: a
+/// depth-first walk that meets an entry still on its stack.
+fn a_loop(edges: &[FolderEdge]) -> Option<Vec<FolderEdge>> {
+    fn walk(
+        node: &str,
+        edges: &[FolderEdge],
+        stack: &mut Vec<FolderEdge>,
+        done: &mut BTreeSet<String>,
+    ) -> Option<Vec<FolderEdge>> {
+        for edge in edges.iter().filter(|e| e.from == node) {
+            if let Some(start) = stack.iter().position(|e| e.from == edge.to) {
+                let mut cycle = stack[start..].to_vec();
+                cycle.push(edge.clone());
+                return Some(cycle);
+            }
+            if done.contains(&edge.to) {
+                continue;
+            }
+            stack.push(edge.clone());
+            if let Some(cycle) = walk(&edge.to, edges, stack, done) {
+                return Some(cycle);
+            }
+            stack.pop();
+        }
+        done.insert(node.to_owned());
+        None
+    }
+    let mut done = BTreeSet::new();
+    let nodes: BTreeSet<&str> = edges.iter().map(|e| e.from.as_str()).collect();
+    nodes
+        .into_iter()
+        .find_map(|node| walk(node, edges, &mut Vec::new(), &mut done))
+}
+
+/// Each folder's loops, one line each: `bench: run → motion → run (…)`. The loops are
+/// found one at a time: each found loop's last edge is set aside so the next walk can
+/// find another.
+fn folder_loops(edges: Vec<(Vec<String>, FolderEdge)>) -> Vec<String> {
+    let mut folders: std::collections::BTreeMap<Vec<String>, Vec<FolderEdge>> = Default::default();
+    for (folder, edge) in edges {
+        folders.entry(folder).or_default().push(edge);
+    }
+    let mut found = Vec::new();
+    for (folder, mut edges) in folders {
+        while let Some(cycle) = a_loop(&edges) {
+            let names: Vec<&str> = cycle
+                .iter()
+                .map(|e| e.from.as_str())
+                .chain(cycle.last().map(|e| e.to.as_str()))
+                .collect();
+            let evidence: Vec<String> = cycle
+                .iter()
+                .map(|e| format!("src/{}.rs uses crate::{}", e.file, e.used))
+                .collect();
+            found.push(format!(
+                "{}/: {} ({})",
+                folder.join("/"),
+                names.join(" → "),
+                evidence.join("; ")
+            ));
+            let last = cycle.last().unwrap();
+            edges.retain(|e| !(e.from == last.from && e.to == last.to));
+        }
+    }
+    found
+}
+
+/// No two files of one folder import each other, directly or around a loop, so each
+/// can be read and changed alone: a folder's files point one way, with `mod.rs` (which
+/// declares the others) one of them.
+#[test]
+fn no_files_of_one_folder_import_each_other_around_a_loop() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut paths = Vec::new();
+    rust_files(&src, &mut paths);
+    let files: Vec<(Vec<String>, String)> = paths
+        .iter()
+        .map(|file| {
+            (
+                module_path(file.strip_prefix(&src).unwrap()),
+                std::fs::read_to_string(file).unwrap(),
+            )
+        })
+        .collect();
+    let is_entry = |folder: &[String], name: &str| {
+        let dir = folder.iter().fold(src.clone(), |dir, part| dir.join(part));
+        dir.join(format!("{name}.rs")).is_file() || dir.join(name).is_dir()
+    };
+    let loops = folder_loops(folder_edges(&files, is_entry));
+    assert!(
+        loops.is_empty(),
+        "files of one folder that import each other around a loop:\n{}",
+        loops.join("\n")
+    );
+}
+
+/// The folder check sees a loop through `mod.rs` (a child using an item of `mod.rs`
+/// that imports the child back), a loop of three siblings, and one between two
+/// subfolders seen from their parent; and it passes a folder whose files point one way.
+#[test]
+fn the_folder_check_catches_what_it_is_for() {
+    let file = |path: &str, source: &str| {
+        (
+            path.split('/').map(str::to_owned).collect::<Vec<_>>(),
+            source.to_owned(),
+        )
+    };
+    let entries = [
+        "bench/run",
+        "bench/report",
+        "bench/scaling",
+        "bench/result",
+        "methods/winding",
+        "methods/registry",
+        "methods/info",
+        "methods/winding/area",
+    ];
+    let is_entry = |folder: &[String], name: &str| {
+        entries.contains(&format!("{}/{name}", folder.join("/")).as_str())
+    };
+    let looped = [
+        file("bench/mod", "pub use run::run_to;"),
+        file("bench/run", "use super::Options;"),
+        file("bench/report", "fn f() { std::fmt::Write; }"),
+        file("bench/report", "use super::scaling::markdown;"),
+        file("bench/scaling", "use crate::bench::result::Outcome;"),
+        file("bench/result", "fn f() { super::report::sig(1.0); }"),
+        file(
+            "methods/registry",
+            "static M: &Info = &super::winding::INFO;",
+        ),
+        file(
+            "methods/winding/area",
+            "use crate::methods::registry::Role;",
+        ),
+    ];
+    let loops = folder_loops(folder_edges(&looped, is_entry));
+    assert_eq!(loops.len(), 3, "{loops:#?}");
+    assert!(
+        loops
+            .iter()
+            .any(|l| l.starts_with("bench/: mod → run → mod")),
+        "{loops:#?}"
+    );
+    assert!(
+        loops
+            .iter()
+            .any(|l| l.contains("report → scaling → result → report")),
+        "{loops:#?}"
+    );
+    assert!(
+        loops
+            .iter()
+            .any(|l| l.starts_with("methods/: registry → winding → registry")),
+        "{loops:#?}"
+    );
+    let one_way = [
+        file("bench/mod", "pub use run::run_to;"),
+        file("bench/run", "use super::{report, result::Outcome};"),
+        file(
+            "bench/report",
+            "use super::{scaling::markdown, result::Outcome};",
+        ),
+        file("bench/scaling", "use crate::bench::result::Outcome;"),
+        file(
+            "methods/registry",
+            "static M: &Info = &super::winding::INFO;",
+        ),
+        file(
+            "methods/winding/area",
+            "use crate::methods::info::Role;\nuse super::super::info;",
+        ),
+        file(
+            "methods/winding/mod",
+            "use self::area::ramp;\nuse super::info::Info;",
+        ),
+    ];
+    assert_eq!(
+        folder_loops(folder_edges(&one_way, is_entry)),
+        Vec::<String>::new()
+    );
 }
