@@ -559,7 +559,7 @@ impl Explorer {
         };
         lines.push(format!(
             "{time} · {} · prepare {:.0} ms",
-            bytes(pane.gpu_bytes),
+            kib_or_mib(pane.gpu_bytes),
             pane.prepare_ms
         ));
         match self.pane_error(index) {
@@ -666,7 +666,7 @@ impl Explorer {
 }
 
 /// A human size: B, KiB or MiB.
-fn bytes(n: u64) -> String {
+fn kib_or_mib(n: u64) -> String {
     match n {
         0..1024 => format!("{n} B"),
         1024..1_048_576 => format!("{:.1} KiB", n as f64 / 1024.0),

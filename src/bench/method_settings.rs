@@ -1,8 +1,37 @@
 //! The settings each method is measured at: a curated sweep across its speed/accuracy
 //! trade, listed in its registry row (see each method's page in docs/methods/ for what
 //! the parameters do), a handful of them marked for `--quick`.
+//!
+//! The bench finds methods through the registry: every benched row, the baseline by its
+//! role. Two of its choices are one method's business and are named here alone: the
+//! baseline's glyph cache, pinned at each scene's own size (what "after caching"
+//! means: `atlas`' `cache_px_per_em`), and [`CONTRAST`], the method `--quick` keeps
+//! after caching and the report sets against the peers.
 
 use crate::methods::registry::MethodInfo;
+use crate::methods::{self, atlas, winding};
+
+/// glyphscope's own method that the bench sets beside the baseline and the peers:
+/// `--quick` keeps its default after caching, and the report's peers table compares
+/// each peer with it.
+pub const CONTRAST: &MethodInfo = &winding::INFO;
+
+/// The baseline's parameter that pins the size its glyphs are cached at.
+const BASELINE_CACHE_KEY: &str = "cache_px_per_em";
+
+/// The size the baseline caches glyphs at, by itself, for a first frame at
+/// `px_per_em`: the bench pins it there for both views of a scene.
+pub fn baseline_cache_size(px_per_em: f64) -> f64 {
+    atlas::auto_cache_size(px_per_em)
+}
+
+/// The largest size the baseline caches at by itself; beyond it, it magnifies.
+pub const BASELINE_CACHE_MAX_PX_PER_EM: f64 = atlas::AUTO_CACHE_MAX_PX_PER_EM;
+
+/// The parameter that pins the baseline's cache at `px_per_em`.
+pub fn baseline_cache_param(px_per_em: f64) -> (String, String) {
+    (BASELINE_CACHE_KEY.into(), px_per_em.to_string())
+}
 
 /// The parameter sets `method` is measured at (all, or the quick ones), as `--param`
 /// lists; the default first.
@@ -20,6 +49,12 @@ pub fn owned(params: &[(&str, &str)]) -> Vec<(String, String)> {
         .iter()
         .map(|&(k, v)| (k.to_owned(), v.to_owned()))
         .collect()
+}
+
+/// Parameters as `k=v, k=v`, or `default` (the baseline's cache size, the same for
+/// every case of a scene, left out).
+pub fn settings_text(params: &[(String, String)]) -> String {
+    methods::settings_text(params.iter().filter(|(k, _)| k != BASELINE_CACHE_KEY))
 }
 
 #[cfg(test)]
@@ -46,5 +81,14 @@ mod tests {
                 create(&params).unwrap();
             }
         }
+    }
+
+    /// The contrast is one of glyphscope's drawing methods, and the pinned cache is a
+    /// setting the baseline accepts.
+    #[test]
+    fn contrast_and_cache_are_what_they_say() {
+        assert_eq!(CONTRAST.role, registry::Role::Method);
+        let create = registry::baseline().create.expect("the baseline draws");
+        create(&[baseline_cache_param(baseline_cache_size(16.0))]).unwrap();
     }
 }

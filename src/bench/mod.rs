@@ -1,18 +1,38 @@
 //! `glyphscope bench`: every method at a sweep of its settings on the standard scenes,
 //! GPU time against error, side by side with the atlas baseline, in one command.
 //!
-//! - [`scenes`]: the standard scenes, each a `render` command line;
-//! - [`sweep`]: the settings each method is measured at;
-//! - [`run`]: measuring, through the same function as `render --stats`;
-//! - [`scaling`]: how each method's cost grows with the glyphs and with the size;
-//! - [`winding_cost`]: where `winding`'s default spends a frame, stage by stage;
-//! - [`motion`]: every method's temporal error as text drifts and turns (page, tiny);
-//! - [`report`] and [`plot`]: Markdown, CSV, JSON and SVG plots.
+//! Its files import one way, from the leaves up; none imports a file above it:
+//!
+//! - leaves: [`scenes`] (the standard scenes, each a `render` command line),
+//!   [`method_settings`] (the settings each method is measured at), [`effort`] (what
+//!   `--quick` changes), [`numbers`] (how reports write a figure), and [`result`]
+//!   (everything a run measured, as `bench.json` holds it; it reads
+//!   `method_settings`' way of naming a setting);
+//! - sections, each measuring and writing its own part of the report:
+//!   [`scaling`] (how each method's cost grows with the glyphs and with the size),
+//!   [`winding_cost`] (where `winding`'s default spends a frame, stage by stage),
+//!   [`motion`] (every method's temporal error as text drifts and turns: page, tiny);
+//! - [`run`]: measuring the standard scenes through the same function as
+//!   `render --stats`, and each section where it applies;
+//! - [`report`] (the Markdown report, its scene tables and each section's part in
+//!   turn, CSV and JSON) and [`plot`] (SVG plots);
+//! - this file: [`run_to`], the run and every file it writes.
+//!
+//! Methods come from the registry: every benched row, the baseline by its role. The
+//! bench names a method only for that method's own business, each in one place: the
+//! baseline's glyph cache and [`method_settings::CONTRAST`] (`method_settings`), and
+//! winding's stage breakdown ([`winding_cost::METHOD`], its record in `result`). In
+//! its outputs, the report's prose and column heads call the baseline `atlas`, and the
+//! outline-points plot is named for `tessellation`, the one method that reports
+//! outline points.
 
+pub mod effort;
 pub mod method_settings;
 pub mod motion;
+pub mod numbers;
 pub mod plot;
 pub mod report;
+pub mod result;
 pub mod run;
 pub mod scaling;
 pub mod scenes;
@@ -21,7 +41,9 @@ pub mod winding_cost;
 use std::path::Path;
 
 use crate::Error;
-pub use run::{BenchOptions, BenchResult, run};
+pub use result::BenchResult;
+use result::Series;
+pub use run::{BenchOptions, run};
 
 /// The files every bench run writes into its output folder.
 pub const REPORTS: &[&str] = &["bench.md", "bench.json"];
@@ -58,7 +80,7 @@ pub fn run_to(options: &BenchOptions, out: &Path) -> Result<BenchResult, Error> 
     }
     if !result.scaling.is_empty() {
         write("scaling.csv", scaling::csv(&result.scaling))?;
-        for series in scaling::Series::ALL {
+        for series in Series::ALL {
             let points = scaling::series_points(&result.scaling, series);
             if !points.is_empty() {
                 let file = format!("scaling-{}.svg", series.name());

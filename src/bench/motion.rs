@@ -6,13 +6,11 @@
 
 use std::fmt::Write as _;
 
-use serde::Serialize;
-
-use super::run::BenchResult;
+use super::method_settings;
+use super::result::{BenchResult, MotionCase};
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::GpuContext;
-use crate::metrics::TemporalSummary;
 use crate::motion::MotionPath;
 use crate::motion::run::{self, MethodSpec};
 use crate::scene::Scene;
@@ -28,29 +26,8 @@ pub const PATHS: [(&str, &str); 3] = [
     ("rotate", crate::motion::TURN),
 ];
 
-/// Frames per path: 16 (8 with `--quick`).
-pub const FRAMES: usize = 16;
-pub const QUICK_FRAMES: usize = 8;
-
-/// One method through one path of one scene.
-#[derive(Clone, Debug, Serialize)]
-pub struct MotionCase {
-    pub scene: String,
-    /// The path's name in [`PATHS`], and the path.
-    pub path_name: String,
-    pub path: String,
-    pub frames: usize,
-    pub method: MethodSpec,
-    /// Mean over frames of each frame's MAE against the reference, 1/255, and the
-    /// largest pixel error of any frame.
-    pub still_mae_255: f64,
-    pub still_max: f64,
-    pub temporal: TemporalSummary,
-    /// A peer's documented limit met on this path.
-    pub refused: Option<String>,
-}
-
-/// Draws `methods` through every path of [`PATHS`] from `camera`.
+/// Draws `methods` through every path of [`PATHS`] from `camera`, `frames` frames each
+/// (the run's `BenchEffort::motion_frames`).
 pub fn measure(
     gpu: &GpuContext,
     scene_name: &str,
@@ -141,7 +118,7 @@ pub fn markdown(result: &BenchResult, md: &mut String) {
                 md,
                 "| {} | {} | {still} | {} |",
                 case.method.name,
-                super::run::settings_text(&case.method.params),
+                method_settings::settings_text(&case.method.params),
                 columns.join(" | ")
             );
         }

@@ -8,8 +8,8 @@ use std::path::Path;
 use plotters::coord::ranged1d::ValueFormatter;
 use plotters::prelude::*;
 
-use super::run::{BenchResult, Measurement, SceneCamera};
-use super::scaling::ScalingPoint;
+use super::result::{BenchResult, Measurement, ScalingPoint, SceneCamera, Series};
+use super::{scaling, scenes};
 use crate::Error;
 use crate::methods::registry;
 use crate::metrics::pareto_front;
@@ -254,11 +254,11 @@ pub fn scaling(points: &[&ScalingPoint], adapter: &str, path: &Path) -> Result<(
     root.fill(&WHITE).map_err(plot_error)?;
     let panels = root.split_evenly((1, 2));
     let x_desc: String = match series {
-        super::scaling::Series::GlyphCount => format!(
+        Series::GlyphCount => format!(
             "glyphs drawn (the page's text, {} px/em)",
-            super::scenes::PAGE_PX_PER_EM
+            scenes::PAGE_PX_PER_EM
         ),
-        super::scaling::Series::PxPerEm => format!("px/em (\"{}\")", super::scaling::WORD),
+        Series::PxPerEm => format!("px/em (\"{}\")", scaling::WORD),
     };
     let time = |p: &ScalingPoint, m: &str| p.cost(m).and_then(|c| c.frame_ms);
     let memory = |p: &ScalingPoint, m: &str| p.cost(m).map(|c| c.gpu_bytes as f64 / 1024.0);

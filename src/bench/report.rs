@@ -3,7 +3,10 @@
 
 use std::fmt::Write;
 
-use super::run::{BenchResult, Measurement, Refusal, SceneCamera, SceneInfo, settings_text};
+use super::method_settings::{CONTRAST, settings_text};
+use super::numbers::{kb_or_mb, sig};
+use super::result::{BenchResult, Measurement, Refusal, SceneCamera, SceneInfo};
+use super::{motion, scaling, scenes, winding_cost};
 use crate::methods::registry;
 
 /// Mean-error levels (1/255) at which the report names the fastest method.
@@ -15,9 +18,7 @@ pub fn ratio_to_baseline(result: &BenchResult, case: &Measurement) -> Option<f64
     if case.is_reference() {
         return None;
     }
-    let baseline = result.measurements.iter().find(|c| {
-        c.scene == case.scene && c.scene_camera == case.scene_camera && c.is_baseline()
-    })?;
+    let baseline = result.baseline_in(&case.scene, case.scene_camera)?;
     Some(case.frame_ms? / baseline.frame_ms?)
 }
 
@@ -63,9 +64,9 @@ pub fn markdown(result: &BenchResult) -> String {
     } else {
         scene_sections(result, clock, &mut md);
     }
-    super::motion::markdown(result, &mut md);
-    super::winding_cost::markdown(result, &mut md);
-    super::scaling::markdown(&result.scaling, result.scaling_timing, &mut md);
+    motion::markdown(result, &mut md);
+    winding_cost::markdown(result, &mut md);
+    scaling::markdown(&result.scaling, result.scaling_timing, &mut md);
     md
 }
 
@@ -111,8 +112,8 @@ fn scene_sections(result: &BenchResult, clock: &str, md: &mut String) {
             SceneCamera::Own => String::new(),
             SceneCamera::Moved => format!(
                 ", after caching: zoomed {}×, turned {}°",
-                super::scenes::MOVED_ZOOM,
-                super::scenes::MOVED_ROTATION_DEG
+                scenes::MOVED_ZOOM,
+                scenes::MOVED_ROTATION_DEG
             ),
         };
         let _ = writeln!(md, "## {}{view}\n", info.name);
@@ -148,7 +149,7 @@ fn scene_sections(result: &BenchResult, clock: &str, md: &mut String) {
                 ratio_to_baseline(result, case).map_or("—".into(), |r| format!("{r:.2}")),
                 case.cpu_render_ms
                     .map_or_else(|| sig(case.cpu_prepare_ms), sig),
-                bytes(case.gpu_bytes),
+                kb_or_mb(case.gpu_bytes),
                 case.curves_per_pixel.map_or("—".into(), |c| format!(
                     "{:.1} ({})",
                     c.mean,
@@ -274,7 +275,7 @@ fn peers_summary(result: &BenchResult, md: &mut String) {
         .filter(|m| m.is_peer())
         .map(|m| m.name)
         .collect();
-    let ours = crate::methods::winding::INFO.name;
+    let ours = CONTRAST.name;
     if !result
         .measurements
         .iter()
@@ -285,10 +286,11 @@ fn peers_summary(result: &BenchResult, md: &mut String) {
     }
     let _ = write!(
         md,
-        "## Winding against the peers\n\nEach at its default: × atlas (GPU + CPU per frame \
+        "## {} against the peers\n\nEach at its default: × atlas (GPU + CPU per frame \
          over the atlas's, this run) · MAE /255 · edge MAE /255 · max · pixels > 0.5, or \
          why the peer cannot draw the view. The peers draw into 8-bit textures: up to \
-         1/510 per edge pixel is their floor.\n\n| scene | view | {ours} |"
+         1/510 per edge pixel is their floor.\n\n| scene | view | {ours} |",
+        capitalized(ours)
     );
     for peer in &peers {
         let _ = write!(md, " {peer} |");
@@ -403,27 +405,6 @@ pub fn csv(result: &BenchResult) -> String {
 
 pub fn json(result: &BenchResult) -> String {
     serde_json::to_string_pretty(result).expect("bench results serialize") + "\n"
-}
-
-/// Three significant digits (at least one decimal below 100).
-pub(super) fn sig(v: f64) -> String {
-    if v >= 100.0 {
-        format!("{v:.0}")
-    } else if v >= 10.0 {
-        format!("{v:.1}")
-    } else if v >= 1.0 {
-        format!("{v:.2}")
-    } else {
-        format!("{v:.3}")
-    }
-}
-
-pub(super) fn bytes(b: u64) -> String {
-    match b {
-        0 => "—".into(),
-        b if b >= 1 << 20 => format!("{:.1} MB", b as f64 / f64::from(1 << 20)),
-        b => format!("{:.0} kB", b as f64 / 1024.0),
-    }
 }
 
 fn capitalized(s: &str) -> String {

@@ -3,57 +3,26 @@
 //! shared by every measurement.
 
 use indicatif::{ProgressBar, ProgressStyle};
-use serde::Serialize;
 
-use super::method_settings;
+use super::effort::BenchEffort;
+use super::method_settings::{self, CONTRAST};
 use super::motion;
-use super::scaling::{self, ScalingPoint, Series};
+use super::result::{BenchResult, Measurement, Refusal, Rounds, SceneCamera, SceneInfo, Series};
+use super::scaling;
 use super::scenes::{self, BenchScene};
-use super::winding_cost::{self, WindingCost};
+use super::winding_cost;
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::GpuContext;
 use crate::measure::{self, FrameTiming, Measured};
 use crate::methods::registry::{self, MethodInfo};
-use crate::methods::{self, atlas, winding};
-use crate::metrics::{self, ErrorStats};
+use crate::metrics;
 use crate::motion::run::MethodSpec;
 use crate::scene::Scene;
 
-/// How each measurement is timed: in `rounds` that interleave a view's measurements,
-/// each round preparing the method anew and timing `per_round` frames after its warm-up. On a
-/// shared machine load comes and goes; interleaved, it falls on every method alike
-/// rather than on whichever ran at the time, and the median of the rounds' medians
-/// drops a round that a burst of load spoiled.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-pub struct Rounds {
-    pub rounds: usize,
-    pub per_round: FrameTiming,
-}
-
-/// The full run: 3 rounds of 7 frames (21 in all, as `render --stats` times).
-pub const FULL_ROUNDS: Rounds = Rounds {
-    rounds: 3,
-    per_round: FrameTiming {
-        warmup: 3,
-        frames: 7,
-    },
-};
-
-/// `--quick`: three rounds of three frames each after the full run's warm-up. On
-/// lavapipe the first frames after a method is prepared run slow on the small scenes
-/// (the atlas on `rotated`: 4.1–4.3 ms for the three frames after one warm-up frame,
-/// 2.5 ms after), and a median of three such frames measured the warm-up, not the
-/// method. One round measured whatever load the machine had while each case ran: three
-/// one-round runs of the same build put `winding` on `rotated` at 1.32×, 2.16× and
-/// 3.04× the atlas (a slow spell of a few seconds covering one case's frames).
-pub const QUICK_ROUNDS: Rounds = Rounds {
-    rounds: 3,
-    per_round: FrameTiming {
-        warmup: 3,
-        frames: 3,
-    },
-};
+/// Untimed frames before each round's timed ones, in a full run and with `--quick`
+/// alike (shaders compile lazily on the first frames).
+pub const WARMUP_FRAMES: usize = 3;
 
 /// What to measure.
 #[derive(Clone, Debug)]
@@ -64,101 +33,11 @@ pub struct BenchOptions {
     /// Method names (the benched methods of the registry, and the reference); empty
     /// for all.
     pub methods: Vec<String>,
-    /// Timed frames per case, over all rounds, overriding the default (21, or 3 with
-    /// `quick`; for the scaling series, 5, or 2 with `quick`).
+    /// Timed frames per case, over all rounds, overriding [`BenchEffort`]'s (21, or 9
+    /// with `quick`; for the scaling series, 5, or 2 with `quick`).
     pub frames: Option<usize>,
-    /// Points per scaling series, overriding the default (11, or 3 with `quick`).
+    /// Points per scaling series, overriding [`BenchEffort`]'s (11, or 3 with `quick`).
     pub scaling_points: Option<usize>,
-}
-
-/// Which camera a scene is measured through (its view: the scene seen through it).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum SceneCamera {
-    /// The scene's own camera; the atlas is cached at this size.
-    Own,
-    /// After caching: zoomed 2.5× and turned 30°; the atlas keeps the cache made for
-    /// the scene's own size.
-    Moved,
-}
-
-impl SceneCamera {
-    /// As the report's tables name it.
-    pub fn name(self) -> &'static str {
-        match self {
-            SceneCamera::Own => "own",
-            SceneCamera::Moved => "moved",
-        }
-    }
-}
-
-/// One scene through one of its cameras.
-#[derive(Clone, Debug, Serialize)]
-pub struct SceneInfo {
-    pub name: String,
-    #[serde(rename = "view")]
-    pub scene_camera: SceneCamera,
-    pub about: String,
-    pub width: u32,
-    pub height: u32,
-    pub size_px_per_em: f64,
-    pub instances: usize,
-    pub distinct_glyphs: usize,
-    /// The size the atlas caches glyphs at for this scene (both views).
-    pub atlas_cache_px_per_em: f64,
-    /// The `render` arguments of the view (without --method and --param).
-    pub render_args: Vec<String>,
-}
-
-/// One method at one setting in one view of one scene.
-#[derive(Clone, Debug, Serialize)]
-pub struct Measurement {
-    pub scene: String,
-    #[serde(rename = "view")]
-    pub scene_camera: SceneCamera,
-    pub method: String,
-    pub params: Vec<(String, String)>,
-    /// Median GPU time of a frame (the reference: its CPU time), ms.
-    pub gpu_ms: Option<f64>,
-    /// Fastest and slowest timed frame, ms.
-    pub gpu_ms_range: Option<(f64, f64)>,
-    /// How the frames were timed (None for the reference).
-    pub gpu_clock: Option<String>,
-    /// The CPU's work of recording each frame (culling, meshing, instance writes), ms.
-    pub cpu_frame_ms: Option<f64>,
-    /// What one frame costs in all, GPU + CPU per frame (the reference: its
-    /// rasterization), ms: what cases are ranked and divided by.
-    pub frame_ms: Option<f64>,
-    /// The method's `prepare`, ms (the reference: 0).
-    pub cpu_prepare_ms: f64,
-    /// The reference's rasterization, ms.
-    pub cpu_render_ms: Option<f64>,
-    /// Meshes built on the CPU (tessellation), ms, whenever they were built.
-    pub mesh_build_ms: Option<f64>,
-    pub gpu_bytes: u64,
-    pub curves_per_pixel: Option<methods::CurveCost>,
-    /// Outline points the meshes are built on (tessellation).
-    pub mesh_points: Option<usize>,
-    /// A peer's own text layout against glyphscope's shaping (glyphon).
-    pub layout_offset: Option<methods::LayoutOffset>,
-    pub error: ErrorStats,
-}
-
-impl Measurement {
-    /// `k=v, k=v`, or `default`.
-    pub fn settings(&self) -> String {
-        settings_text(&self.params)
-    }
-
-    /// Whether this is the baseline every time is divided by.
-    pub fn is_baseline(&self) -> bool {
-        self.method == registry::baseline().name && self.settings() == "default"
-    }
-
-    /// Whether this is the reference's own row (its CPU time, no GPU time).
-    pub fn is_reference(&self) -> bool {
-        self.method == registry::REFERENCE.name
-    }
 }
 
 /// One view of a scene, ready to measure methods in: its reference drawn once.
@@ -211,47 +90,6 @@ impl ViewUnderTest<'_> {
     }
 }
 
-/// Parameters as `k=v, k=v`, or `default` (the atlas's cache size, the same for every
-/// case of a scene, left out).
-pub fn settings_text(params: &[(String, String)]) -> String {
-    methods::settings_text(params.iter().filter(|(k, _)| k != "cache_px_per_em"))
-}
-
-/// A view of a scene a peer refused to draw, and why (its documented limit).
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Refusal {
-    pub scene: String,
-    #[serde(rename = "view")]
-    pub scene_camera: SceneCamera,
-    pub method: String,
-    pub params: Vec<(String, String)>,
-    pub reason: String,
-}
-
-/// Everything one run measured.
-#[derive(Clone, Debug, Serialize)]
-pub struct BenchResult {
-    pub adapter: String,
-    /// How GPU time was measured (timestamp queries, or the CPU clock).
-    pub gpu_clock: Option<String>,
-    pub quick: bool,
-    pub timing: Rounds,
-    pub scenes: Vec<SceneInfo>,
-    #[serde(rename = "cases")]
-    pub measurements: Vec<Measurement>,
-    /// What a peer could not draw, with its reason: shown as "n/a — reason".
-    pub refusals: Vec<Refusal>,
-    /// How each method is timed at each point of the scaling series.
-    pub scaling_timing: FrameTiming,
-    /// The scaling series' points, series after series.
-    pub scaling: Vec<ScalingPoint>,
-    /// Where `winding`'s time goes, per scene and view, where `winding` was measured.
-    pub winding_costs: Vec<WindingCost>,
-    /// Each method at its default through the camera paths of [`motion::PATHS`], on
-    /// the scenes of [`motion::SCENES`] that were run.
-    pub motion: Vec<motion::MotionCase>,
-}
-
 /// `names` in order, each once: a name given twice is measured once.
 fn distinct<T: PartialEq>(names: &[T]) -> Vec<&T> {
     let mut once: Vec<&T> = Vec::with_capacity(names.len());
@@ -284,7 +122,7 @@ impl Plan {
 }
 
 /// Checks the options, naming what is unknown.
-fn check(options: &BenchOptions) -> Result<Plan, Error> {
+fn check(options: &BenchOptions, effort: &BenchEffort) -> Result<Plan, Error> {
     let all_names = || {
         scenes::SCENE_NAMES
             .iter()
@@ -333,8 +171,7 @@ fn check(options: &BenchOptions) -> Result<Plan, Error> {
         return Err(Error::Input("--frames must be at least 1".into()));
     }
     let scaling_points = match options.scaling_points {
-        None if options.quick => scaling::QUICK_POINTS,
-        None => scaling::FULL_POINTS,
+        None => effort.scaling_points,
         Some(n) if (2..=scaling::MAX_POINTS).contains(&n) => n,
         Some(n) => {
             return Err(Error::Input(format!(
@@ -364,7 +201,7 @@ fn check(options: &BenchOptions) -> Result<Plan, Error> {
 
 /// The settings measured in `view`: every setting in the scene's own view; after
 /// caching, the atlas's settings and each other method's default (how they fare under
-/// the same zoom and turn) — with `quick`, only `winding`'s, the contrast.
+/// the same zoom and turn) — with `quick`, only the peers' and [`CONTRAST`]'s.
 fn settings_for(
     method: &MethodInfo,
     view: SceneCamera,
@@ -377,7 +214,7 @@ fn settings_for(
     let is_baseline = method.role == registry::Role::Baseline;
     let mut all = method_settings::settings(method, quick);
     if view == SceneCamera::Moved && !is_baseline {
-        let kept = if quick && method.name != QUICK_MOVED_CONTRAST && !method.is_peer() {
+        let kept = if quick && method.name != CONTRAST.name && !method.is_peer() {
             0
         } else {
             1
@@ -386,44 +223,30 @@ fn settings_for(
     }
     if is_baseline {
         for params in &mut all {
-            params.push(("cache_px_per_em".into(), cache_px_per_em.to_string()));
+            params.push(method_settings::baseline_cache_param(cache_px_per_em));
         }
     }
     all
 }
 
-/// In the view after caching, `--quick` keeps one method's default beside the atlas and
-/// the peers: the contrast.
-const QUICK_MOVED_CONTRAST: &str = winding::NAME;
-
 /// Runs the bench, showing progress on stderr when it is a terminal.
 pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
-    let plan = check(options)?;
+    let effort = BenchEffort::of(options.quick);
+    let plan = check(options, &effort)?;
     let (chosen, methods) = (&plan.scenes, &plan.methods);
-    let base = if options.quick {
-        QUICK_ROUNDS
-    } else {
-        FULL_ROUNDS
-    };
-    let scaling_base = if options.quick {
-        scaling::QUICK_TIMING
-    } else {
-        scaling::FULL_TIMING
-    };
     let scaling_timing = FrameTiming {
-        frames: options.frames.unwrap_or(scaling_base.frames),
-        ..scaling_base
+        warmup: scaling::WARMUP_FRAMES,
+        frames: options.frames.unwrap_or(effort.scaling_frames),
     };
     let scaling_methods = plan.scaling_methods();
-    let timing = match options.frames {
-        Some(frames) => Rounds {
-            per_round: FrameTiming {
-                frames: frames.div_ceil(base.rounds),
-                ..base.per_round
-            },
-            ..base
+    let timing = Rounds {
+        rounds: effort.rounds,
+        per_round: FrameTiming {
+            warmup: WARMUP_FRAMES,
+            frames: options.frames.map_or(effort.frames_per_round, |frames| {
+                frames.div_ceil(effort.rounds)
+            }),
         },
-        None => base,
     };
     let gpu = GpuContext::new()?;
     let per_view = |view| -> usize {
@@ -455,7 +278,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
     };
     for bench_scene in chosen {
         let (_, own_camera) = bench_scene.args.build()?;
-        let cache = atlas::auto_cache_size(own_camera.size_px_per_em);
+        let cache = method_settings::baseline_cache_size(own_camera.size_px_per_em);
         for view in [SceneCamera::Own, SceneCamera::Moved] {
             let args = match view {
                 SceneCamera::Own => bench_scene.args.clone(),
@@ -531,10 +354,11 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
                 }
                 rounds.push(round);
             }
-            if methods.iter().any(|m| m.name == winding::NAME) {
+            if methods.iter().any(|m| m.name == winding_cost::METHOD.name) {
                 progress.set_message(format!(
-                    "{} ({view:?}): where winding's time goes",
-                    bench_scene.name
+                    "{} ({view:?}): where {}'s time goes",
+                    bench_scene.name,
+                    winding_cost::METHOD.name
                 ));
                 let view_name = (bench_scene.name, view);
                 result.winding_costs.push(winding_cost::measure(
@@ -555,17 +379,13 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
                         params: settings_for(m, view, options.quick, cache).swap_remove(0),
                     })
                     .collect();
-                let frames = match options.quick {
-                    true => motion::QUICK_FRAMES,
-                    false => motion::FRAMES,
-                };
                 result.motion.extend(motion::measure(
                     &gpu,
                     bench_scene.name,
                     &here.scene,
                     &here.camera,
                     &defaults,
-                    frames,
+                    effort.motion_frames,
                 )?);
             }
             for case in combine_rounds(rounds) {
@@ -577,7 +397,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
         }
     }
     for &series in &plan.series {
-        let works = series.points(plan.scaling_points, options.quick);
+        let works = series.points(plan.scaling_points, &effort);
         let points = scaling::measure_series(
             &gpu,
             series,
@@ -636,12 +456,13 @@ fn combine_rounds(rounds: Vec<Vec<Measurement>>) -> Vec<Measurement> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::metrics::ErrorStats;
 
     fn timed(gpu_ms: f64, range: (f64, f64), cpu_prepare_ms: f64) -> Measurement {
         Measurement {
             scene: "page".into(),
             scene_camera: SceneCamera::Own,
-            method: crate::methods::winding::INFO.name.into(),
+            method: registry::baseline().name.into(),
             params: Vec::new(),
             gpu_ms: Some(gpu_ms),
             gpu_ms_range: Some(range),

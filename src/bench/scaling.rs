@@ -15,13 +15,15 @@ use std::fmt::Write;
 
 use glam::DVec2;
 use indicatif::ProgressBar;
-use serde::Serialize;
 
+use super::effort::BenchEffort;
+use super::method_settings;
+use super::numbers::{kb_or_mb, sig};
+use super::result::{MethodCost, ScalingPoint, Series};
 use super::scenes::{PAGE_PX_PER_EM, PAGE_TEXT};
 use crate::Error;
 use crate::gpu::GpuContext;
 use crate::measure::{self, FrameTiming};
-use crate::methods::atlas;
 use crate::methods::registry::{self, MethodInfo};
 use crate::metrics;
 use crate::view_args::ViewArgs;
@@ -35,25 +37,13 @@ pub const WORD: &str = "Glyphs";
 /// the word, and their pixels grow more slowly than the size squared.
 pub const MAX_FRAME_SIDE: u32 = 4096;
 
-/// Points per series in a full run: the px/em series then falls on the powers of two.
-pub const FULL_POINTS: usize = 11;
-/// Points per series with `--quick`.
-pub const QUICK_POINTS: usize = 3;
 /// The most points a series takes: more only repeats sizes that round alike.
 pub const MAX_POINTS: usize = 64;
 
-/// Frames per point and method in a full run: one warm-up (shaders compile on the
-/// first frames), then 5 timed; at 30 000 glyphs or 4 096 px/em a frame of the slowest
-/// methods takes seconds on a software GPU, and the fitted slope pools the points.
-pub const FULL_TIMING: FrameTiming = FrameTiming {
-    warmup: 1,
-    frames: 5,
-};
-/// `--quick`: 2 frames timed after the warm-up.
-pub const QUICK_TIMING: FrameTiming = FrameTiming {
-    warmup: 1,
-    frames: 2,
-};
+/// Untimed frames per point and method before the timed ones (shaders compile on the
+/// first frames), in a full run and with `--quick` alike; how many are timed is the
+/// run's [`BenchEffort::scaling_frames`].
+pub const WARMUP_FRAMES: usize = 1;
 
 /// A method whose slope against the covered pixels' is at least this fraction of it
 /// grows with the pixels…
@@ -64,53 +54,20 @@ const FOLLOWS_CURVES: f64 = 1.0 / 3.0;
 /// this much faster than the glyphs do.
 const SEPARATES: f64 = 0.5;
 
-/// What a series varies.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Series {
-    GlyphCount,
-    PxPerEm,
-}
-
+/// What each series measures (its names: [`Series`] in `result`).
 impl Series {
-    pub const ALL: [Series; 2] = [Series::GlyphCount, Series::PxPerEm];
-
-    /// The name `--scenes` takes.
-    pub fn name(self) -> &'static str {
+    /// First and last point of the work: the last is the run's `effort`'s.
+    fn range(self, effort: &BenchEffort) -> (f64, f64) {
         match self {
-            Series::GlyphCount => "glyph-count",
-            Series::PxPerEm => "px-per-em",
-        }
-    }
-
-    /// The series called `name`, if one is.
-    pub fn named(name: &str) -> Option<Series> {
-        Series::ALL.into_iter().find(|s| s.name() == name)
-    }
-
-    /// The work axis, as tables and plots label it.
-    pub fn work_label(self) -> &'static str {
-        match self {
-            Series::GlyphCount => "glyphs",
-            Series::PxPerEm => "px/em",
-        }
-    }
-
-    /// First and last point of the work: `--quick` stops at about a tenth of the
-    /// pixels, so it stays a run of seconds.
-    fn range(self, quick: bool) -> (f64, f64) {
-        match (self, quick) {
-            (Series::GlyphCount, false) => (100.0, 30_000.0),
-            (Series::GlyphCount, true) => (100.0, 3_000.0),
-            (Series::PxPerEm, false) => (4.0, 4096.0),
-            (Series::PxPerEm, true) => (4.0, 256.0),
+            Series::GlyphCount => (100.0, effort.glyph_count_up_to),
+            Series::PxPerEm => (4.0, effort.px_per_em_up_to),
         }
     }
 
     /// The points of work the series is measured at: `count` of them, evenly spaced on
     /// a log scale over its range (glyph counts rounded to whole glyphs).
-    pub fn points(self, count: usize, quick: bool) -> Vec<f64> {
-        let (first, last) = self.range(quick);
+    pub fn points(self, count: usize, effort: &BenchEffort) -> Vec<f64> {
+        let (first, last) = self.range(effort);
         let points = log_spaced(first, last, count);
         match self {
             Series::GlyphCount => points.into_iter().map(f64::round).collect(),
@@ -140,7 +97,7 @@ impl Series {
                  ink), so from about 1 200 px/em only part of the word is drawn and the \
                  pixels grow more slowly than the size squared. The atlas caches at the \
                  frame's size up to {} px/em and magnifies beyond.",
-                atlas::AUTO_CACHE_MAX_PX_PER_EM
+                method_settings::BASELINE_CACHE_MAX_PX_PER_EM
             ),
         }
     }
@@ -205,48 +162,6 @@ fn capped(args: ViewArgs) -> Result<ViewArgs, Error> {
     })
 }
 
-/// One method at one point.
-#[derive(Clone, Debug, Serialize)]
-pub struct MethodCost {
-    pub method: String,
-    /// How the frames were timed (timestamp queries, or the CPU's clock).
-    pub gpu_clock: Option<String>,
-    /// Median GPU time of a frame, ms.
-    pub gpu_ms: Option<f64>,
-    /// Median CPU time of recording a frame, ms.
-    pub cpu_frame_ms: Option<f64>,
-    /// Median of GPU + CPU per frame, ms: what methods are compared by.
-    pub frame_ms: Option<f64>,
-    /// GPU memory held once drawn.
-    pub gpu_bytes: u64,
-    /// The part of `gpu_bytes` that caches rasterized glyphs (the atlas's texture).
-    pub cache_bytes: Option<u64>,
-}
-
-/// One point of a series: its frame and every method's cost there.
-#[derive(Clone, Debug, Serialize)]
-pub struct ScalingPoint {
-    pub series: Series,
-    /// The work on the series' axis: glyphs drawn, or px/em.
-    pub work: f64,
-    pub size_px_per_em: f64,
-    pub glyphs: usize,
-    pub width: u32,
-    pub height: u32,
-    /// Covered pixels (the sum of coverage), the median over the methods' images.
-    pub covered_px: f64,
-    /// The size the atlas caches at here (its default: the frame's, capped).
-    pub atlas_cache_px_per_em: f64,
-    pub costs: Vec<MethodCost>,
-}
-
-impl ScalingPoint {
-    /// `method`'s cost here, if it was measured.
-    pub fn cost(&self, method: &str) -> Option<&MethodCost> {
-        self.costs.iter().find(|c| c.method == method)
-    }
-}
-
 /// Measures `methods` (the GPU ones; the reference has no GPU cost) at their defaults
 /// at each point of `series`, one progress step per point and method.
 pub fn measure_series(
@@ -294,7 +209,7 @@ pub fn measure_series(
             width: camera.width,
             height: camera.height,
             covered_px: metrics::median(covered).unwrap_or(0.0),
-            atlas_cache_px_per_em: atlas::auto_cache_size(camera.size_px_per_em),
+            atlas_cache_px_per_em: method_settings::baseline_cache_size(camera.size_px_per_em),
             costs,
         });
     }
@@ -433,7 +348,7 @@ fn shown_work(work: f64) -> String {
     if work.fract() == 0.0 {
         format!("{work:.0}")
     } else {
-        super::report::sig(work)
+        sig(work)
     }
 }
 
@@ -455,17 +370,15 @@ fn table(points: &[&ScalingPoint], md: &mut String) {
             shown_work(p.work),
             p.width,
             p.height,
-            super::report::sig(p.covered_px)
+            sig(p.covered_px)
         );
         for m in &methods {
             let cost = p.cost(m);
-            let ms = cost
-                .and_then(|c| c.frame_ms)
-                .map_or("—".into(), super::report::sig);
+            let ms = cost.and_then(|c| c.frame_ms).map_or("—".into(), sig);
             let mem = cost.map_or("—".into(), |c| {
-                let held = super::report::bytes(c.gpu_bytes);
+                let held = kb_or_mb(c.gpu_bytes);
                 match c.cache_bytes {
-                    Some(cache) => format!("{held} ({})", super::report::bytes(cache)),
+                    Some(cache) => format!("{held} ({})", kb_or_mb(cache)),
                     None => held,
                 }
             });
@@ -719,16 +632,21 @@ mod tests {
 
     #[test]
     fn points_are_log_spaced_over_the_range() {
-        let sizes = Series::PxPerEm.points(FULL_POINTS, false);
+        let full = BenchEffort::FULL;
+        let sizes = Series::PxPerEm.points(full.scaling_points, &full);
         let powers: Vec<f64> = (2..=12).map(|e| f64::from(1u32 << e)).collect();
         assert_eq!(
             sizes, powers,
             "4 → 4096 px/em in 11 points: the powers of two"
         );
-        let glyphs = Series::GlyphCount.points(3, false);
+        let glyphs = Series::GlyphCount.points(3, &full);
         // √(100 · 30 000) = 1 732.05…
         assert_eq!(glyphs, vec![100.0, 1732.0, 30_000.0]);
-        assert_eq!(Series::GlyphCount.points(QUICK_POINTS, true)[2], 3_000.0);
+        let quick = BenchEffort::QUICK;
+        assert_eq!(
+            Series::GlyphCount.points(quick.scaling_points, &quick)[2],
+            3_000.0
+        );
     }
 
     #[test]

@@ -1,34 +1,26 @@
 //! Where `winding`'s default (`aa=area`) spends a frame, per scene and view: the counts
-//! behind its cost ([`CostCounts`]) and the time of the shader cut short after each
+//! behind its cost ([`winding::CostCounts`]) and the time of the shader cut short after each
 //! stage ([`Stage`]), so that each stage's time is the difference from the one before.
 //! Measured in every bench run that includes `winding`; the report's "Where winding's
 //! time goes" section.
 
 use std::fmt::Write as _;
 
-use serde::Serialize;
-
-use super::run::{BenchResult, Rounds, SceneCamera};
+use super::result::{BenchResult, Rounds, SceneCamera, WindingCost};
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::{CoverageTarget, GpuContext};
-use crate::methods::winding::{CostCounts, Stage, Winding};
+use crate::methods::registry::MethodInfo;
+use crate::methods::winding::{self, Stage, Winding};
 use crate::methods::{Method, frame};
 use crate::metrics;
 use crate::scene::Scene;
 
-/// The breakdown of one view of one scene.
-#[derive(Clone, Debug, Serialize)]
-pub struct WindingCost {
-    pub scene: String,
-    #[serde(rename = "view")]
-    pub scene_camera: SceneCamera,
-    pub counts: CostCounts,
-    /// GPU time of a frame with the shader stopping after each stage, in
-    /// [`Stage::ALL`]'s order, ms: the median of the rounds' medians. None where the
-    /// device has no timestamp queries.
-    pub stage_gpu_ms: Option<[f64; 5]>,
-}
+/// The method this section breaks down: its stages are its shader's (`STAGE` in
+/// shaders/winding.wgsl) and its counts its own counting passes, which no registry row
+/// describes, so this section names it; the run measures it wherever the method is
+/// measured.
+pub const METHOD: &MethodInfo = &winding::INFO;
 
 /// Counts and stage times of `winding` at its default on `scene` through `camera`,
 /// timed in `timing`'s rounds, each stage prepared anew in each round.
@@ -157,11 +149,7 @@ pub fn markdown(result: &BenchResult, md: &mut String) {
             format!("{time:.2} ({:.0} %)", 100.0 * time / ms[4])
         };
         let atlas = result
-            .measurements
-            .iter()
-            .find(|m| {
-                m.is_baseline() && m.scene == cost.scene && m.scene_camera == cost.scene_camera
-            })
+            .baseline_in(&cost.scene, cost.scene_camera)
             .and_then(|m| m.frame_ms);
         let ratio = atlas.map_or("—".into(), |a| format!("{:.2}", ms[4] / a));
         let _ = writeln!(
