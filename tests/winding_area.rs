@@ -17,7 +17,7 @@ use glam::{DMat2, DVec2};
 use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
 use glyphscope::font::{Font, SHIPPED_FONTS};
-use glyphscope::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Segment};
+use glyphscope::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Quad, Segment};
 use glyphscope::methods::sdf_cells::curves::overlapping_contours;
 use glyphscope::methods::winding::area;
 use glyphscope::methods::{self, Method, frame};
@@ -229,7 +229,7 @@ fn the_shader_is_its_cpu_mirror() {
     let scene = Scene::from_text(&font, "Qg").unwrap();
     let glyph = &scene.glyphs[0];
     let tolerance = DEFAULT_QUAD_TOLERANCE_EM * scene.units_per_em;
-    let curves: Vec<area::Bezier> = glyph
+    let curves: Vec<Quad> = glyph
         .outline
         .to_quadratics(tolerance)
         .segments()

@@ -1,10 +1,10 @@
 //! Bézier geometry, written once and shared by the reference, the methods' CPU
 //! preparation and the tests. Curve evaluation, splitting, flattening and bounds come
-//! from lyon_geom; what is ours is the outline model and the error-bounded conversion
-//! policy around it.
+//! from lyon_geom; what is ours is the outline model, the error-bounded conversion
+//! policy around it, and the quadratic's own math.
 //!
 //! The files point one way, from the leaves up: `rect`, `distance` and `quadratic`
-//! import nothing of the folder, nor does `segment`; `projection` the rectangle;
+//! import nothing of the folder; `segment` the quadratic; `projection` the rectangle;
 //! `cubic` segments and distances; `outline` segments, the conversion and rectangles;
 //! `overlaps` the outline. This file only names them and lists what the crate sees.
 
@@ -22,7 +22,10 @@ pub use distance::distance_to_segment;
 pub use outline::{Contour, Outline, kurbo_path};
 pub use overlaps::merge_overlaps;
 pub use projection::{jacobian_bound, keeps_axes, project, steps_lean_apart};
-pub use quadratic::{Quad, signed_area};
+pub use quadratic::{
+    Quad, blossom_value, integral_x_dy, line_as_quad, monomial, monotone_pieces, point_at,
+    signed_area, subcurve, t_at,
+};
 pub use rect::Rect;
 pub use segment::{Segment, segment_points};
 pub(crate) use segment::{from_lyon, lyon_cubic};

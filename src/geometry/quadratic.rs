@@ -1,9 +1,106 @@
-//! The quadratic Bézier ([`Quad`]) and the signed area a closed chain of them encloses.
+//! The quadratic Bézier ([`Quad`]) and its math, in f64: evaluation and pieces by
+//! blossoming, where x or y turns, the parameter at a value, and the integrals a closed
+//! chain of them encloses.
+//!
+//! `shaders/winding_area.wgsl` has the f32 twins of [`blossom_value`], [`point_at`],
+//! [`subcurve`], [`monomial`], [`t_at`] and [`integral_x_dy`], under the same names:
+//! `winding`'s CPU mirror of that shader (`methods/winding/area.rs`) calls these.
 
 use glam::DVec2;
 
 /// A quadratic Bézier: start, control, end.
 pub type Quad = [DVec2; 3];
+
+/// The quadratic that runs along the segment from `a` to `b` at constant speed: its
+/// control point is the midpoint, exact in f64 (a sum and a halving).
+pub fn line_as_quad(a: DVec2, b: DVec2) -> Quad {
+    [a, (a + b) * 0.5, b]
+}
+
+/// A quadratic's blossom at (a, b), for one coordinate (control values `c`): its value
+/// at t when a = b = t, the middle control value of its piece between a and b.
+pub fn blossom_value(c: [f64; 3], a: f64, b: f64) -> f64 {
+    c[0] * ((1.0 - a) * (1.0 - b)) + c[1] * ((1.0 - a) * b + a * (1.0 - b)) + c[2] * (a * b)
+}
+
+/// The curve's blossom at (a, b), both coordinates.
+fn blossom(c: Quad, a: f64, b: f64) -> DVec2 {
+    DVec2::new(
+        blossom_value(c.map(|p| p.x), a, b),
+        blossom_value(c.map(|p| p.y), a, b),
+    )
+}
+
+/// The curve at t.
+pub fn point_at(c: Quad, t: f64) -> DVec2 {
+    blossom(c, t, t)
+}
+
+/// The piece of `c` between parameters `a` and `b`, as a quadratic Bézier of its own.
+pub fn subcurve(c: Quad, a: f64, b: f64) -> Quad {
+    [blossom(c, a, a), blossom(c, a, b), blossom(c, b, b)]
+}
+
+/// Monomial coefficients (t², t, 1) of a quadratic given by its control values.
+pub fn monomial(c: [f64; 3]) -> [f64; 3] {
+    [c[0] - 2.0 * c[1] + c[2], 2.0 * (c[1] - c[0]), c[0]]
+}
+
+/// Where a quadratic (control values) turns, or 1 when it does not inside (0, 1).
+fn turn_at(c: [f64; 3]) -> f64 {
+    let denominator = c[0] - 2.0 * c[1] + c[2];
+    if denominator == 0.0 {
+        return 1.0;
+    }
+    let t = (c[0] - c[1]) / denominator;
+    if t > 0.0 && t < 1.0 { t } else { 1.0 }
+}
+
+/// The curve split where x or y turns: up to three pieces, each monotone in both.
+/// `winding`'s preparation splits every curve so (`aa=area`'s shader takes them
+/// monotone).
+pub fn monotone_pieces(c: Quad) -> [Option<Quad>; 3] {
+    let (tx, ty) = (turn_at(c.map(|p| p.x)), turn_at(c.map(|p| p.y)));
+    let (t1, t2) = (tx.min(ty), tx.max(ty));
+    let piece = |a: f64, b: f64| (b > a).then(|| subcurve(c, a, b));
+    [piece(0.0, t1), piece(t1, t2), piece(t2, 1.0)]
+}
+
+/// The parameter in [0, 1] where a quadratic monotone on [0, 1] (control values `c`)
+/// takes `value`: 0 or 1 when it stays on one side. The stable form of the
+/// quadratic formula, which stays finite as the quadratic degenerates to a line.
+pub fn t_at(c: [f64; 3], value: f64) -> f64 {
+    let increasing = c[2] >= c[0];
+    let (low, high) = if increasing {
+        (c[0], c[2])
+    } else {
+        (c[2], c[0])
+    };
+    if value <= low {
+        return if increasing { 0.0 } else { 1.0 };
+    }
+    if value >= high {
+        return if increasing { 1.0 } else { 0.0 };
+    }
+    let a = c[0] - 2.0 * c[1] + c[2];
+    let b = 2.0 * (c[1] - c[0]);
+    let k = c[0] - value;
+    let root = (b * b - 4.0 * a * k).max(0.0).sqrt();
+    let denominator = b + if increasing { root } else { -root };
+    if denominator == 0.0 {
+        // Only when rounding has flattened the piece: its chord's answer.
+        return ((value - c[0]) / (c[2] - c[0])).clamp(0.0, 1.0);
+    }
+    (-2.0 * k / denominator).clamp(0.0, 1.0)
+}
+
+/// ∫₀¹ x(t) y′(t) dt for a quadratic Bézier given by its control values: exact (the
+/// integrand is a cubic in t).
+pub fn integral_x_dy(x: [f64; 3], y: [f64; 3]) -> f64 {
+    let d0 = y[1] - y[0];
+    let d1 = y[2] - y[1];
+    (x[0] * (3.0 * d0 + d1) + 2.0 * x[1] * (d0 + d1) + x[2] * (d0 + 3.0 * d1)) / 6.0
+}
 
 /// Signed area enclosed by a closed chain of quadratics (positive counter-clockwise,
 /// y up): the polygon of their endpoints plus, for each, the parabolic segment between
@@ -19,11 +116,102 @@ pub fn signed_area(contour: &[Quad]) -> f64 {
 mod tests {
     use super::*;
 
+    fn q(a: (f64, f64), b: (f64, f64), c: (f64, f64)) -> Quad {
+        [DVec2::from(a), DVec2::from(b), DVec2::from(c)]
+    }
+
+    /// The arch (0,0)–(1,2)–(2,0): x(t) = 2t, y(t) = 4t(1 − t).
+    fn arch() -> Quad {
+        q((0.0, 0.0), (1.0, 2.0), (2.0, 0.0))
+    }
+
+    #[test]
+    fn points_and_pieces_by_blossoming() {
+        assert_eq!(point_at(arch(), 0.25), DVec2::new(0.5, 0.75));
+        assert_eq!(point_at(arch(), 0.5), DVec2::new(1.0, 1.0));
+        // The blossom at (0, 1) is the control point; at (t, t) the point at t.
+        assert_eq!(blossom_value([0.0, 2.0, 0.0], 0.0, 1.0), 2.0);
+        assert_eq!(blossom_value([0.0, 2.0, 0.0], 0.5, 0.5), 1.0);
+        // The left half: from the start, through the midpoint of the first leg, to the
+        // apex (de Casteljau by hand).
+        assert_eq!(
+            subcurve(arch(), 0.0, 0.5),
+            q((0.0, 0.0), (0.5, 1.0), (1.0, 1.0))
+        );
+        // A piece runs along the curve: at s it is the curve at a + s (b − a).
+        let piece = subcurve(arch(), 0.2, 0.6);
+        for s in [0.0, 0.25, 0.5, 1.0] {
+            let t = 0.2 + s * 0.4;
+            let want = DVec2::new(2.0 * t, 4.0 * t * (1.0 - t));
+            assert!((point_at(piece, s) - want).length() < 1e-15, "s {s}");
+        }
+    }
+
+    #[test]
+    fn monomials_expand_the_bernstein_form() {
+        // (1 − t)² + 2·2t(1 − t) + 4t² = 1 + 2t + t².
+        assert_eq!(monomial([1.0, 2.0, 4.0]), [1.0, 2.0, 1.0]);
+    }
+
+    #[test]
+    fn a_line_as_a_quadratic() {
+        let line = line_as_quad(DVec2::new(1.0, 2.0), DVec2::new(3.0, -4.0));
+        assert_eq!(line, q((1.0, 2.0), (2.0, -1.0), (3.0, -4.0)));
+    }
+
+    /// (0,0)–(2,−1)–(1,2): x(t) = 4t − 3t² turns at t = 2/3 (x = 4/3, y = 4/9), y(t) =
+    /// 4t² − 2t at t = 1/4 (x = 13/16, y = −1/4).
+    #[test]
+    fn monotone_pieces_split_where_x_and_y_turn() {
+        let c = q((0.0, 0.0), (2.0, -1.0), (1.0, 2.0));
+        let pieces: Vec<Quad> = monotone_pieces(c).into_iter().flatten().collect();
+        let ends = [
+            DVec2::ZERO,
+            DVec2::new(13.0 / 16.0, -0.25),
+            DVec2::new(4.0 / 3.0, 4.0 / 9.0),
+            DVec2::new(1.0, 2.0),
+        ];
+        assert_eq!(pieces.len(), 3);
+        for (k, piece) in pieces.iter().enumerate() {
+            assert!((piece[0] - ends[k]).length() < 1e-15, "piece {k} starts");
+            assert!((piece[2] - ends[k + 1]).length() < 1e-15, "piece {k} ends");
+            // Within rounding: at a turn the middle control value meets the end's.
+            let slack = 1e-15;
+            for values in [piece.map(|p| p.x), piece.map(|p| p.y)] {
+                let rising = values[0] <= values[1] + slack && values[1] <= values[2] + slack;
+                let falling = values[0] + slack >= values[1] && values[1] + slack >= values[2];
+                assert!(rising || falling, "piece {k}: {values:?}");
+            }
+        }
+        // Monotone already: one piece, the curve itself.
+        let monotone = q((0.0, 0.0), (1.0, 0.5), (2.0, 3.0));
+        assert_eq!(monotone_pieces(monotone), [Some(monotone), None, None]);
+    }
+
+    #[test]
+    fn roots_of_monotone_pieces() {
+        // A line from 1 to 3: 2 at the middle.
+        assert_eq!(t_at([1.0, 2.0, 3.0], 2.0), 0.5);
+        // x(t) = t² (0, 0, 1): √0.25 = 0.5; decreasing (1, 1, 0): 1 − t²… at 0.75 → 0.5.
+        assert!((t_at([0.0, 0.0, 1.0], 0.25) - 0.5).abs() < 1e-15);
+        assert!((t_at([1.0, 1.0, 0.0], 0.75) - 0.5).abs() < 1e-15);
+        // Outside the range: the end on that side.
+        assert_eq!(t_at([0.0, 0.5, 1.0], -1.0), 0.0);
+        assert_eq!(t_at([1.0, 0.5, 0.0], -1.0), 1.0);
+    }
+
+    #[test]
+    fn integral_of_x_along_y() {
+        // x = t, y = t²: ∫ t · 2t dt = 2/3.
+        assert!((integral_x_dy([0.0, 0.5, 1.0], [0.0, 0.0, 1.0]) - 2.0 / 3.0).abs() < 1e-15);
+        // x constant: the rise times x.
+        assert_eq!(integral_x_dy([3.0, 3.0, 3.0], [1.0, 5.0, 2.0]), 3.0);
+    }
+
     #[test]
     fn parabola_area_is_two_thirds_of_its_triangle() {
         // y = x(2 - x)·… : the chord (0,0)-(2,0) and control (1,2) enclose 4/3.
-        let q = [DVec2::ZERO, DVec2::new(1.0, 2.0), DVec2::new(2.0, 0.0)];
-        let back = [DVec2::new(2.0, 0.0), DVec2::new(1.0, 0.0), DVec2::ZERO];
-        assert!((signed_area(&[q, back]) + 4.0 / 3.0).abs() < 1e-12);
+        let back = q((2.0, 0.0), (1.0, 0.0), (0.0, 0.0));
+        assert!((signed_area(&[arch(), back]) + 4.0 / 3.0).abs() < 1e-12);
     }
 }

@@ -3,6 +3,8 @@
 
 use glam::DVec2;
 
+use super::quadratic::{Quad, line_as_quad};
+
 /// One outline segment in font units (or any 2D space), y up.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Segment {
@@ -32,6 +34,17 @@ impl Segment {
             Segment::Line(a, b) => Segment::Line(f(a), f(b)),
             Segment::Quad(a, b, c) => Segment::Quad(f(a), f(b), f(c)),
             Segment::Cubic(a, b, c, d) => Segment::Cubic(f(a), f(b), f(c), f(d)),
+        }
+    }
+
+    /// The segment as a quadratic Bézier: a line as the quadratic running along it
+    /// ([`line_as_quad`]), a quadratic as it is; `None` for a cubic, which needs a
+    /// conversion (`cubic_to_quadratics`).
+    pub fn as_quad(&self) -> Option<Quad> {
+        match *self {
+            Segment::Line(a, b) => Some(line_as_quad(a, b)),
+            Segment::Quad(a, b, c) => Some([a, b, c]),
+            Segment::Cubic(..) => None,
         }
     }
 

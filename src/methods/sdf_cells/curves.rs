@@ -17,7 +17,7 @@
 use glam::DVec2;
 
 use crate::camera::Camera;
-use crate::geometry::{Contour, Outline, Quad, Segment, signed_area};
+use crate::geometry::{Contour, Outline, Quad, Segment, line_as_quad, signed_area};
 use crate::reference;
 use crate::scene::Scene;
 
@@ -98,14 +98,10 @@ const MERGED_BELOW_STEPS: f64 = 10.0;
 /// A segment as a quadratic. Cubics are not expected here (the caller converts them) but
 /// are reduced to their endpoints' line rather than dropped if one slips through.
 fn as_quad(segment: &Segment) -> Quad {
-    match *segment {
-        Segment::Line(a, b) => [a, (a + b) * 0.5, b],
-        Segment::Quad(a, b, c) => [a, b, c],
-        Segment::Cubic(a, _, _, d) => {
-            debug_assert!(false, "cubics are converted before layout");
-            [a, (a + d) * 0.5, d]
-        }
-    }
+    segment.as_quad().unwrap_or_else(|| {
+        debug_assert!(false, "cubics are converted before layout");
+        line_as_quad(segment.start(), segment.end())
+    })
 }
 
 /// Whether the curve is too short, as the GPU sees it in f32, for its direction to mean

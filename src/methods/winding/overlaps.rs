@@ -18,8 +18,7 @@
 
 use glam::DVec2;
 
-use super::area::{Bezier, monotone_pieces, t_at};
-use crate::geometry::signed_area;
+use crate::geometry::{Quad, monotone_pieces, signed_area, t_at};
 
 /// How near two curves may come before they count as touching, in em. Only the cost
 /// depends on it (a curve marked needlessly costs sub-pixels where it meets another
@@ -29,7 +28,7 @@ const TOUCHING_EM: f64 = 1.0 / 4096.0;
 
 /// For each curve of `contours` (in order), whether it may separate winding levels
 /// other than 0 and the glyph's fill sign.
-pub fn overlap_flags(contours: &[Vec<Bezier>], units_per_em: f64) -> Vec<Vec<bool>> {
+pub fn overlap_flags(contours: &[Vec<Quad>], units_per_em: f64) -> Vec<Vec<bool>> {
     let touching = TOUCHING_EM * units_per_em;
     let mut flags: Vec<Vec<bool>> = contours.iter().map(|c| vec![false; c.len()]).collect();
     let curves: Vec<(usize, usize)> = contours
@@ -111,13 +110,13 @@ fn neighbours(k: usize, l: usize, len: usize) -> bool {
 /// Whether curves `a` and `b` come within about `distance` of each other: their
 /// control hulls' bounds are apart by more (no), or both are flat to a quarter of it
 /// and their chords are within it, or the more bent one is halved and each half asked.
-fn within(a: Bezier, b: Bezier, distance: f64, splits_left: u32) -> bool {
-    let bounds = |q: &Bezier| (q[0].min(q[1]).min(q[2]), q[0].max(q[1]).max(q[2]));
+fn within(a: Quad, b: Quad, distance: f64, splits_left: u32) -> bool {
+    let bounds = |q: &Quad| (q[0].min(q[1]).min(q[2]), q[0].max(q[1]).max(q[2]));
     let ((lo_a, hi_a), (lo_b, hi_b)) = (bounds(&a), bounds(&b));
     if lo_a.cmpgt(hi_b + distance).any() || lo_b.cmpgt(hi_a + distance).any() {
         return false;
     }
-    let bend = |q: &Bezier| (q[0] - 2.0 * q[1] + q[2]).length();
+    let bend = |q: &Quad| (q[0] - 2.0 * q[1] + q[2]).length();
     let (bend_a, bend_b) = (bend(&a), bend(&b));
     if splits_left == 0 {
         return true;
@@ -164,7 +163,7 @@ fn point_segment_distance(point: DVec2, a: DVec2, b: DVec2) -> f64 {
 /// The winding number of a closed contour around `point`: its crossings of the ray to
 /// +x, each curve cut where it turns so each piece crosses once at most, half-open in
 /// y so that an end on the ray counts once.
-fn winding(point: DVec2, contour: &[Bezier]) -> i32 {
+fn winding(point: DVec2, contour: &[Quad]) -> i32 {
     contour
         .iter()
         .flat_map(|q| monotone_pieces(*q).into_iter().flatten())
@@ -191,8 +190,9 @@ fn winding(point: DVec2, contour: &[Bezier]) -> i32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::line_as_quad;
 
-    fn square(x: f64, y: f64, size: f64, clockwise: bool) -> Vec<Bezier> {
+    fn square(x: f64, y: f64, size: f64, clockwise: bool) -> Vec<Quad> {
         let mut p: Vec<DVec2> = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
             .iter()
             .map(|&(a, b)| DVec2::new(x + a * size, y + b * size))
@@ -200,15 +200,10 @@ mod tests {
         if clockwise {
             p.reverse();
         }
-        (0..4)
-            .map(|k| {
-                let (a, b) = (p[k], p[(k + 1) % 4]);
-                [a, (a + b) * 0.5, b]
-            })
-            .collect()
+        (0..4).map(|k| line_as_quad(p[k], p[(k + 1) % 4])).collect()
     }
 
-    fn flags(contours: &[Vec<Bezier>]) -> Vec<Vec<bool>> {
+    fn flags(contours: &[Vec<Quad>]) -> Vec<Vec<bool>> {
         overlap_flags(contours, 1000.0)
     }
 
@@ -274,12 +269,7 @@ mod tests {
     #[test]
     fn a_contour_crossing_itself_is_marked() {
         let p = [(0.0, 0.0), (10.0, 10.0), (10.0, 0.0), (0.0, 10.0)].map(|(x, y)| DVec2::new(x, y));
-        let bow_tie: Vec<Bezier> = (0..4)
-            .map(|k| {
-                let (a, b) = (p[k], p[(k + 1) % 4]);
-                [a, (a + b) * 0.5, b]
-            })
-            .collect();
+        let bow_tie: Vec<Quad> = (0..4).map(|k| line_as_quad(p[k], p[(k + 1) % 4])).collect();
         assert_eq!(flags(&[bow_tie]), vec![vec![true; 4]]);
     }
 
