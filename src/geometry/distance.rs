@@ -14,6 +14,20 @@ pub fn distance_to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
     (a + ab * t).distance(p)
 }
 
+/// The distance between the segments [p, q] and [r, s]: 0 where they cross, else the
+/// nearest of each one's ends to the other segment (the nearest points of two segments
+/// that do not cross include an end of one of them).
+pub fn distance_between_segments(p: DVec2, q: DVec2, r: DVec2, s: DVec2) -> f64 {
+    let side = |a: DVec2, b: DVec2, c: DVec2| (b - a).perp_dot(c - a);
+    if side(p, q, r) * side(p, q, s) < 0.0 && side(r, s, p) * side(r, s, q) < 0.0 {
+        return 0.0;
+    }
+    distance_to_segment(p, r, s)
+        .min(distance_to_segment(q, r, s))
+        .min(distance_to_segment(r, p, q))
+        .min(distance_to_segment(s, p, q))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -31,5 +45,24 @@ mod tests {
         assert_eq!(distance_to_segment(v(-3.0, -4.0), a, b), 5.0);
         // A segment that is a point: the distance to it.
         assert_eq!(distance_to_segment(v(3.0, 4.0), a, a), 5.0);
+    }
+
+    #[test]
+    fn distance_between_segments_by_hand() {
+        // An X: they cross.
+        let cross = distance_between_segments(v(0.0, 0.0), v(2.0, 2.0), v(0.0, 2.0), v(2.0, 0.0));
+        assert_eq!(cross, 0.0);
+        // A T whose stem stops 2 short of the bar.
+        let t = distance_between_segments(v(0.0, 0.0), v(10.0, 0.0), v(5.0, 2.0), v(5.0, 7.0));
+        assert_eq!(t, 2.0);
+        // Parallel, 3 apart; on one line, 3 apart end to end.
+        let parallel =
+            distance_between_segments(v(0.0, 0.0), v(4.0, 0.0), v(1.0, 3.0), v(6.0, 3.0));
+        assert_eq!(parallel, 3.0);
+        let in_line = distance_between_segments(v(0.0, 0.0), v(1.0, 0.0), v(4.0, 0.0), v(6.0, 0.0));
+        assert_eq!(in_line, 3.0);
+        // Apart diagonally: end (4, 0) to end (7, 4), a 3-4-5 triangle.
+        let apart = distance_between_segments(v(0.0, 0.0), v(4.0, 0.0), v(7.0, 4.0), v(9.0, 9.0));
+        assert_eq!(apart, 5.0);
     }
 }

@@ -6,7 +6,8 @@
 //! The files point one way, from the leaves up: `rect`, `distance` and `quadratic`
 //! import nothing of the folder; `segment` the quadratic; `projection` the rectangle;
 //! `cubic` segments and distances; `outline` segments, the conversion and rectangles;
-//! `overlaps` the outline. This file only names them and lists what the crate sees.
+//! `overlaps` the outline and segments. This file only names them and lists what the
+//! crate sees.
 
 mod cubic;
 mod distance;
@@ -18,14 +19,14 @@ mod rect;
 mod segment;
 
 pub use cubic::{DEFAULT_QUAD_TOLERANCE_EM, cubic_to_quadratics, max_distance_to_cubic};
-pub use distance::distance_to_segment;
+pub use distance::{distance_between_segments, distance_to_segment};
 pub use outline::{Contour, Outline, kurbo_path};
 pub use overlaps::merge_overlaps;
 pub use projection::{jacobian_bound, keeps_axes, project, steps_lean_apart};
 pub use quadratic::{
     Quad, blossom_value, integral_x_dy, line_as_quad, monomial, monotone_pieces, point_at,
-    signed_area, subcurve, t_at,
+    signed_area, subcurve, t_at, winding_number,
 };
 pub use rect::Rect;
 pub use segment::{Segment, segment_points};
-pub(crate) use segment::{from_lyon, lyon_cubic};
+pub(crate) use segment::{from_lyon, lyon_cubic, lyon_quad, to_lyon};

@@ -1,6 +1,6 @@
 //! The quadratic Bézier ([`Quad`]) and its math, in f64: evaluation and pieces by
-//! blossoming, where x or y turns, the parameter at a value, and the integrals a closed
-//! chain of them encloses.
+//! blossoming, where x or y turns, the parameter at a value, the integrals a closed
+//! chain of them encloses, and the winding number they make around a point.
 //!
 //! `shaders/winding_area.wgsl` has the f32 twins of [`blossom_value`], [`point_at`],
 //! [`subcurve`], [`monomial`], [`t_at`] and [`integral_x_dy`], under the same names:
@@ -112,6 +112,47 @@ pub fn signed_area(contour: &[Quad]) -> f64 {
         .sum()
 }
 
+/// The winding number of closed chains of quadratics around `point`: the signed
+/// crossings of the ray from it towards +x, +1 where a curve crosses upwards (the inside
+/// of a counter-clockwise contour is on its left), −1 downwards. Half-open in y (a point
+/// counts as above the ray when y > point.y), so a crossing at a join of two curves
+/// counts once. A point on a curve gets the number of one of its sides.
+pub fn winding_number<'a>(point: DVec2, curves: impl IntoIterator<Item = &'a Quad>) -> i32 {
+    curves.into_iter().map(|q| ray_crossings(q, point)).sum()
+}
+
+/// One curve's signed crossings of the ray from `p` towards +x (see [`winding_number`]),
+/// in f64: the curve is split at its y extremum into monotonic pieces, each crossing
+/// found by bisection.
+fn ray_crossings(q: &Quad, p: DVec2) -> i32 {
+    let [a, b, c] = q.map(|v| v - p);
+    if a.x.max(b.x).max(c.x) <= 0.0 {
+        return 0;
+    }
+    let at = |t: f64| a * (1.0 - t) * (1.0 - t) + b * 2.0 * t * (1.0 - t) + c * t * t;
+    let split = turn_at([a.y, b.y, c.y]);
+    let mut w = 0;
+    for (t0, t1) in [(0.0, split), (split, 1.0)] {
+        let (above0, above1) = (at(t0).y > 0.0, at(t1).y > 0.0);
+        if t0 == t1 || above0 == above1 {
+            continue;
+        }
+        let (mut low, mut high) = (t0, t1);
+        for _ in 0..60 {
+            let mid = 0.5 * (low + high);
+            if (at(mid).y > 0.0) == above0 {
+                low = mid;
+            } else {
+                high = mid;
+            }
+        }
+        if at(0.5 * (low + high)).x > 0.0 {
+            w += if above1 { 1 } else { -1 };
+        }
+    }
+    w
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -213,5 +254,75 @@ mod tests {
         // y = x(2 - x)·… : the chord (0,0)-(2,0) and control (1,2) enclose 4/3.
         let back = q((2.0, 0.0), (1.0, 0.0), (0.0, 0.0));
         assert!((signed_area(&[arch(), back]) + 4.0 / 3.0).abs() < 1e-12);
+    }
+
+    /// The square (x, y)–(x + size, y + size), its sides as quadratics, counter-clockwise
+    /// unless `clockwise`.
+    fn square(x: f64, y: f64, size: f64, clockwise: bool) -> Vec<Quad> {
+        let mut p: Vec<DVec2> = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+            .iter()
+            .map(|&(a, b)| DVec2::new(x + a * size, y + b * size))
+            .collect();
+        if clockwise {
+            p.reverse();
+        }
+        (0..4).map(|k| line_as_quad(p[k], p[(k + 1) % 4])).collect()
+    }
+
+    #[test]
+    fn winding_counts_each_crossing_once() {
+        let contour = square(0.0, 0.0, 10.0, false);
+        assert_eq!(winding_number(DVec2::new(5.0, 5.0), &contour), 1);
+        assert_eq!(
+            winding_number(DVec2::new(5.0, 5.0), &square(0.0, 0.0, 10.0, true)),
+            -1
+        );
+        // Level with the bottom side's ends: the vertex at (10, 0) counts once.
+        assert_eq!(winding_number(DVec2::new(5.0, 0.0), &contour), 1);
+        assert_eq!(winding_number(DVec2::new(15.0, 5.0), &contour), 0);
+        // Inside two squares, one in the other, wound the same way; inside a ring.
+        let stacked = [contour.clone(), square(2.0, 2.0, 6.0, false)].concat();
+        assert_eq!(winding_number(DVec2::new(5.0, 5.0), &stacked), 2);
+        let ring = [contour.clone(), square(2.0, 2.0, 6.0, true)].concat();
+        assert_eq!(winding_number(DVec2::new(5.0, 5.0), &ring), 0);
+        assert_eq!(winding_number(DVec2::new(1.0, 5.0), &ring), 1);
+        // A curved side: the parabola (0,0)–(5,10)–(10,0) peaks at y = 5.
+        let arch = [
+            q((0.0, 0.0), (5.0, 10.0), (10.0, 0.0)),
+            q((10.0, 0.0), (5.0, 0.0), (0.0, 0.0)),
+        ];
+        assert_eq!(winding_number(DVec2::new(5.0, 4.9), &arch), -1);
+        assert_eq!(winding_number(DVec2::new(5.0, 5.1), &arch), 0);
+    }
+
+    #[test]
+    fn ray_crossings_count_each_way_once_at_joins() {
+        let p = DVec2::ZERO;
+        // Upwards right of p: +1; downwards: −1; left of p: nothing.
+        assert_eq!(ray_crossings(&q((1.0, -1.0), (2.0, 0.0), (1.0, 1.0)), p), 1);
+        assert_eq!(
+            ray_crossings(&q((1.0, 1.0), (2.0, 0.0), (1.0, -1.0)), p),
+            -1
+        );
+        assert_eq!(
+            ray_crossings(&q((-1.0, -1.0), (-2.0, 0.0), (-1.0, 1.0)), p),
+            0
+        );
+        // A parabola dipping through the ray twice, and one only touching it.
+        assert_eq!(ray_crossings(&q((1.0, 1.0), (2.0, -2.0), (3.0, 1.0)), p), 0);
+        assert_eq!(ray_crossings(&q((1.0, 1.0), (2.0, -1.0), (3.0, 1.0)), p), 0);
+        // Two lines joined on the ray, going up: one crossing between them.
+        let below = q((1.0, -1.0), (1.0, -0.5), (1.0, 0.0));
+        let above = q((1.0, 0.0), (1.0, 0.5), (1.0, 1.0));
+        assert_eq!(ray_crossings(&below, p) + ray_crossings(&above, p), 1);
+        // A crossing left of p on a curve that reaches right of it does not count.
+        assert_eq!(
+            ray_crossings(&q((-1.0, -1.0), (3.0, 0.0), (-1.0, 1.0)), p),
+            1
+        );
+        assert_eq!(
+            ray_crossings(&q((-1.0, -1.0), (0.0, 0.0), (-1.0, 1.0)), p),
+            0
+        );
     }
 }

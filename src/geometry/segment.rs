@@ -97,6 +97,15 @@ pub(crate) fn lyon_cubic(
     }
 }
 
+/// The quadratic as lyon_geom's segment.
+pub(crate) fn lyon_quad(q: Quad) -> lyon_geom::QuadraticBezierSegment<f64> {
+    lyon_geom::QuadraticBezierSegment {
+        from: to_lyon(q[0]),
+        ctrl: to_lyon(q[1]),
+        to: to_lyon(q[2]),
+    }
+}
+
 /// lyon_geom's point as ours.
 pub(crate) fn from_lyon(p: lyon_geom::Point<f64>) -> DVec2 {
     DVec2::new(p.x, p.y)
