@@ -9,7 +9,8 @@
 use std::fmt::Write;
 
 use glam::{DMat2, DVec2};
-use glyphscope::methods::winding::area::{self, Bezier, PixelFrame};
+use glyphscope::geometry::{Quad, monotone_pieces};
+use glyphscope::methods::winding::area::{self, PixelFrame};
 
 /// Pixels of the figure per pixel width of the frame.
 const SCALE: f64 = 64.0;
@@ -37,7 +38,7 @@ fn main() {
         .nth(1)
         .unwrap_or_else(|| "docs/area-zones.svg".into());
     // One curve in local units, the pixel centred at the origin, one unit a pixel.
-    let curve: Bezier = [
+    let curve: Quad = [
         DVec2::new(-2.1, -1.4),
         DVec2::new(0.0, 0.4),
         DVec2::new(2.6, 0.8),
@@ -57,7 +58,7 @@ fn main() {
         let to_local = to_image.inverse();
         let frame = PixelFrame::new(to_local.x_axis, to_local.y_axis, 1.0).expect("a pixel");
         let in_frame = curve.map(|p| frame.map(p));
-        let term: f64 = area::monotone_pieces(in_frame)
+        let term: f64 = monotone_pieces(in_frame)
             .into_iter()
             .flatten()
             .map(|piece| area::curve_term(piece, &frame))
@@ -128,7 +129,7 @@ fn zone_of(p: DVec2, f: &PixelFrame) -> usize {
     }
 }
 
-fn panel(svg: &mut String, x0: f64, f: &PixelFrame, curve: &Bezier, title: &str, term: f64) {
+fn panel(svg: &mut String, x0: f64, f: &PixelFrame, curve: &Quad, title: &str, term: f64) {
     let at = |p: DVec2| {
         (
             x0 + (p.x - U_RANGE.0) * SCALE,

@@ -19,7 +19,6 @@ use glyphscope::methods::{self, Method};
 /// Owned `--param` pairs.
 type Params = Vec<(String, String)>;
 use glyphscope::methods::sdf_cells::SdfCells;
-use glyphscope::methods::sdf_cells::curves::overlapping_contours;
 use glyphscope::metrics::{self, ErrorStats, compare};
 use glyphscope::reference;
 use glyphscope::scene::Scene;
@@ -126,7 +125,7 @@ fn glyphs_report(gpu: &GpuContext) {
         let tolerance = DEFAULT_QUAD_TOLERANCE_EM * font.units_per_em();
         let overlapping: Vec<bool> = ids
             .iter()
-            .map(|&id| overlapping_contours(&font.outline(id).to_quadratics(tolerance)))
+            .map(|&id| reference::overlapping_contours(&font.outline(id).to_quadratics(tolerance)))
             .collect();
         for (s, &size) in SIZES.iter().enumerate() {
             for (what, matrix, shift) in transforms() {

@@ -16,7 +16,7 @@ use glyphscope::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Segment, project}
 use glyphscope::gpu::CoverageTarget;
 use glyphscope::methods::frame::render_frame;
 use glyphscope::methods::sdf_cells::cells::Mode;
-use glyphscope::methods::sdf_cells::curves::{CurveLayout, overlapping_contours};
+use glyphscope::methods::sdf_cells::curves::CurveLayout;
 use glyphscope::methods::sdf_cells::glyph::PreparedGlyph;
 use glyphscope::methods::sdf_cells::{SdfCells, Settings};
 use glyphscope::methods::{CurveCost, Method};
@@ -176,7 +176,7 @@ fn exact_mode_is_within_half_a_pixel_of_the_reference() {
     for (index, text) in SAMPLES {
         let font = Font::shipped(index);
         for glyph in Scene::from_text(&font, text).unwrap().glyphs {
-            let overlaps = overlapping_contours(&quadratic_outline(&font, glyph.id));
+            let overlaps = reference::overlapping_contours(&quadratic_outline(&font, glyph.id));
             let scene = Scene::from_glyph_id(&font, u32::from(glyph.id)).unwrap();
             for size in [16.0, 48.0, 400.0] {
                 for (matrix, subpixel) in transforms() {
@@ -738,7 +738,7 @@ fn overlapping_contours_crack_only_along_the_curves_inside_the_fill() {
         let id = font.glyph_for_char(c).unwrap();
         let outline = quadratic_outline(&font, id);
         assert!(
-            overlapping_contours(&outline),
+            reference::overlapping_contours(&outline),
             "Inter {c:?} has overlapping contours"
         );
         let scene = Scene::from_glyph_id(&font, u32::from(id)).unwrap();

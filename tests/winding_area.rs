@@ -17,8 +17,7 @@ use glam::{DMat2, DVec2};
 use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
 use glyphscope::font::{Font, SHIPPED_FONTS};
-use glyphscope::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Segment};
-use glyphscope::methods::sdf_cells::curves::overlapping_contours;
+use glyphscope::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Quad, Segment};
 use glyphscope::methods::winding::area;
 use glyphscope::methods::{self, Method, frame};
 use glyphscope::metrics::{ErrorStats, compare};
@@ -67,8 +66,8 @@ fn transforms() -> [(&'static str, [f64; 4]); 6] {
 }
 
 /// The glyphs of `text` in `font` whose contours overlap (`want_overlaps`) or do not,
-/// as placed by shaping: judged by sdf-cells' test, which measures the filled area
-/// with the reference, independently of `aa=area`'s own marks.
+/// as placed by shaping: judged by `reference::overlapping_contours`, which measures the
+/// filled area with the reference, independently of `aa=area`'s own marks.
 fn glyphs_of(font: &Font, text: &str, want_overlaps: bool) -> Scene {
     let shaped = Scene::from_text(font, text).unwrap();
     let tolerance = DEFAULT_QUAD_TOLERANCE_EM * shaped.units_per_em;
@@ -77,7 +76,9 @@ fn glyphs_of(font: &Font, text: &str, want_overlaps: bool) -> Scene {
         .iter()
         .map(|i| &shaped.glyphs[i.glyph as usize])
         .zip(&shaped.instances)
-        .filter(|(g, _)| overlapping_contours(&g.outline.to_quadratics(tolerance)) == want_overlaps)
+        .filter(|(g, _)| {
+            reference::overlapping_contours(&g.outline.to_quadratics(tolerance)) == want_overlaps
+        })
         .map(|(g, i)| (g.outline.clone(), i.position))
         .collect();
     Scene::from_outlines(shaped.units_per_em, placed)
@@ -229,7 +230,7 @@ fn the_shader_is_its_cpu_mirror() {
     let scene = Scene::from_text(&font, "Qg").unwrap();
     let glyph = &scene.glyphs[0];
     let tolerance = DEFAULT_QUAD_TOLERANCE_EM * scene.units_per_em;
-    let curves: Vec<area::Bezier> = glyph
+    let curves: Vec<Quad> = glyph
         .outline
         .to_quadratics(tolerance)
         .segments()

@@ -16,7 +16,8 @@ use glam::DVec2;
 use kurbo::{BezPath, PathEl, Shape};
 use linesweeper::{BinaryOp, FillRule};
 
-use super::{Contour, Outline, Segment, kurbo_path};
+use super::outline::{Contour, Outline, kurbo_path};
+use super::segment::Segment;
 
 /// How much the union's area may differ from the sum of the contours' areas, in em²,
 /// before the glyph counts as overlapping when its contours are as many as the union's

@@ -1,49 +1,106 @@
-//! Quadratic Béziers: cubic → quadratic conversion with a guaranteed maximum distance,
-//! and the signed area a closed chain of quadratics encloses.
+//! The quadratic Bézier ([`Quad`]) and its math, in f64: evaluation and pieces by
+//! blossoming, where x or y turns, the parameter at a value, the integrals a closed
+//! chain of them encloses, and the winding number they make around a point.
 //!
-//! Each cubic is split into n equal parameter ranges, each replaced by the quadratic
-//! whose control point averages the two tangent-preserving ones (lyon_geom). For that
-//! approximation |C(t) − Q(t)| ≤ √3/36 · |p0 − 3p1 + 3p2 − p3| / n³ at every t, so n
-//! follows from the tolerance in closed form: a bound, not a sampled estimate, and no
-//! recursion that a degenerate cubic could drive to its maximum depth (harfbuzz 76eb0ae).
-//! Endpoints are kept exactly and consecutive pieces share their joins exactly.
-//!
-//! A cubic whose inner control points lie within the tolerance of its chord is a line
-//! for all purposes (the curve stays in their convex hull, hence within the tolerance of
-//! the chord, and sweeps the whole chord): it becomes that line.
+//! `shaders/winding_area.wgsl` has the f32 twins of [`blossom_value`], [`point_at`],
+//! [`subcurve`], [`monomial`], [`t_at`] and [`integral_x_dy`], under the same names:
+//! `winding`'s CPU mirror of that shader (`methods/winding/area.rs`) calls these.
 
 use glam::DVec2;
 
-use super::{Segment, from_lyon, lyon_cubic};
-
-/// Default conversion tolerance in em: 1/16 px at 4096 px/em, where an edge pixel's
-/// coverage moves by at most 16/255 (and 0.006 px at 400 px/em). What it costs per font
-/// in quadratics and time: `cargo run --release --example prepare_outlines`.
-pub const DEFAULT_QUAD_TOLERANCE_EM: f64 = 1.0 / (4096.0 * 16.0);
-
-/// Replaces a cubic by lines and quadratics within `tolerance` of it; any other segment
-/// is passed through unchanged.
-pub fn cubic_to_quadratics(segment: &Segment, tolerance: f64, out: &mut impl FnMut(Segment)) {
-    let Segment::Cubic(p0, p1, p2, p3) = *segment else {
-        out(*segment);
-        return;
-    };
-    if distance_to_segment(p1, p0, p3) <= tolerance && distance_to_segment(p2, p0, p3) <= tolerance
-    {
-        out(Segment::Line(p0, p3));
-        return;
-    }
-    lyon_cubic(p0, p1, p2, p3).for_each_quadratic_bezier(tolerance, &mut |q| {
-        out(Segment::Quad(
-            from_lyon(q.from),
-            from_lyon(q.ctrl),
-            from_lyon(q.to),
-        ))
-    });
-}
-
 /// A quadratic Bézier: start, control, end.
 pub type Quad = [DVec2; 3];
+
+/// The quadratic that runs along the segment from `a` to `b` at constant speed: its
+/// control point is the midpoint, exact in f64 (a sum and a halving).
+pub fn line_as_quad(a: DVec2, b: DVec2) -> Quad {
+    [a, (a + b) * 0.5, b]
+}
+
+/// A quadratic's blossom at (a, b), for one coordinate (control values `c`): its value
+/// at t when a = b = t, the middle control value of its piece between a and b.
+pub fn blossom_value(c: [f64; 3], a: f64, b: f64) -> f64 {
+    c[0] * ((1.0 - a) * (1.0 - b)) + c[1] * ((1.0 - a) * b + a * (1.0 - b)) + c[2] * (a * b)
+}
+
+/// The curve's blossom at (a, b), both coordinates.
+fn blossom(c: Quad, a: f64, b: f64) -> DVec2 {
+    DVec2::new(
+        blossom_value(c.map(|p| p.x), a, b),
+        blossom_value(c.map(|p| p.y), a, b),
+    )
+}
+
+/// The curve at t.
+pub fn point_at(c: Quad, t: f64) -> DVec2 {
+    blossom(c, t, t)
+}
+
+/// The piece of `c` between parameters `a` and `b`, as a quadratic Bézier of its own.
+pub fn subcurve(c: Quad, a: f64, b: f64) -> Quad {
+    [blossom(c, a, a), blossom(c, a, b), blossom(c, b, b)]
+}
+
+/// Monomial coefficients (t², t, 1) of a quadratic given by its control values.
+pub fn monomial(c: [f64; 3]) -> [f64; 3] {
+    [c[0] - 2.0 * c[1] + c[2], 2.0 * (c[1] - c[0]), c[0]]
+}
+
+/// Where a quadratic (control values) turns, or 1 when it does not inside (0, 1).
+fn turn_at(c: [f64; 3]) -> f64 {
+    let denominator = c[0] - 2.0 * c[1] + c[2];
+    if denominator == 0.0 {
+        return 1.0;
+    }
+    let t = (c[0] - c[1]) / denominator;
+    if t > 0.0 && t < 1.0 { t } else { 1.0 }
+}
+
+/// The curve split where x or y turns: up to three pieces, each monotone in both.
+/// `winding`'s preparation splits every curve so (`aa=area`'s shader takes them
+/// monotone).
+pub fn monotone_pieces(c: Quad) -> [Option<Quad>; 3] {
+    let (tx, ty) = (turn_at(c.map(|p| p.x)), turn_at(c.map(|p| p.y)));
+    let (t1, t2) = (tx.min(ty), tx.max(ty));
+    let piece = |a: f64, b: f64| (b > a).then(|| subcurve(c, a, b));
+    [piece(0.0, t1), piece(t1, t2), piece(t2, 1.0)]
+}
+
+/// The parameter in [0, 1] where a quadratic monotone on [0, 1] (control values `c`)
+/// takes `value`: 0 or 1 when it stays on one side. The stable form of the
+/// quadratic formula, which stays finite as the quadratic degenerates to a line.
+pub fn t_at(c: [f64; 3], value: f64) -> f64 {
+    let increasing = c[2] >= c[0];
+    let (low, high) = if increasing {
+        (c[0], c[2])
+    } else {
+        (c[2], c[0])
+    };
+    if value <= low {
+        return if increasing { 0.0 } else { 1.0 };
+    }
+    if value >= high {
+        return if increasing { 1.0 } else { 0.0 };
+    }
+    let a = c[0] - 2.0 * c[1] + c[2];
+    let b = 2.0 * (c[1] - c[0]);
+    let k = c[0] - value;
+    let root = (b * b - 4.0 * a * k).max(0.0).sqrt();
+    let denominator = b + if increasing { root } else { -root };
+    if denominator == 0.0 {
+        // Only when rounding has flattened the piece: its chord's answer.
+        return ((value - c[0]) / (c[2] - c[0])).clamp(0.0, 1.0);
+    }
+    (-2.0 * k / denominator).clamp(0.0, 1.0)
+}
+
+/// ∫₀¹ x(t) y′(t) dt for a quadratic Bézier given by its control values: exact (the
+/// integrand is a cubic in t).
+pub fn integral_x_dy(x: [f64; 3], y: [f64; 3]) -> f64 {
+    let d0 = y[1] - y[0];
+    let d1 = y[2] - y[1];
+    (x[0] * (3.0 * d0 + d1) + 2.0 * x[1] * (d0 + d1) + x[2] * (d0 + 3.0 * d1)) / 6.0
+}
 
 /// Signed area enclosed by a closed chain of quadratics (positive counter-clockwise,
 /// y up): the polygon of their endpoints plus, for each, the parabolic segment between
@@ -55,177 +112,217 @@ pub fn signed_area(contour: &[Quad]) -> f64 {
         .sum()
 }
 
-/// Distance from `p` to the segment [a, b].
-pub fn distance_to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
-    let ab = b - a;
-    let len2 = ab.length_squared();
-    let t = if len2 > 0.0 {
-        ((p - a).dot(ab) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (a + ab * t).distance(p)
+/// The winding number of closed chains of quadratics around `point`: the signed
+/// crossings of the ray from it towards +x, +1 where a curve crosses upwards (the inside
+/// of a counter-clockwise contour is on its left), −1 downwards. Half-open in y (a point
+/// counts as above the ray when y > point.y), so a crossing at a join of two curves
+/// counts once. A point on a curve gets the number of one of its sides.
+pub fn winding_number<'a>(point: DVec2, curves: impl IntoIterator<Item = &'a Quad>) -> i32 {
+    curves.into_iter().map(|q| ray_crossings(q, point)).sum()
 }
 
-/// The largest distance from points of `cubic` to the `pieces` and back (Hausdorff),
-/// measured on polylines within `resolution` of the true curves: an estimate, for tests
-/// and reports, of the error that the bound above guarantees.
-pub fn max_distance_to_cubic(pieces: &[Segment], cubic: &Segment, resolution: f64) -> f64 {
-    let fine = resolution;
-    let polyline = |segments: &[Segment]| -> Vec<DVec2> {
-        let mut points = vec![segments[0].start()];
-        for s in segments {
-            s.flatten(fine, &mut |p| points.push(p));
+/// One curve's signed crossings of the ray from `p` towards +x (see [`winding_number`]),
+/// in f64: the curve is split at its y extremum into monotonic pieces, each crossing
+/// found by bisection.
+fn ray_crossings(q: &Quad, p: DVec2) -> i32 {
+    let [a, b, c] = q.map(|v| v - p);
+    if a.x.max(b.x).max(c.x) <= 0.0 {
+        return 0;
+    }
+    let at = |t: f64| a * (1.0 - t) * (1.0 - t) + b * 2.0 * t * (1.0 - t) + c * t * t;
+    let split = turn_at([a.y, b.y, c.y]);
+    let mut w = 0;
+    for (t0, t1) in [(0.0, split), (split, 1.0)] {
+        let (above0, above1) = (at(t0).y > 0.0, at(t1).y > 0.0);
+        if t0 == t1 || above0 == above1 {
+            continue;
         }
-        points
-    };
-    let along_cubic = polyline(std::slice::from_ref(cubic));
-    let along_pieces = polyline(pieces);
-    let one_way = |from: &[DVec2], to: &[DVec2]| {
-        from.iter()
-            .map(|p| polyline_distance(*p, to))
-            .fold(0.0, f64::max)
-    };
-    one_way(&along_cubic, &along_pieces).max(one_way(&along_pieces, &along_cubic))
-}
-
-fn polyline_distance(p: DVec2, polyline: &[DVec2]) -> f64 {
-    polyline
-        .windows(2)
-        .map(|w| distance_to_segment(p, w[0], w[1]))
-        .fold(f64::INFINITY, f64::min)
+        let (mut low, mut high) = (t0, t1);
+        for _ in 0..60 {
+            let mid = 0.5 * (low + high);
+            if (at(mid).y > 0.0) == above0 {
+                low = mid;
+            } else {
+                high = mid;
+            }
+        }
+        if at(0.5 * (low + high)).x > 0.0 {
+            w += if above1 { 1 } else { -1 };
+        }
+    }
+    w
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn cubic(pts: [(f64, f64); 4]) -> Segment {
-        let p = pts.map(|(x, y)| DVec2::new(x, y));
-        Segment::Cubic(p[0], p[1], p[2], p[3])
+    fn q(a: (f64, f64), b: (f64, f64), c: (f64, f64)) -> Quad {
+        [DVec2::from(a), DVec2::from(b), DVec2::from(c)]
+    }
+
+    /// The arch (0,0)–(1,2)–(2,0): x(t) = 2t, y(t) = 4t(1 − t).
+    fn arch() -> Quad {
+        q((0.0, 0.0), (1.0, 2.0), (2.0, 0.0))
+    }
+
+    #[test]
+    fn points_and_pieces_by_blossoming() {
+        assert_eq!(point_at(arch(), 0.25), DVec2::new(0.5, 0.75));
+        assert_eq!(point_at(arch(), 0.5), DVec2::new(1.0, 1.0));
+        // The blossom at (0, 1) is the control point; at (t, t) the point at t.
+        assert_eq!(blossom_value([0.0, 2.0, 0.0], 0.0, 1.0), 2.0);
+        assert_eq!(blossom_value([0.0, 2.0, 0.0], 0.5, 0.5), 1.0);
+        // The left half: from the start, through the midpoint of the first leg, to the
+        // apex (de Casteljau by hand).
+        assert_eq!(
+            subcurve(arch(), 0.0, 0.5),
+            q((0.0, 0.0), (0.5, 1.0), (1.0, 1.0))
+        );
+        // A piece runs along the curve: at s it is the curve at a + s (b − a).
+        let piece = subcurve(arch(), 0.2, 0.6);
+        for s in [0.0, 0.25, 0.5, 1.0] {
+            let t = 0.2 + s * 0.4;
+            let want = DVec2::new(2.0 * t, 4.0 * t * (1.0 - t));
+            assert!((point_at(piece, s) - want).length() < 1e-15, "s {s}");
+        }
+    }
+
+    #[test]
+    fn monomials_expand_the_bernstein_form() {
+        // (1 − t)² + 2·2t(1 − t) + 4t² = 1 + 2t + t².
+        assert_eq!(monomial([1.0, 2.0, 4.0]), [1.0, 2.0, 1.0]);
+    }
+
+    #[test]
+    fn a_line_as_a_quadratic() {
+        let line = line_as_quad(DVec2::new(1.0, 2.0), DVec2::new(3.0, -4.0));
+        assert_eq!(line, q((1.0, 2.0), (2.0, -1.0), (3.0, -4.0)));
+    }
+
+    /// (0,0)–(2,−1)–(1,2): x(t) = 4t − 3t² turns at t = 2/3 (x = 4/3, y = 4/9), y(t) =
+    /// 4t² − 2t at t = 1/4 (x = 13/16, y = −1/4).
+    #[test]
+    fn monotone_pieces_split_where_x_and_y_turn() {
+        let c = q((0.0, 0.0), (2.0, -1.0), (1.0, 2.0));
+        let pieces: Vec<Quad> = monotone_pieces(c).into_iter().flatten().collect();
+        let ends = [
+            DVec2::ZERO,
+            DVec2::new(13.0 / 16.0, -0.25),
+            DVec2::new(4.0 / 3.0, 4.0 / 9.0),
+            DVec2::new(1.0, 2.0),
+        ];
+        assert_eq!(pieces.len(), 3);
+        for (k, piece) in pieces.iter().enumerate() {
+            assert!((piece[0] - ends[k]).length() < 1e-15, "piece {k} starts");
+            assert!((piece[2] - ends[k + 1]).length() < 1e-15, "piece {k} ends");
+            // Within rounding: at a turn the middle control value meets the end's.
+            let slack = 1e-15;
+            for values in [piece.map(|p| p.x), piece.map(|p| p.y)] {
+                let rising = values[0] <= values[1] + slack && values[1] <= values[2] + slack;
+                let falling = values[0] + slack >= values[1] && values[1] + slack >= values[2];
+                assert!(rising || falling, "piece {k}: {values:?}");
+            }
+        }
+        // Monotone already: one piece, the curve itself.
+        let monotone = q((0.0, 0.0), (1.0, 0.5), (2.0, 3.0));
+        assert_eq!(monotone_pieces(monotone), [Some(monotone), None, None]);
+    }
+
+    #[test]
+    fn roots_of_monotone_pieces() {
+        // A line from 1 to 3: 2 at the middle.
+        assert_eq!(t_at([1.0, 2.0, 3.0], 2.0), 0.5);
+        // x(t) = t² (0, 0, 1): √0.25 = 0.5; decreasing (1, 1, 0): 1 − t²… at 0.75 → 0.5.
+        assert!((t_at([0.0, 0.0, 1.0], 0.25) - 0.5).abs() < 1e-15);
+        assert!((t_at([1.0, 1.0, 0.0], 0.75) - 0.5).abs() < 1e-15);
+        // Outside the range: the end on that side.
+        assert_eq!(t_at([0.0, 0.5, 1.0], -1.0), 0.0);
+        assert_eq!(t_at([1.0, 0.5, 0.0], -1.0), 1.0);
+    }
+
+    #[test]
+    fn integral_of_x_along_y() {
+        // x = t, y = t²: ∫ t · 2t dt = 2/3.
+        assert!((integral_x_dy([0.0, 0.5, 1.0], [0.0, 0.0, 1.0]) - 2.0 / 3.0).abs() < 1e-15);
+        // x constant: the rise times x.
+        assert_eq!(integral_x_dy([3.0, 3.0, 3.0], [1.0, 5.0, 2.0]), 3.0);
     }
 
     #[test]
     fn parabola_area_is_two_thirds_of_its_triangle() {
         // y = x(2 - x)·… : the chord (0,0)-(2,0) and control (1,2) enclose 4/3.
-        let q = [DVec2::ZERO, DVec2::new(1.0, 2.0), DVec2::new(2.0, 0.0)];
-        let back = [DVec2::new(2.0, 0.0), DVec2::new(1.0, 0.0), DVec2::ZERO];
-        assert!((signed_area(&[q, back]) + 4.0 / 3.0).abs() < 1e-12);
+        let back = q((2.0, 0.0), (1.0, 0.0), (0.0, 0.0));
+        assert!((signed_area(&[arch(), back]) + 4.0 / 3.0).abs() < 1e-12);
     }
 
-    fn convert(c: &Segment, tol: f64) -> Vec<Segment> {
-        let mut out = Vec::new();
-        cubic_to_quadratics(c, tol, &mut |s| out.push(s));
-        out
-    }
-
-    /// Pieces are contiguous, start and end exactly at the cubic's endpoints, and stay
-    /// within the tolerance.
-    fn check(c: &Segment, tol: f64) -> Vec<Segment> {
-        let pieces = convert(c, tol);
-        assert_eq!(pieces.first().unwrap().start(), c.start(), "start moved");
-        assert_eq!(pieces.last().unwrap().end(), c.end(), "end moved");
-        for w in pieces.windows(2) {
-            assert_eq!(w[0].end(), w[1].start(), "gap between pieces");
+    /// The square (x, y)–(x + size, y + size), its sides as quadratics, counter-clockwise
+    /// unless `clockwise`.
+    fn square(x: f64, y: f64, size: f64, clockwise: bool) -> Vec<Quad> {
+        let mut p: Vec<DVec2> = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+            .iter()
+            .map(|&(a, b)| DVec2::new(x + a * size, y + b * size))
+            .collect();
+        if clockwise {
+            p.reverse();
         }
-        // Measured on polylines within tol/100 of the curves.
-        let err = max_distance_to_cubic(&pieces, c, tol / 100.0);
-        assert!(
-            err <= tol * 1.02,
-            "error {err} over tolerance {tol} with {} pieces",
-            pieces.len()
+        (0..4).map(|k| line_as_quad(p[k], p[(k + 1) % 4])).collect()
+    }
+
+    #[test]
+    fn winding_counts_each_crossing_once() {
+        let contour = square(0.0, 0.0, 10.0, false);
+        assert_eq!(winding_number(DVec2::new(5.0, 5.0), &contour), 1);
+        assert_eq!(
+            winding_number(DVec2::new(5.0, 5.0), &square(0.0, 0.0, 10.0, true)),
+            -1
         );
-        pieces
-    }
-
-    #[test]
-    fn hard_cubics_stay_within_tolerance() {
-        let cases = [
-            (
-                "cusp",
-                cubic([(0.0, 0.0), (1000.0, 1000.0), (0.0, 1000.0), (1000.0, 0.0)]),
-            ),
-            (
-                "loop",
-                cubic([
-                    (0.0, 0.0),
-                    (1500.0, 1000.0),
-                    (-500.0, 1000.0),
-                    (1000.0, 0.0),
-                ]),
-            ),
-            (
-                "inflection",
-                cubic([(0.0, 0.0), (400.0, 800.0), (600.0, -800.0), (1000.0, 0.0)]),
-            ),
-            (
-                "arc",
-                cubic([(0.0, 0.0), (0.0, 552.0), (448.0, 1000.0), (1000.0, 1000.0)]),
-            ),
-            (
-                "tiny",
-                cubic([(0.0, 0.0), (0.1, 0.2), (0.2, -0.1), (0.3, 0.0)]),
-            ),
+        // Level with the bottom side's ends: the vertex at (10, 0) counts once.
+        assert_eq!(winding_number(DVec2::new(5.0, 0.0), &contour), 1);
+        assert_eq!(winding_number(DVec2::new(15.0, 5.0), &contour), 0);
+        // Inside two squares, one in the other, wound the same way; inside a ring.
+        let stacked = [contour.clone(), square(2.0, 2.0, 6.0, false)].concat();
+        assert_eq!(winding_number(DVec2::new(5.0, 5.0), &stacked), 2);
+        let ring = [contour.clone(), square(2.0, 2.0, 6.0, true)].concat();
+        assert_eq!(winding_number(DVec2::new(5.0, 5.0), &ring), 0);
+        assert_eq!(winding_number(DVec2::new(1.0, 5.0), &ring), 1);
+        // A curved side: the parabola (0,0)–(5,10)–(10,0) peaks at y = 5.
+        let arch = [
+            q((0.0, 0.0), (5.0, 10.0), (10.0, 0.0)),
+            q((10.0, 0.0), (5.0, 0.0), (0.0, 0.0)),
         ];
-        for tol in [1.0, 0.1, 0.01] {
-            for (name, c) in &cases {
-                let n = check(c, tol).len();
-                assert!(n < 200, "{name}: {n} pieces at tolerance {tol}");
-            }
-        }
+        assert_eq!(winding_number(DVec2::new(5.0, 4.9), &arch), -1);
+        assert_eq!(winding_number(DVec2::new(5.0, 5.1), &arch), 0);
     }
 
     #[test]
-    fn collinear_cubics_become_lines_not_deep_recursion() {
-        // Inner points on the chord, unevenly spaced (nonzero third difference).
-        let c = cubic([(0.0, 0.0), (100.0, 100.0), (150.0, 150.0), (1000.0, 1000.0)]);
-        assert_eq!(check(&c, 0.01), vec![Segment::Line(c.start(), c.end())]);
-        // Degenerate: control points on the endpoints.
-        let c = cubic([(0.0, 0.0), (0.0, 0.0), (500.0, 0.0), (500.0, 0.0)]);
-        assert_eq!(check(&c, 0.01).len(), 1);
-        // All four points equal.
-        let c = cubic([(7.0, 7.0); 4]);
-        assert_eq!(convert(&c, 0.01), vec![Segment::Line(c.start(), c.end())]);
-    }
-
-    #[test]
-    fn collinear_cubic_that_doubles_back_keeps_its_overshoot() {
-        // Collinear, but the curve runs past its end and returns: a line would cut the
-        // overshoot off, so it must go through the bounded split instead.
-        let c = cubic([(0.0, 0.0), (2000.0, 0.0), (2000.0, 0.0), (1000.0, 0.0)]);
-        let pieces = check(&c, 0.01);
-        assert!(pieces.len() > 1 && pieces.len() < 200);
-    }
-
-    #[test]
-    fn latin_modern_cubics_at_the_default_tolerance() {
-        let font = crate::font::Font::shipped(1);
-        let tol = DEFAULT_QUAD_TOLERANCE_EM * font.units_per_em();
-        let mut checked = 0;
-        for c in "&Qag§".chars() {
-            let outline = font.outline(font.glyph_for_char(c).unwrap());
-            for s in outline
-                .segments()
-                .filter(|s| matches!(s, Segment::Cubic(..)))
-            {
-                let pieces = convert(s, tol);
-                let err = max_distance_to_cubic(&pieces, s, tol / 20.0);
-                assert!(err <= tol * 1.1, "{c:?}: {err} over {tol}");
-                checked += 1;
-            }
-        }
-        assert!(checked > 50, "only {checked} cubics");
-    }
-
-    #[test]
-    fn piece_count_follows_the_closed_form_bound() {
-        let c = cubic([(0.0, 0.0), (400.0, 800.0), (600.0, -800.0), (1000.0, 0.0)]);
-        let coarse = convert(&c, 1.0).len();
-        let fine = convert(&c, 1.0 / 8.0).len();
-        // n ∝ tolerance^(-1/3): 8x tighter needs about twice the pieces.
-        assert!(
-            (fine as f64 / coarse as f64 - 2.0).abs() < 0.5,
-            "{coarse} -> {fine}"
+    fn ray_crossings_count_each_way_once_at_joins() {
+        let p = DVec2::ZERO;
+        // Upwards right of p: +1; downwards: −1; left of p: nothing.
+        assert_eq!(ray_crossings(&q((1.0, -1.0), (2.0, 0.0), (1.0, 1.0)), p), 1);
+        assert_eq!(
+            ray_crossings(&q((1.0, 1.0), (2.0, 0.0), (1.0, -1.0)), p),
+            -1
+        );
+        assert_eq!(
+            ray_crossings(&q((-1.0, -1.0), (-2.0, 0.0), (-1.0, 1.0)), p),
+            0
+        );
+        // A parabola dipping through the ray twice, and one only touching it.
+        assert_eq!(ray_crossings(&q((1.0, 1.0), (2.0, -2.0), (3.0, 1.0)), p), 0);
+        assert_eq!(ray_crossings(&q((1.0, 1.0), (2.0, -1.0), (3.0, 1.0)), p), 0);
+        // Two lines joined on the ray, going up: one crossing between them.
+        let below = q((1.0, -1.0), (1.0, -0.5), (1.0, 0.0));
+        let above = q((1.0, 0.0), (1.0, 0.5), (1.0, 1.0));
+        assert_eq!(ray_crossings(&below, p) + ray_crossings(&above, p), 1);
+        // A crossing left of p on a curve that reaches right of it does not count.
+        assert_eq!(
+            ray_crossings(&q((-1.0, -1.0), (3.0, 0.0), (-1.0, 1.0)), p),
+            1
+        );
+        assert_eq!(
+            ray_crossings(&q((-1.0, -1.0), (0.0, 0.0), (-1.0, 1.0)), p),
+            0
         );
     }
 }

@@ -24,11 +24,10 @@
 use std::ops::Range;
 
 use glam::DVec2;
-use lyon_geom::{LineSegment, QuadraticBezierSegment};
+use lyon_geom::LineSegment;
 
 use super::curves::CurveLayout;
-use crate::geometry::Quad;
-use crate::geometry::Rect;
+use crate::geometry::{Quad, Rect, from_lyon, lyon_quad, to_lyon};
 
 /// Which distance decides the nearest curve.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -254,7 +253,7 @@ impl Candidate {
         let (samples, polyline, slack) = match mode {
             Mode::Estimate => (vec![q[0], (q[0] + q[2]) * 0.5, q[2]], vec![q[0], q[2]], 0.0),
             Mode::Exact => {
-                let curve = to_lyon_quad(q);
+                let curve = lyon_quad(q);
                 let samples = [0.0, 0.25, 0.5, 0.75, 1.0]
                     .map(|t| from_lyon(curve.sample(t)))
                     .to_vec();
@@ -379,22 +378,6 @@ fn segment_meets_rect(rect: &Rect, a: DVec2, b: DVec2) -> bool {
     true
 }
 
-pub(super) fn to_lyon_quad(q: Quad) -> QuadraticBezierSegment<f64> {
-    QuadraticBezierSegment {
-        from: to_lyon(q[0]),
-        ctrl: to_lyon(q[1]),
-        to: to_lyon(q[2]),
-    }
-}
-
-fn to_lyon(p: DVec2) -> lyon_geom::Point<f64> {
-    lyon_geom::point(p.x, p.y)
-}
-
-fn from_lyon(p: lyon_geom::Point<f64>) -> DVec2 {
-    DVec2::new(p.x, p.y)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -417,7 +400,7 @@ mod tests {
                 to: to_lyon(q[2]),
             }
             .distance_to_point(to_lyon(p)),
-            Mode::Exact => to_lyon_quad(q).distance_to_point(to_lyon(p)),
+            Mode::Exact => lyon_quad(q).distance_to_point(to_lyon(p)),
         }
     }
 
@@ -491,7 +474,7 @@ mod tests {
         for (row, band) in bands.iter().enumerate() {
             let rect = grid.cell_rect(row * grid.cols as usize);
             for (slot, q) in layout.curves() {
-                let curve = to_lyon_quad(q);
+                let curve = lyon_quad(q);
                 let (low, high) = curve.bounding_range_y();
                 if low <= rect.max.y && high >= rect.min.y {
                     assert!(band.contains(&slot), "row {row} lacks curve {slot}");

@@ -16,10 +16,9 @@
 
 use glam::DVec2;
 
-use crate::camera::Camera;
-use crate::geometry::{Contour, Outline, Quad, Segment, signed_area};
-use crate::reference;
-use crate::scene::Scene;
+use crate::geometry::{
+    Contour, Outline, Quad, Segment, line_as_quad, point_at, signed_area, winding_number,
+};
 
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct CurveLayout {
@@ -98,14 +97,10 @@ const MERGED_BELOW_STEPS: f64 = 10.0;
 /// A segment as a quadratic. Cubics are not expected here (the caller converts them) but
 /// are reduced to their endpoints' line rather than dropped if one slips through.
 fn as_quad(segment: &Segment) -> Quad {
-    match *segment {
-        Segment::Line(a, b) => [a, (a + b) * 0.5, b],
-        Segment::Quad(a, b, c) => [a, b, c],
-        Segment::Cubic(a, _, _, d) => {
-            debug_assert!(false, "cubics are converted before layout");
-            [a, (a + d) * 0.5, d]
-        }
-    }
+    segment.as_quad().unwrap_or_else(|| {
+        debug_assert!(false, "cubics are converted before layout");
+        line_as_quad(segment.start(), segment.end())
+    })
 }
 
 /// Whether the curve is too short, as the GPU sees it in f32, for its direction to mean
@@ -188,15 +183,13 @@ fn winding_of_others_around(contours: &[Vec<Quad>], k: usize) -> i32 {
     let own = &contours[k];
     let stride = own.len().div_ceil(WINDING_SAMPLES);
     let mut seen: Vec<(i32, usize)> = Vec::new();
-    for [a, b, c] in own.iter().step_by(stride) {
-        let p = 0.25 * a + 0.5 * b + 0.25 * c;
-        let w: i32 = contours
+    for q in own.iter().step_by(stride) {
+        let others = contours
             .iter()
             .enumerate()
             .filter(|&(j, _)| j != k)
-            .flat_map(|(_, other)| other.iter())
-            .map(|q| ray_crossings(q, p))
-            .sum();
+            .flat_map(|(_, other)| other.iter());
+        let w = winding_number(point_at(*q, 0.5), others);
         match seen.iter_mut().find(|(value, _)| *value == w) {
             Some((_, count)) => *count += 1,
             None => seen.push((w, 1)),
@@ -205,74 +198,6 @@ fn winding_of_others_around(contours: &[Vec<Quad>], k: usize) -> i32 {
     seen.iter()
         .max_by_key(|&&(_, count)| count)
         .map_or(0, |&(w, _)| w)
-}
-
-/// Signed crossings of the ray from `p` towards +x by the quadratic, in f64: +1 where
-/// the curve crosses upwards (the inside of a counter-clockwise contour is on its left),
-/// −1 downwards. Half-open in y (a point counts as above the ray when y > p.y), so a
-/// crossing at a join of two curves counts once. The curve is split at its y extremum
-/// into monotonic pieces, each crossing found by bisection.
-fn ray_crossings(q: &Quad, p: DVec2) -> i32 {
-    let [a, b, c] = q.map(|v| v - p);
-    if a.x.max(b.x).max(c.x) <= 0.0 {
-        return 0;
-    }
-    let at = |t: f64| a * (1.0 - t) * (1.0 - t) + b * 2.0 * t * (1.0 - t) + c * t * t;
-    let curvature = a.y - 2.0 * b.y + c.y;
-    let extremum = (a.y - b.y) / curvature;
-    let split = if curvature != 0.0 && extremum > 0.0 && extremum < 1.0 {
-        extremum
-    } else {
-        1.0
-    };
-    let mut w = 0;
-    for (t0, t1) in [(0.0, split), (split, 1.0)] {
-        let (above0, above1) = (at(t0).y > 0.0, at(t1).y > 0.0);
-        if t0 == t1 || above0 == above1 {
-            continue;
-        }
-        let (mut low, mut high) = (t0, t1);
-        for _ in 0..60 {
-            let mid = 0.5 * (low + high);
-            if (at(mid).y > 0.0) == above0 {
-                low = mid;
-            } else {
-                high = mid;
-            }
-        }
-        if at(0.5 * (low + high)).x > 0.0 {
-            w += if above1 { 1 } else { -1 };
-        }
-    }
-    w
-}
-
-/// Whether contours of `outline` (cubics converted already) overlap, or one crosses
-/// itself: then the nonzero rule fills less than the contours' signed areas add up to,
-/// and the distance to the nearest curve is wrong near the curves inside the fill (a
-/// known weakness of distance fields). Measured with the exact reference at 512 px
-/// across the glyph, whose area is good to about 1e-6: a difference of 1e-4 of the area
-/// counts, so that the small folds variable fonts leave at joins (Inter's 'G' has one)
-/// count too.
-pub fn overlapping_contours(outline: &Outline) -> bool {
-    let Some(bounds) = outline.control_bounds() else {
-        return false;
-    };
-    let contours: Vec<Vec<Quad>> = outline.contours.iter().map(contour_quads).collect();
-    let signed: f64 = contours.iter().map(|c| signed_area(c)).sum();
-    // An em as large as the glyph, drawn 512 pixels across.
-    let extent = bounds.size().max_element().max(1e-9);
-    let scene = Scene::from_outlines(extent, vec![(outline.clone(), DVec2::ZERO)]);
-    let scale = 512.0 / extent;
-    let camera = Camera::new(
-        (bounds.size().x * scale).ceil() as u32 + 4,
-        (bounds.size().y * scale).ceil() as u32 + 4,
-        512.0,
-        DVec2::new(2.0 - bounds.min.x * scale, 2.0 + bounds.max.y * scale),
-    );
-    let filled = reference::rasterize(&scene, &camera).map_or(0.0, |image| image.sum());
-    let filled = filled / (scale * scale);
-    (filled - signed.abs()).abs() > 1e-4 * filled.max(signed.abs())
 }
 
 #[cfg(test)]
@@ -406,10 +331,18 @@ mod tests {
         assert_eq!(layout.curve_slots, vec![1, 2, 3, 4]);
         for (k, &slot) in layout.curve_slots.iter().enumerate() {
             let previous = layout.curve_slots[(k + 3) % 4];
-            assert_eq!(layout.curve(slot - 1), layout.curve(previous), "the previous curve leads");
+            assert_eq!(
+                layout.curve(slot - 1),
+                layout.curve(previous),
+                "the previous curve leads"
+            );
             let next = layout.curve_slots[(k + 1) % 4];
             assert_eq!(layout.curve(slot)[2], layout.curve(next)[0], "closed");
-            assert_eq!(layout.curve(slot + 1), layout.curve(next), "the next curve follows");
+            assert_eq!(
+                layout.curve(slot + 1),
+                layout.curve(next),
+                "the next curve follows"
+            );
         }
     }
 
@@ -446,7 +379,11 @@ mod tests {
             for (k, &slot) in slots.iter().enumerate() {
                 let previous = slots[(k + contour - 1) % contour];
                 let next = slots[(k + 1) % contour];
-                assert_eq!(layout.curve(slot - 1), layout.curve(previous), "{contour}: {k}");
+                assert_eq!(
+                    layout.curve(slot - 1),
+                    layout.curve(previous),
+                    "{contour}: {k}"
+                );
                 assert_eq!(layout.curve(slot + 1), layout.curve(next), "{contour}: {k}");
             }
             start += contour;
@@ -507,63 +444,6 @@ mod tests {
                 );
             }
         }
-    }
-
-    #[test]
-    fn ray_crossings_count_each_way_once_at_joins() {
-        let q = |a: (f64, f64), b: (f64, f64), c: (f64, f64)| {
-            [DVec2::from(a), DVec2::from(b), DVec2::from(c)]
-        };
-        let p = DVec2::ZERO;
-        // Upwards right of p: +1; downwards: −1; left of p: nothing.
-        assert_eq!(ray_crossings(&q((1.0, -1.0), (2.0, 0.0), (1.0, 1.0)), p), 1);
-        assert_eq!(
-            ray_crossings(&q((1.0, 1.0), (2.0, 0.0), (1.0, -1.0)), p),
-            -1
-        );
-        assert_eq!(
-            ray_crossings(&q((-1.0, -1.0), (-2.0, 0.0), (-1.0, 1.0)), p),
-            0
-        );
-        // A parabola dipping through the ray twice, and one only touching it.
-        assert_eq!(ray_crossings(&q((1.0, 1.0), (2.0, -2.0), (3.0, 1.0)), p), 0);
-        assert_eq!(ray_crossings(&q((1.0, 1.0), (2.0, -1.0), (3.0, 1.0)), p), 0);
-        // Two lines joined on the ray, going up: one crossing between them.
-        let below = q((1.0, -1.0), (1.0, -0.5), (1.0, 0.0));
-        let above = q((1.0, 0.0), (1.0, 0.5), (1.0, 1.0));
-        assert_eq!(ray_crossings(&below, p) + ray_crossings(&above, p), 1);
-        // A crossing left of p on a curve that reaches right of it does not count.
-        assert_eq!(
-            ray_crossings(&q((-1.0, -1.0), (3.0, 0.0), (-1.0, 1.0)), p),
-            1
-        );
-        assert_eq!(
-            ray_crossings(&q((-1.0, -1.0), (0.0, 0.0), (-1.0, 1.0)), p),
-            0
-        );
-    }
-
-    #[test]
-    fn overlaps_are_told_from_holes() {
-        let square = |x: f64, y: f64, clockwise: bool| square_at(x, y, 10.0, clockwise);
-        let outline = |contours| Outline { contours };
-        let ring = {
-            // A hole: a smaller square inside, the other way round.
-            let mut hole = square(0.0, 0.0, true);
-            for s in &mut hole.segments {
-                *s = s.map(|p| p * 0.5 + DVec2::splat(2.5));
-            }
-            outline(vec![square(0.0, 0.0, false), hole])
-        };
-        assert!(!overlapping_contours(&ring));
-        assert!(!overlapping_contours(&outline(vec![
-            square(0.0, 0.0, false),
-            square(20.0, 0.0, false)
-        ])));
-        assert!(overlapping_contours(&outline(vec![
-            square(0.0, 0.0, false),
-            square(5.0, 5.0, false)
-        ])));
     }
 
     #[test]

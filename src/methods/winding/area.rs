@@ -8,6 +8,8 @@
 //! has no mirror here, nor its `AXIS` draws' rounding of the pixel's steps to the axes;
 //! `stretch` and `right_of` here are steps the shader writes inline, and the frame's
 //! constants for `area_below` (`width`, `rise`, `growth`) it computes once a pixel.
+//! The quadratic's own helpers the shader has (`blossom_value`, `point_at`, `subcurve`,
+//! `monomial`, `t_at`, `integral_x_dy`) are [`crate::geometry`]'s, under the same names.
 //!
 //! # The integral
 //!
@@ -63,8 +65,9 @@
 
 use glam::DVec2;
 
-/// A quadratic Bézier: its three control points.
-pub type Bezier = [DVec2; 3];
+use crate::geometry::{
+    Quad, blossom_value, integral_x_dy, monomial, monotone_pieces, point_at, subcurve, t_at,
+};
 
 /// The frame one pixel is integrated in: local offsets from the pixel's centre,
 /// mirrored to the band direction and scaled so that the pixel P has area 1.
@@ -174,7 +177,7 @@ pub fn area_below(v: f64, f: &PixelFrame) -> f64 {
 /// The pixel-averaged winding number F of the pixel centred on local point `centre`
 /// (steps `jx`, `jy`), over every curve of a glyph: every curve is visited, no bands;
 /// each is first split where x or y turns, as the glyph's preparation does.
-pub fn pixel_winding(curves: &[Bezier], centre: DVec2, jx: DVec2, jy: DVec2) -> f64 {
+pub fn pixel_winding(curves: &[Quad], centre: DVec2, jx: DVec2, jy: DVec2) -> f64 {
     let Some(frame) = PixelFrame::new(jx, jy, 1.0) else {
         return 0.0;
     };
@@ -208,7 +211,7 @@ pub enum Zone {
 }
 
 /// The zone of a curve's control points (a curve lies within their hull).
-pub fn zone(c: &Bezier, f: &PixelFrame) -> Zone {
+pub fn zone(c: &Quad, f: &PixelFrame) -> Zone {
     let min = c[0].min(c[1]).min(c[2]);
     let max = c[0].max(c[1]).max(c[2]);
     if max.y <= f.bottom.y || min.y >= -f.bottom.y || max.x <= -f.reach {
@@ -221,7 +224,7 @@ pub fn zone(c: &Bezier, f: &PixelFrame) -> Zone {
 }
 
 /// ∫ G dv along one curve monotone in u and v, in a pixel frame.
-pub fn curve_term(c: Bezier, f: &PixelFrame) -> f64 {
+pub fn curve_term(c: Quad, f: &PixelFrame) -> f64 {
     match zone(&c, f) {
         Zone::Outside => 0.0,
         Zone::Right => area_below(c[2].y, f) - area_below(c[0].y, f),
@@ -248,7 +251,7 @@ fn right_of(u: [f64; 3], reach: f64) -> (f64, f64) {
 /// monotone in u and v meets the rectangle in one stretch, [the later entry, the
 /// earlier exit]; right of it, it adds the width times the height it climbs within the
 /// rows.
-pub fn across_axis(c: Bezier, f: &PixelFrame) -> f64 {
+pub fn across_axis(c: Quad, f: &PixelFrame) -> f64 {
     let (u, v) = (c.map(|p| p.x), c.map(|p| p.y));
     let (left, low) = (-f.reach, f.bottom.y);
     let rows = stretch(v, low, -low);
@@ -263,7 +266,7 @@ pub fn across_axis(c: Bezier, f: &PixelFrame) -> f64 {
 /// ∫ G dv along a curve across P: right of P's columns P's area between heights, and
 /// the stretch within P's bounding box, cut out first so that u and v stay within a
 /// pixel, as four ramps, one per segment of P's left and right sides.
-pub fn across_term(c: Bezier, f: &PixelFrame) -> f64 {
+pub fn across_term(c: Quad, f: &PixelFrame) -> f64 {
     let (u, v) = (c.map(|p| p.x), c.map(|p| p.y));
     let low = f.bottom.y;
     let columns = stretch(u, -f.reach, f.reach);
@@ -357,7 +360,7 @@ fn ramp_over(u: [f64; 3], v: [f64; 3], k: f64, offset: f64, t0: f64, t1: f64) ->
 /// in x and y turns in α or in β, not both, when P's steps lean apart (its tangent
 /// stays in one quadrant, and only one step's line runs through it), so the form it is
 /// integrated by keeps its edge coordinate monotone ([`clamp_term`]).
-pub fn across_square(c: Bezier, f: &PixelFrame) -> f64 {
+pub fn across_square(c: Quad, f: &PixelFrame) -> f64 {
     let square = c.map(|p| DVec2::new(f.alpha_of.dot(p), f.beta_of.dot(p)));
     let (alpha, beta) = (square.map(|p| p.x), square.map(|p| p.y));
     // A coordinate's derivative is linear in t: it changes sign where its ends' signs
@@ -485,93 +488,10 @@ fn rows_correction(q: DVec2, f: &PixelFrame) -> f64 {
     -beta_u / f.alpha_of.x * (antiderivative(alpha_at(q.x.clamp(lo, hi))) - antiderivative(start))
 }
 
-/// Monomial coefficients (t², t, 1) of a quadratic given by its control values.
-fn monomial(c: [f64; 3]) -> [f64; 3] {
-    [c[0] - 2.0 * c[1] + c[2], 2.0 * (c[1] - c[0]), c[0]]
-}
-
-/// Where a quadratic (control values) turns, or 1 when it does not inside (0, 1).
-fn turn(c: [f64; 3]) -> f64 {
-    let denominator = c[0] - 2.0 * c[1] + c[2];
-    if denominator == 0.0 {
-        return 1.0;
-    }
-    let t = (c[0] - c[1]) / denominator;
-    if t > 0.0 && t < 1.0 { t } else { 1.0 }
-}
-
-/// The curve split where x or y turns: up to three pieces, each monotone in both. The
-/// glyph's preparation splits every curve so (`aa=area`'s shader takes them monotone).
-pub fn monotone_pieces(c: Bezier) -> [Option<Bezier>; 3] {
-    let (tx, ty) = (turn(c.map(|p| p.x)), turn(c.map(|p| p.y)));
-    let (t1, t2) = (tx.min(ty), tx.max(ty));
-    let piece = |a: f64, b: f64| (b > a).then(|| subcurve(c, a, b));
-    [piece(0.0, t1), piece(t1, t2), piece(t2, 1.0)]
-}
-
-/// ∫₀¹ x(t) y′(t) dt for a quadratic Bézier given by its control values: exact (the
-/// integrand is a cubic in t).
-pub fn integral_x_dy(x: [f64; 3], y: [f64; 3]) -> f64 {
-    let d0 = y[1] - y[0];
-    let d1 = y[2] - y[1];
-    (x[0] * (3.0 * d0 + d1) + 2.0 * x[1] * (d0 + d1) + x[2] * (d0 + 3.0 * d1)) / 6.0
-}
-
-/// The parameter in [0, 1] where a quadratic monotone on [0, 1] (control values `c`)
-/// takes `value`: 0 or 1 when it stays on one side. The stable form of the
-/// quadratic formula, which stays finite as the quadratic degenerates to a line.
-pub fn t_at(c: [f64; 3], value: f64) -> f64 {
-    let increasing = c[2] >= c[0];
-    let (low, high) = if increasing {
-        (c[0], c[2])
-    } else {
-        (c[2], c[0])
-    };
-    if value <= low {
-        return if increasing { 0.0 } else { 1.0 };
-    }
-    if value >= high {
-        return if increasing { 1.0 } else { 0.0 };
-    }
-    let a = c[0] - 2.0 * c[1] + c[2];
-    let b = 2.0 * (c[1] - c[0]);
-    let k = c[0] - value;
-    let root = (b * b - 4.0 * a * k).max(0.0).sqrt();
-    let denominator = b + if increasing { root } else { -root };
-    if denominator == 0.0 {
-        // Only when rounding has flattened the piece: its chord's answer.
-        return ((value - c[0]) / (c[2] - c[0])).clamp(0.0, 1.0);
-    }
-    (-2.0 * k / denominator).clamp(0.0, 1.0)
-}
-
-/// A quadratic's blossom at (a, b), for one coordinate (control values `c`).
-fn blossom_value(c: [f64; 3], a: f64, b: f64) -> f64 {
-    c[0] * ((1.0 - a) * (1.0 - b)) + c[1] * ((1.0 - a) * b + a * (1.0 - b)) + c[2] * (a * b)
-}
-
-/// The curve's blossom at (a, b): the point at t when a = b = t; the middle control
-/// point of the piece between a and b.
-fn blossom(c: Bezier, a: f64, b: f64) -> DVec2 {
-    DVec2::new(
-        blossom_value(c.map(|p| p.x), a, b),
-        blossom_value(c.map(|p| p.y), a, b),
-    )
-}
-
-/// The curve at t.
-fn point_at(c: Bezier, t: f64) -> DVec2 {
-    blossom(c, t, t)
-}
-
-/// The piece of `c` between parameters `a` and `b`, as a quadratic Bézier of its own.
-fn subcurve(c: Bezier, a: f64, b: f64) -> Bezier {
-    [blossom(c, a, a), blossom(c, a, b), blossom(c, b, b)]
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::line_as_quad;
 
     /// Local → image as a 2×2 matrix (columns: the images of local x and y), the same
     /// in every test: a pixel's steps are its inverse's columns.
@@ -590,7 +510,7 @@ mod tests {
         }
 
         /// F at the pixel whose top-left corner is (i, j), from the curves in local.
-        fn winding(&self, curves: &[Bezier], i: i32, j: i32) -> f64 {
+        fn winding(&self, curves: &[Quad], i: i32, j: i32) -> f64 {
             let to_local = self.to_image.inverse();
             let centre =
                 to_local * (DVec2::new(f64::from(i) + 0.5, f64::from(j) + 0.5) - self.origin);
@@ -630,13 +550,9 @@ mod tests {
         ]
     }
 
-    fn line(a: DVec2, b: DVec2) -> Bezier {
-        [a, (a + b) * 0.5, b]
-    }
-
-    fn polygon_curves(points: &[DVec2]) -> Vec<Bezier> {
+    fn polygon_curves(points: &[DVec2]) -> Vec<Quad> {
         (0..points.len())
-            .map(|k| line(points[k], points[(k + 1) % points.len()]))
+            .map(|k| line_as_quad(points[k], points[(k + 1) % points.len()]))
             .collect()
     }
 
@@ -777,8 +693,7 @@ mod tests {
                 for (name, m) in cameras() {
                     // The square is given in image space: take it back to local.
                     let to_local = m.inverse();
-                    let local: Vec<Bezier> =
-                        curves.iter().map(|c| c.map(|p| to_local * p)).collect();
+                    let local: Vec<Quad> = curves.iter().map(|c| c.map(|p| to_local * p)).collect();
                     let got = Camera::new(m, DVec2::ZERO).winding(&local, 0, 0).abs();
                     let want = clipped_area(&square, 0, 0);
                     assert!(
@@ -800,11 +715,11 @@ mod tests {
             DVec2::new(0.85, 0.3),
         );
         let triangle = 0.5 * (b - a).perp_dot(c - a).abs();
-        let segment = [[a, b, c], line(c, a)];
+        let segment = [[a, b, c], line_as_quad(c, a)];
         for (name, m) in cameras() {
             // Given in image space inside pixel (3, 2); taken back to local.
             let to_local = m.inverse();
-            let local: Vec<Bezier> = segment
+            let local: Vec<Quad> = segment
                 .iter()
                 .map(|q| q.map(|p| to_local * (p + DVec2::new(3.0, 2.0))))
                 .collect();
@@ -829,7 +744,7 @@ mod tests {
             DVec2::new(0.0, -4.0),
             DVec2::new(2.0, 4.0),
         ];
-        let closed = [arc, line(arc[2], arc[0])];
+        let closed = [arc, line_as_quad(arc[2], arc[0])];
         // ∫ from a to b of clamp(x², lo, hi) dx, split where x² crosses lo and hi.
         let clamped_integral = |a: f64, b: f64, lo: f64, hi: f64| {
             let mut cuts = vec![a, b];
@@ -868,7 +783,7 @@ mod tests {
         };
         for (name, m) in cameras() {
             let to_local = m.inverse();
-            let local: Vec<Bezier> = closed.iter().map(|q| q.map(|p| to_local * p)).collect();
+            let local: Vec<Quad> = closed.iter().map(|q| q.map(|p| to_local * p)).collect();
             let cam = Camera::new(m, DVec2::ZERO);
             for j in -1..5 {
                 for i in -3..3 {
@@ -1036,18 +951,6 @@ mod tests {
             let (a, b) = (across_square(piece, &f), across_term(piece, &f));
             assert!((a - b).abs() < 1e-5, "offset {offset}: {a} vs {b}");
         }
-    }
-
-    #[test]
-    fn roots_of_monotone_pieces() {
-        // A line from 1 to 3: 2 at the middle.
-        assert_eq!(t_at([1.0, 2.0, 3.0], 2.0), 0.5);
-        // x(t) = t² (0, 0, 1): √0.25 = 0.5; decreasing (1, 1, 0): 1 − t²… at 0.75 → 0.5.
-        assert!((t_at([0.0, 0.0, 1.0], 0.25) - 0.5).abs() < 1e-15);
-        assert!((t_at([1.0, 1.0, 0.0], 0.75) - 0.5).abs() < 1e-15);
-        // Outside the range: the end on that side.
-        assert_eq!(t_at([0.0, 0.5, 1.0], -1.0), 0.0);
-        assert_eq!(t_at([1.0, 0.5, 0.0], -1.0), 1.0);
     }
 
     #[test]

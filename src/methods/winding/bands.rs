@@ -14,9 +14,10 @@
 
 use glam::DVec2;
 
-use super::area::monotone_pieces;
 use super::overlaps::overlap_flags;
-use crate::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Segment, cubic_to_quadratics};
+use crate::geometry::{
+    DEFAULT_QUAD_TOLERANCE_EM, Outline, Quad, Segment, cubic_to_quadratics, monotone_pieces,
+};
 use crate::scene::Scene;
 
 /// `Curve` in `winding.wgsl`.
@@ -92,10 +93,12 @@ pub struct GlyphData {
     pub marked: Vec<bool>,
 }
 
-/// A quadratic curve in local font units, as f32 the way the GPU holds it.
+/// A quadratic curve as the bands are built from it: in local font units, rounded to
+/// f32 the way the GPU holds it, with its bounds and marks ([`GpuCurve`] is the record
+/// the GPU reads).
 #[derive(Clone, Copy, Debug)]
-struct Quad {
-    p: [DVec2; 3],
+struct PreparedCurve {
+    p: Quad,
     min: DVec2,
     max: DVec2,
     /// Marked by [`overlap_flags`] (only for [`Layout::Area`]).
@@ -107,7 +110,7 @@ struct Quad {
     parent: u32,
 }
 
-impl Quad {
+impl PreparedCurve {
     fn along(&self, axis: usize) -> (f64, f64) {
         (self.min[axis], self.max[axis])
     }
@@ -126,7 +129,7 @@ impl Quad {
 /// `tolerance` (font units); lines become quadratics with their midpoint as control
 /// point, exactly representable; zero-length pieces, which cannot change any winding
 /// number, are dropped.
-fn contours(outline: &Outline, tolerance: f64) -> Vec<Vec<Quad>> {
+fn contours(outline: &Outline, tolerance: f64) -> Vec<Vec<PreparedCurve>> {
     outline
         .contours
         .iter()
@@ -142,22 +145,18 @@ fn contours(outline: &Outline, tolerance: f64) -> Vec<Vec<Quad>> {
 
 /// Appends `segment` as quadratics; a cubic is converted here, so that no outline a
 /// caller passes can reach the shader with a curve it cannot read.
-fn push_quads(segment: &Segment, tolerance: f64, quads: &mut Vec<Quad>) {
-    let p = match *segment {
-        Segment::Line(a, b) => [a, (a + b) * 0.5, b],
-        Segment::Quad(a, b, c) => [a, b, c],
-        Segment::Cubic(..) => {
-            // The conversion yields only lines and quadratics, handled above.
-            cubic_to_quadratics(segment, tolerance, &mut |piece| {
-                push_quads(&piece, tolerance, quads)
-            });
-            return;
-        }
+fn push_quads(segment: &Segment, tolerance: f64, quads: &mut Vec<PreparedCurve>) {
+    let Some(p) = segment.as_quad() else {
+        // A cubic: the conversion yields only lines and quadratics.
+        cubic_to_quadratics(segment, tolerance, &mut |piece| {
+            push_quads(&piece, tolerance, quads)
+        });
+        return;
     };
     // Round once, here, so that bounds and bands agree with what the GPU sees.
     let p = p.map(|v| v.as_vec2().as_dvec2());
     if p[0] != p[1] || p[1] != p[2] {
-        quads.push(Quad {
+        quads.push(PreparedCurve {
             p,
             min: p[0].min(p[1]).min(p[2]),
             max: p[0].max(p[1]).max(p[2]),
@@ -173,14 +172,14 @@ fn push_quads(segment: &Segment, tolerance: f64, quads: &mut Vec<Quad>) {
 /// ends exactly: both are the same blossom), its middle control point then kept within
 /// its ends' box, which a monotone piece's is (rounding may have nudged it out by an
 /// ulp). Pieces that rounding leaves as a point are dropped.
-fn monotone_quads(q: &Quad) -> Vec<Quad> {
+fn monotone_quads(q: &PreparedCurve) -> Vec<PreparedCurve> {
     monotone_pieces(q.p)
         .into_iter()
         .flatten()
         .filter_map(|piece| {
             let [a, b, c] = piece.map(|v| v.as_vec2().as_dvec2());
             let b = b.clamp(a.min(c), a.max(c));
-            (a != b || b != c).then(|| Quad {
+            (a != b || b != c).then(|| PreparedCurve {
                 p: [a, b, c],
                 min: a.min(c),
                 max: a.max(c),
@@ -214,18 +213,18 @@ impl GlyphData {
         let overlaps: Vec<bool> = match layout {
             Layout::Rays => vec![false; contours.iter().map(Vec::len).sum()],
             Layout::Area => {
-                let beziers: Vec<Vec<[DVec2; 3]>> = contours
+                let curves: Vec<Vec<Quad>> = contours
                     .iter()
                     .map(|c| c.iter().map(|q| q.p).collect())
                     .collect();
-                overlap_flags(&beziers, units_per_em).concat()
+                overlap_flags(&curves, units_per_em).concat()
             }
         };
         let any_marked = overlaps.contains(&true);
-        let quads: Vec<Quad> = (contours.concat().into_iter().zip(overlaps))
+        let quads: Vec<PreparedCurve> = (contours.concat().into_iter().zip(overlaps))
             .zip(0..)
             .flat_map(|((q, overlaps), parent)| {
-                let marked = Quad {
+                let marked = PreparedCurve {
                     overlaps,
                     counted: any_marked,
                     parent,
@@ -307,7 +306,7 @@ impl GlyphData {
     /// `reach` of a band beyond its boundaries.
     fn push_bands(
         &mut self,
-        quads: &[Quad],
+        quads: &[PreparedCurve],
         first_curve: u32,
         across: usize,
         range: (f64, f64),
@@ -320,7 +319,13 @@ impl GlyphData {
         }
     }
 
-    fn push_band(&mut self, quads: &[Quad], first_curve: u32, members: &[usize], along: usize) {
+    fn push_band(
+        &mut self,
+        quads: &[PreparedCurve],
+        first_curve: u32,
+        members: &[usize],
+        along: usize,
+    ) {
         let mut by_max = members.to_vec();
         by_max.sort_by(|&a, &b| quads[b].along(along).1.total_cmp(&quads[a].along(along).1));
         let mut by_min = members.to_vec();
@@ -356,7 +361,12 @@ impl GlyphData {
 const AREA_REACH: f64 = 1.5;
 
 /// The band count `band_count` asks for across `range` of coordinate `across`.
-fn resolve(band_count: BandCount, quads: &[Quad], across: usize, range: (f64, f64)) -> u32 {
+fn resolve(
+    band_count: BandCount,
+    quads: &[PreparedCurve],
+    across: usize,
+    range: (f64, f64),
+) -> u32 {
     match band_count {
         BandCount::Fixed(n) => n,
         BandCount::Auto => auto_band_count(quads, across, range),
@@ -368,7 +378,7 @@ fn resolve(band_count: BandCount, quads: &[Quad], across: usize, range: (f64, f6
 /// 1/256 of a band, so a sample the shader rounds into a neighbouring band still finds
 /// every curve at its height: a superset is harmless, a missing curve is not.
 fn band_members(
-    quads: &[Quad],
+    quads: &[PreparedCurve],
     across: usize,
     range: (f64, f64),
     count: u32,
@@ -392,7 +402,7 @@ fn band_members(
 
 /// Doubles the band count while that still saves at least half a curve per band on
 /// average, up to [`MAX_BANDS`].
-fn auto_band_count(quads: &[Quad], across: usize, range: (f64, f64)) -> u32 {
+fn auto_band_count(quads: &[PreparedCurve], across: usize, range: (f64, f64)) -> u32 {
     let mean = |count: u32| {
         let members = band_members(quads, across, range, count, 0.0);
         members.iter().map(Vec::len).sum::<usize>() as f64 / f64::from(count)

@@ -18,8 +18,9 @@
 
 use glam::DVec2;
 
-use super::area::{Bezier, monotone_pieces, t_at};
-use crate::geometry::signed_area;
+use crate::geometry::{
+    Quad, distance_between_segments, point_at, signed_area, subcurve, winding_number,
+};
 
 /// How near two curves may come before they count as touching, in em. Only the cost
 /// depends on it (a curve marked needlessly costs sub-pixels where it meets another
@@ -29,7 +30,7 @@ const TOUCHING_EM: f64 = 1.0 / 4096.0;
 
 /// For each curve of `contours` (in order), whether it may separate winding levels
 /// other than 0 and the glyph's fill sign.
-pub fn overlap_flags(contours: &[Vec<Bezier>], units_per_em: f64) -> Vec<Vec<bool>> {
+pub fn overlap_flags(contours: &[Vec<Quad>], units_per_em: f64) -> Vec<Vec<bool>> {
     let touching = TOUCHING_EM * units_per_em;
     let mut flags: Vec<Vec<bool>> = contours.iter().map(|c| vec![false; c.len()]).collect();
     let curves: Vec<(usize, usize)> = contours
@@ -81,14 +82,14 @@ pub fn overlap_flags(contours: &[Vec<Bezier>], units_per_em: f64) -> Vec<Vec<boo
             if flags[k][i] {
                 continue;
             }
-            let midpoint = 0.25 * q[0] + 0.5 * q[1] + 0.25 * q[2];
+            let midpoint = point_at(*q, 0.5);
             let others: i32 = (0..contours.len())
                 .filter(|&other| other != k)
                 .filter(|&other| {
                     let (lo, hi) = bounds[other];
                     midpoint.cmpge(lo).all() && midpoint.cmple(hi).all()
                 })
-                .map(|other| winding(midpoint, &contours[other]))
+                .map(|other| winding_number(midpoint, &contours[other]))
                 .sum();
             // Its sides wind `others` and `others + own`: plain only as {0, fill sign}.
             let plain =
@@ -111,88 +112,33 @@ fn neighbours(k: usize, l: usize, len: usize) -> bool {
 /// Whether curves `a` and `b` come within about `distance` of each other: their
 /// control hulls' bounds are apart by more (no), or both are flat to a quarter of it
 /// and their chords are within it, or the more bent one is halved and each half asked.
-fn within(a: Bezier, b: Bezier, distance: f64, splits_left: u32) -> bool {
-    let bounds = |q: &Bezier| (q[0].min(q[1]).min(q[2]), q[0].max(q[1]).max(q[2]));
+fn within(a: Quad, b: Quad, distance: f64, splits_left: u32) -> bool {
+    let bounds = |q: &Quad| (q[0].min(q[1]).min(q[2]), q[0].max(q[1]).max(q[2]));
     let ((lo_a, hi_a), (lo_b, hi_b)) = (bounds(&a), bounds(&b));
     if lo_a.cmpgt(hi_b + distance).any() || lo_b.cmpgt(hi_a + distance).any() {
         return false;
     }
-    let bend = |q: &Bezier| (q[0] - 2.0 * q[1] + q[2]).length();
+    let bend = |q: &Quad| (q[0] - 2.0 * q[1] + q[2]).length();
     let (bend_a, bend_b) = (bend(&a), bend(&b));
     if splits_left == 0 {
         return true;
     }
     if bend_a.max(bend_b) <= 0.25 * distance {
         // A chord strays from its curve by at most a quarter of the bend.
-        return segments_distance(a[0], a[2], b[0], b[2]) <= distance;
+        return distance_between_segments(a[0], a[2], b[0], b[2]) <= distance;
     }
     let (bent, other) = if bend_a >= bend_b { (a, b) } else { (b, a) };
-    let middle = 0.25 * bent[0] + 0.5 * bent[1] + 0.25 * bent[2];
-    let halves = [
-        [bent[0], 0.5 * (bent[0] + bent[1]), middle],
-        [middle, 0.5 * (bent[1] + bent[2]), bent[2]],
-    ];
-    halves
+    [subcurve(bent, 0.0, 0.5), subcurve(bent, 0.5, 1.0)]
         .into_iter()
         .any(|half| within(half, other, distance, splits_left - 1))
-}
-
-/// The distance between segments pq and rs: 0 where they cross, else the nearest of
-/// each end to the other segment.
-fn segments_distance(p: DVec2, q: DVec2, r: DVec2, s: DVec2) -> f64 {
-    let side = |a: DVec2, b: DVec2, c: DVec2| (b - a).perp_dot(c - a);
-    if side(p, q, r) * side(p, q, s) < 0.0 && side(r, s, p) * side(r, s, q) < 0.0 {
-        return 0.0;
-    }
-    point_segment_distance(p, r, s)
-        .min(point_segment_distance(q, r, s))
-        .min(point_segment_distance(r, p, q))
-        .min(point_segment_distance(s, p, q))
-}
-
-fn point_segment_distance(point: DVec2, a: DVec2, b: DVec2) -> f64 {
-    let ab = b - a;
-    let length_squared = ab.length_squared();
-    let t = if length_squared == 0.0 {
-        0.0
-    } else {
-        ((point - a).dot(ab) / length_squared).clamp(0.0, 1.0)
-    };
-    (a + ab * t - point).length()
-}
-
-/// The winding number of a closed contour around `point`: its crossings of the ray to
-/// +x, each curve cut where it turns so each piece crosses once at most, half-open in
-/// y so that an end on the ray counts once.
-fn winding(point: DVec2, contour: &[Bezier]) -> i32 {
-    contour
-        .iter()
-        .flat_map(|q| monotone_pieces(*q).into_iter().flatten())
-        .map(|piece| {
-            let (y0, y2) = (piece[0].y, piece[2].y);
-            let upwards = y0 <= point.y && point.y < y2;
-            let downwards = y2 <= point.y && point.y < y0;
-            if !upwards && !downwards {
-                return 0;
-            }
-            let t = t_at(piece.map(|p| p.y), point.y);
-            let x = piece[0].x * ((1.0 - t) * (1.0 - t))
-                + piece[1].x * (2.0 * t * (1.0 - t))
-                + piece[2].x * (t * t);
-            match (x > point.x, upwards) {
-                (false, _) => 0,
-                (true, true) => 1,
-                (true, false) => -1,
-            }
-        })
-        .sum()
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::line_as_quad;
 
-    fn square(x: f64, y: f64, size: f64, clockwise: bool) -> Vec<Bezier> {
+    fn square(x: f64, y: f64, size: f64, clockwise: bool) -> Vec<Quad> {
         let mut p: Vec<DVec2> = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
             .iter()
             .map(|&(a, b)| DVec2::new(x + a * size, y + b * size))
@@ -200,15 +146,10 @@ mod tests {
         if clockwise {
             p.reverse();
         }
-        (0..4)
-            .map(|k| {
-                let (a, b) = (p[k], p[(k + 1) % 4]);
-                [a, (a + b) * 0.5, b]
-            })
-            .collect()
+        (0..4).map(|k| line_as_quad(p[k], p[(k + 1) % 4])).collect()
     }
 
-    fn flags(contours: &[Vec<Bezier>]) -> Vec<Vec<bool>> {
+    fn flags(contours: &[Vec<Quad>]) -> Vec<Vec<bool>> {
         overlap_flags(contours, 1000.0)
     }
 
@@ -274,37 +215,8 @@ mod tests {
     #[test]
     fn a_contour_crossing_itself_is_marked() {
         let p = [(0.0, 0.0), (10.0, 10.0), (10.0, 0.0), (0.0, 10.0)].map(|(x, y)| DVec2::new(x, y));
-        let bow_tie: Vec<Bezier> = (0..4)
-            .map(|k| {
-                let (a, b) = (p[k], p[(k + 1) % 4]);
-                [a, (a + b) * 0.5, b]
-            })
-            .collect();
+        let bow_tie: Vec<Quad> = (0..4).map(|k| line_as_quad(p[k], p[(k + 1) % 4])).collect();
         assert_eq!(flags(&[bow_tie]), vec![vec![true; 4]]);
-    }
-
-    #[test]
-    fn winding_counts_each_crossing_once() {
-        let contour = square(0.0, 0.0, 10.0, false);
-        assert_eq!(winding(DVec2::new(5.0, 5.0), &contour), 1);
-        assert_eq!(
-            winding(DVec2::new(5.0, 5.0), &square(0.0, 0.0, 10.0, true)),
-            -1
-        );
-        // Level with the bottom side's ends: the vertex at (10, 0) counts once.
-        assert_eq!(winding(DVec2::new(5.0, 0.0), &contour), 1);
-        assert_eq!(winding(DVec2::new(15.0, 5.0), &contour), 0);
-        // A curved side: the parabola (0,0)–(5,10)–(10,0) peaks at y = 5.
-        let arch = [
-            [
-                DVec2::new(0.0, 0.0),
-                DVec2::new(5.0, 10.0),
-                DVec2::new(10.0, 0.0),
-            ],
-            [DVec2::new(10.0, 0.0), DVec2::new(5.0, 0.0), DVec2::ZERO],
-        ];
-        assert_eq!(winding(DVec2::new(5.0, 4.9), &arch).abs(), 1);
-        assert_eq!(winding(DVec2::new(5.0, 5.1), &arch), 0);
     }
 
     #[test]
