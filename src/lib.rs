@@ -8,6 +8,7 @@ pub mod bench;
 pub mod camera;
 pub mod cli;
 pub mod coverage;
+pub mod effort;
 pub mod font;
 pub mod geometry;
 pub mod gpu;

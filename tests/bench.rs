@@ -372,7 +372,7 @@ fn the_bench_measures_methods_in_motion() {
         let what = format!("{method} {path}");
         assert_eq!(
             case["temporal"]["pairs"],
-            glyphscope::bench::effort::BenchEffort::QUICK.motion_frames - 1
+            glyphscope::effort::Effort::QUICK.bench_motion_frames - 1
         );
         (
             number(&case["temporal"]["mae_255"], &what),

@@ -4,16 +4,16 @@
 //! Its files import one way, from the leaves up; none imports a file above it:
 //!
 //! - leaves: [`scenes`] (the standard scenes, each a `render` command line),
-//!   [`method_settings`] (the settings each method is measured at), [`effort`] (what
-//!   `--quick` changes), [`numbers`] (how reports write a figure), and [`result`]
-//!   (everything a run measured, as `bench.json` holds it; it reads
-//!   `method_settings`' way of naming a setting);
+//!   [`method_settings`] (the settings each method is measured at), [`numbers`] (how
+//!   reports write a figure), and [`result`] (everything a run measured, as
+//!   `bench.json` holds it; it reads `method_settings`' way of naming a setting);
 //! - sections, each measuring and writing its own part of the report:
 //!   [`scaling`] (how each method's cost grows with the glyphs and with the size),
 //!   [`winding_cost`] (where `winding`'s default spends a frame, stage by stage),
 //!   [`motion`] (every method's temporal error as text drifts and turns: page, tiny);
 //! - [`run`]: measuring the standard scenes through the same function as
-//!   `render --stats`, and each section where it applies;
+//!   `render --stats`, and each section where it applies, with the numbers of
+//!   [`crate::effort::Effort`] that `--quick` picks;
 //! - [`report`] (the Markdown report, its scene tables and each section's part in
 //!   turn, CSV and JSON) and [`plot`] (SVG plots);
 //! - this file: [`run_to`], the run and every file it writes.
@@ -26,7 +26,6 @@
 //! outline-points plot is named for `tessellation`, the one method that reports
 //! outline points.
 
-pub mod effort;
 pub mod method_settings;
 pub mod motion;
 pub mod numbers;

@@ -27,7 +27,7 @@ pub const PATHS: [(&str, &str); 3] = [
 ];
 
 /// Draws `methods` through every path of [`PATHS`] from `camera`, `frames` frames each
-/// (the run's `BenchEffort::motion_frames`).
+/// (the run's `Effort::bench_motion_frames`).
 pub fn measure(
     gpu: &GpuContext,
     scene_name: &str,

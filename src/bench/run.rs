@@ -4,7 +4,6 @@
 
 use indicatif::{ProgressBar, ProgressStyle};
 
-use super::effort::BenchEffort;
 use super::method_settings::{self, CONTRAST};
 use super::motion;
 use super::result::{BenchResult, Measurement, Refusal, Rounds, SceneCamera, SceneInfo, Series};
@@ -13,6 +12,7 @@ use super::scenes::{self, BenchScene};
 use super::winding_cost;
 use crate::Error;
 use crate::camera::Camera;
+use crate::effort::Effort;
 use crate::gpu::GpuContext;
 use crate::measure::{self, FrameTiming, Measured};
 use crate::methods::registry::{self, MethodInfo};
@@ -33,10 +33,10 @@ pub struct BenchOptions {
     /// Method names (the benched methods of the registry, and the reference); empty
     /// for all.
     pub methods: Vec<String>,
-    /// Timed frames per case, over all rounds, overriding [`BenchEffort`]'s (21, or 9
+    /// Timed frames per case, over all rounds, overriding [`Effort`]'s (21, or 9
     /// with `quick`; for the scaling series, 5, or 2 with `quick`).
     pub frames: Option<usize>,
-    /// Points per scaling series, overriding [`BenchEffort`]'s (11, or 3 with `quick`).
+    /// Points per scaling series, overriding [`Effort`]'s (11, or 3 with `quick`).
     pub scaling_points: Option<usize>,
 }
 
@@ -122,7 +122,7 @@ impl Plan {
 }
 
 /// Checks the options, naming what is unknown.
-fn check(options: &BenchOptions, effort: &BenchEffort) -> Result<Plan, Error> {
+fn check(options: &BenchOptions, effort: &Effort) -> Result<Plan, Error> {
     let all_names = || {
         scenes::SCENE_NAMES
             .iter()
@@ -171,7 +171,7 @@ fn check(options: &BenchOptions, effort: &BenchEffort) -> Result<Plan, Error> {
         return Err(Error::Input("--frames must be at least 1".into()));
     }
     let scaling_points = match options.scaling_points {
-        None => effort.scaling_points,
+        None => effort.bench_scaling_points,
         Some(n) if (2..=scaling::MAX_POINTS).contains(&n) => n,
         Some(n) => {
             return Err(Error::Input(format!(
@@ -231,21 +231,23 @@ fn settings_for(
 
 /// Runs the bench, showing progress on stderr when it is a terminal.
 pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
-    let effort = BenchEffort::of(options.quick);
+    let effort = Effort::of(options.quick);
     let plan = check(options, &effort)?;
     let (chosen, methods) = (&plan.scenes, &plan.methods);
     let scaling_timing = FrameTiming {
         warmup: scaling::WARMUP_FRAMES,
-        frames: options.frames.unwrap_or(effort.scaling_frames),
+        frames: options.frames.unwrap_or(effort.bench_scaling_frames),
     };
     let scaling_methods = plan.scaling_methods();
     let timing = Rounds {
-        rounds: effort.rounds,
+        rounds: effort.bench_rounds,
         per_round: FrameTiming {
             warmup: WARMUP_FRAMES,
-            frames: options.frames.map_or(effort.frames_per_round, |frames| {
-                frames.div_ceil(effort.rounds)
-            }),
+            frames: options
+                .frames
+                .map_or(effort.bench_frames_per_round, |frames| {
+                    frames.div_ceil(effort.bench_rounds)
+                }),
         },
     };
     let gpu = GpuContext::new()?;
@@ -385,7 +387,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
                     &here.scene,
                     &here.camera,
                     &defaults,
-                    effort.motion_frames,
+                    effort.bench_motion_frames,
                 )?);
             }
             for case in combine_rounds(rounds) {

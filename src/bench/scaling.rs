@@ -16,12 +16,12 @@ use std::fmt::Write;
 use glam::DVec2;
 use indicatif::ProgressBar;
 
-use super::effort::BenchEffort;
 use super::method_settings;
 use super::numbers::{kb_or_mb, sig};
 use super::result::{MethodCost, ScalingPoint, Series};
 use super::scenes::{PAGE_PX_PER_EM, PAGE_TEXT};
 use crate::Error;
+use crate::effort::Effort;
 use crate::gpu::GpuContext;
 use crate::measure::{self, FrameTiming};
 use crate::methods::registry::{self, MethodInfo};
@@ -42,7 +42,7 @@ pub const MAX_POINTS: usize = 64;
 
 /// Untimed frames per point and method before the timed ones (shaders compile on the
 /// first frames), in a full run and with `--quick` alike; how many are timed is the
-/// run's [`BenchEffort::scaling_frames`].
+/// run's [`Effort::bench_scaling_frames`].
 pub const WARMUP_FRAMES: usize = 1;
 
 /// A method whose slope against the covered pixels' is at least this fraction of it
@@ -57,16 +57,16 @@ const SEPARATES: f64 = 0.5;
 /// What each series measures (its names: [`Series`] in `result`).
 impl Series {
     /// First and last point of the work: the last is the run's `effort`'s.
-    fn range(self, effort: &BenchEffort) -> (f64, f64) {
+    fn range(self, effort: &Effort) -> (f64, f64) {
         match self {
-            Series::GlyphCount => (100.0, effort.glyph_count_up_to),
-            Series::PxPerEm => (4.0, effort.px_per_em_up_to),
+            Series::GlyphCount => (100.0, effort.bench_glyph_count_up_to),
+            Series::PxPerEm => (4.0, effort.bench_px_per_em_up_to),
         }
     }
 
     /// The points of work the series is measured at: `count` of them, evenly spaced on
     /// a log scale over its range (glyph counts rounded to whole glyphs).
-    pub fn points(self, count: usize, effort: &BenchEffort) -> Vec<f64> {
+    pub fn points(self, count: usize, effort: &Effort) -> Vec<f64> {
         let (first, last) = self.range(effort);
         let points = log_spaced(first, last, count);
         match self {
@@ -632,8 +632,8 @@ mod tests {
 
     #[test]
     fn points_are_log_spaced_over_the_range() {
-        let full = BenchEffort::FULL;
-        let sizes = Series::PxPerEm.points(full.scaling_points, &full);
+        let full = Effort::FULL;
+        let sizes = Series::PxPerEm.points(full.bench_scaling_points, &full);
         let powers: Vec<f64> = (2..=12).map(|e| f64::from(1u32 << e)).collect();
         assert_eq!(
             sizes, powers,
@@ -642,9 +642,9 @@ mod tests {
         let glyphs = Series::GlyphCount.points(3, &full);
         // √(100 · 30 000) = 1 732.05…
         assert_eq!(glyphs, vec![100.0, 1732.0, 30_000.0]);
-        let quick = BenchEffort::QUICK;
+        let quick = Effort::QUICK;
         assert_eq!(
-            Series::GlyphCount.points(quick.scaling_points, &quick)[2],
+            Series::GlyphCount.points(quick.bench_scaling_points, &quick)[2],
             3_000.0
         );
     }
