@@ -4,6 +4,8 @@
 use crate::Error;
 use crate::methods::{Overlay, ParamSpec, Params, param, parse_overlay, reject_unknown_params};
 
+pub const NAME: &str = "xor-stencil";
+
 /// Which samples an outline fills.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FillRule {
