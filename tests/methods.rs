@@ -9,8 +9,9 @@ use std::collections::HashSet;
 
 use glyphscope::Error;
 use glyphscope::measure::{self, FrameTiming};
-use glyphscope::methods::registry::{self, MethodInfo, Role, Trait};
-use glyphscope::methods::{Overlay, param_specs};
+use glyphscope::methods::info::{MethodInfo, Role, Trait};
+use glyphscope::methods::params::Numbers;
+use glyphscope::methods::{Overlay, registry};
 use glyphscope::metrics;
 use glyphscope::stability::claims;
 use glyphscope::view_args::ViewArgs;
@@ -69,14 +70,14 @@ fn every_row_is_complete_for_its_role() {
         );
         assert!(m.summary.len() > 20, "{}: say how it draws", m.name);
         assert_eq!(
-            m.create.is_some(),
+            m.constructor.is_some(),
             m.role != Role::Reference,
             "{}: every GPU method can be made; the reference is not one",
             m.name
         );
         assert_eq!(
             m.shader.is_some(),
-            m.create.is_some(),
+            m.constructor.is_some(),
             "{}: a shader",
             m.name
         );
@@ -108,7 +109,12 @@ fn every_row_is_complete_for_its_role() {
                 m.name
             );
         }
-        assert_eq!(param_specs(m.name).len(), m.params.len(), "{}", m.name);
+        assert_eq!(
+            registry::param_specs(m.name).len(),
+            m.params.len(),
+            "{}",
+            m.name
+        );
     }
     assert_eq!(
         registry::METHODS
@@ -143,7 +149,8 @@ fn the_bench_and_stability_run_every_method_of_their_roles() {
     }
     for v in claims::variants() {
         let m = registry::find(v.method).unwrap();
-        (m.create.unwrap())(&v.params()).unwrap_or_else(|e| panic!("{}: {e}", v.label));
+        m.create(&v.params())
+            .unwrap_or_else(|e| panic!("{}: {e}", v.label));
     }
 }
 
@@ -223,13 +230,12 @@ fn every_overlay_and_parameter_of_every_method_works() {
     let gpu = common::gpu();
     let (scene, camera) = ViewArgs::text("go", 48.0).build().unwrap();
     for m in registry::METHODS.iter().filter(|m| !m.is_reference()) {
-        let create = m.create.unwrap();
-        let offered = create(&[]).unwrap().overlays();
+        let offered = m.create(&[]).unwrap().overlays();
         for overlay in Overlay::ALL {
             let params = vec![("overlay".to_string(), overlay.name().to_string())];
             if !offered.contains(&overlay) {
                 assert!(
-                    create(&params).is_err(),
+                    m.create(&params).is_err(),
                     "{}: {} not offered",
                     m.name,
                     overlay.name()
@@ -249,11 +255,20 @@ fn every_overlay_and_parameter_of_every_method_works() {
         }
         for spec in m.params {
             let mut values: Vec<String> = spec.choices.iter().map(|v| v.to_string()).collect();
-            if let Some((lo, hi)) = spec.range {
-                values.extend([lo.to_string(), hi.to_string()]);
+            match spec.numbers {
+                Some(Numbers::Whole { min, max }) => {
+                    values.extend([min, max].map(|n| n.to_string()))
+                }
+                Some(Numbers::Real { min, max, .. }) => values.extend(
+                    [min, max]
+                        .iter()
+                        .filter(|x| x.is_finite())
+                        .map(|x| x.to_string()),
+                ),
+                None => {}
             }
             for value in values {
-                create(&[(spec.key.to_string(), value.clone())])
+                m.create(&[(spec.key.to_string(), value.clone())])
                     .unwrap_or_else(|e| panic!("{} {}={value}: {e}", m.name, spec.key));
             }
         }

@@ -2,7 +2,8 @@
 //! trade, listed in its registry row (see each method's page in docs/methods/ for what
 //! the parameters do), a handful of them marked for `--quick`.
 
-use crate::methods::registry::MethodInfo;
+use crate::methods::info::MethodInfo;
+use crate::methods::params::owned;
 
 /// The parameter sets `method` is measured at (all, or the quick ones), as `--param`
 /// lists; the default first.
@@ -12,13 +13,6 @@ pub fn settings(method: &MethodInfo, quick: bool) -> Vec<Vec<(String, String)>> 
         .iter()
         .filter(|s| s.quick || !quick)
         .map(|s| owned(s.params))
-        .collect()
-}
-
-pub fn owned(params: &[(&str, &str)]) -> Vec<(String, String)> {
-    params
-        .iter()
-        .map(|&(k, v)| (k.to_owned(), v.to_owned()))
         .collect()
 }
 
@@ -41,9 +35,8 @@ mod tests {
                 settings(method, true).len() >= quick,
                 "{name}: quick sweeps a trade"
             );
-            let create = method.create.expect("a benched method is drawn on the GPU");
             for params in all {
-                create(&params).unwrap();
+                method.create(&params).unwrap();
             }
         }
     }

@@ -8,10 +8,11 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::run::BenchResult;
+use super::run::{BenchResult, PER_SCENE_PARAMS};
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::GpuContext;
+use crate::methods::params::settings_text;
 use crate::metrics::TemporalSummary;
 use crate::motion::MotionPath;
 use crate::motion::run::{self, MethodSpec};
@@ -141,7 +142,7 @@ pub fn markdown(result: &BenchResult, md: &mut String) {
                 md,
                 "| {} | {} | {still} | {} |",
                 case.method.name,
-                super::run::settings_text(&case.method.params),
+                settings_text(&case.method.params, PER_SCENE_PARAMS),
                 columns.join(" | ")
             );
         }

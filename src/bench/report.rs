@@ -3,7 +3,8 @@
 
 use std::fmt::Write;
 
-use super::run::{BenchResult, Measurement, Refusal, SceneCamera, SceneInfo, settings_text};
+use super::run::{BenchResult, Measurement, PER_SCENE_PARAMS, Refusal, SceneCamera, SceneInfo};
+use crate::methods::params::settings_text;
 use crate::methods::registry;
 
 /// Mean-error levels (1/255) at which the report names the fastest method.
@@ -167,7 +168,7 @@ fn scene_sections(result: &BenchResult, clock: &str, md: &mut String) {
                 md,
                 "| {} | {} | n/a — {} | | | | | | | | | | | |",
                 refusal.method,
-                settings_text(&refusal.params),
+                settings_text(&refusal.params, PER_SCENE_PARAMS),
                 refusal.reason
             );
         }
@@ -310,10 +311,9 @@ fn peers_summary(result: &BenchResult, md: &mut String) {
                     c.error.max,
                     c.error.pixels_over_05
                 )
-            } else if let Some(r) = refusals
-                .iter()
-                .find(|r| r.method == method && settings_text(&r.params) == "default")
-            {
+            } else if let Some(r) = refusals.iter().find(|r| {
+                r.method == method && settings_text(&r.params, PER_SCENE_PARAMS) == "default"
+            }) {
                 format!("n/a — {}", r.reason)
             } else {
                 "not run".into()
@@ -393,7 +393,7 @@ pub fn csv(result: &BenchResult) -> String {
                 .as_str()
                 .unwrap_or(""),
             r.method,
-            settings_text(&r.params),
+            settings_text(&r.params, PER_SCENE_PARAMS),
             ",".repeat(26),
             r.reason.replace('"', "'")
         );

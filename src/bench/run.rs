@@ -14,8 +14,9 @@ use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::GpuContext;
 use crate::measure::{self, FrameTiming, Measured};
-use crate::methods::registry::{self, MethodInfo};
-use crate::methods::{self, atlas, winding};
+use crate::methods::info::{MethodInfo, Role};
+use crate::methods::params::{assignments, settings_text};
+use crate::methods::{self, atlas, registry, winding};
 use crate::metrics::{self, ErrorStats};
 use crate::motion::run::MethodSpec;
 use crate::scene::Scene;
@@ -147,7 +148,7 @@ pub struct Measurement {
 impl Measurement {
     /// `k=v, k=v`, or `default`.
     pub fn settings(&self) -> String {
-        settings_text(&self.params)
+        settings_text(&self.params, PER_SCENE_PARAMS)
     }
 
     /// Whether this is the baseline every time is divided by.
@@ -211,11 +212,9 @@ impl ViewUnderTest<'_> {
     }
 }
 
-/// Parameters as `k=v, k=v`, or `default` (the atlas's cache size, the same for every
-/// case of a scene, left out).
-pub fn settings_text(params: &[(String, String)]) -> String {
-    methods::settings_text(params.iter().filter(|(k, _)| k != "cache_px_per_em"))
-}
+/// The parameters the bench sets per scene rather than per setting, left out of a
+/// setting's name: the atlas's cache size, the same for every case of a scene.
+pub const PER_SCENE_PARAMS: &[&str] = &["cache_px_per_em"];
 
 /// A view of a scene a peer refused to draw, and why (its documented limit).
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -374,7 +373,7 @@ fn settings_for(
     if method.is_reference() {
         return vec![Vec::new()];
     }
-    let is_baseline = method.role == registry::Role::Baseline;
+    let is_baseline = method.role == Role::Baseline;
     let mut all = method_settings::settings(method, quick);
     if view == SceneCamera::Moved && !is_baseline {
         let kept = if quick && method.name != QUICK_MOVED_CONTRAST && !method.is_peer() {
@@ -502,8 +501,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
             for _ in 0..timing.rounds {
                 let mut round = Vec::with_capacity(plan.len());
                 for (method, params) in &plan {
-                    let settings: Vec<String> =
-                        params.iter().map(|(k, v)| format!("{k}={v}")).collect();
+                    let settings: Vec<String> = assignments(params).collect();
                     progress.set_message(format!(
                         "{} ({view:?}): {} {}",
                         bench_scene.name,

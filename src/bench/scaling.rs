@@ -22,7 +22,8 @@ use crate::Error;
 use crate::gpu::GpuContext;
 use crate::measure::{self, FrameTiming};
 use crate::methods::atlas;
-use crate::methods::registry::{self, MethodInfo};
+use crate::methods::info::MethodInfo;
+use crate::methods::registry;
 use crate::metrics;
 use crate::view_args::ViewArgs;
 

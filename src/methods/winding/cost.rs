@@ -8,11 +8,10 @@
 //! or 1, and those that integrated the sub-pixel grid (`OVERLAY` 5). A [`Stage`] cuts
 //! the shader short so that each stage's time is the difference from the one before.
 
-use super::{Output, Winding};
+use super::{Output, Settings, Winding};
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::{GpuContext, kit};
-use crate::methods::Params;
 
 /// Where the fragment shader stops (`STAGE` in winding.wgsl).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
@@ -90,11 +89,15 @@ impl CostCounts {
 }
 
 impl Winding {
-    /// `winding` with `params`, its shader stopping after `stage`.
-    pub fn staged(params: &Params, stage: Stage) -> Result<Winding, Error> {
-        let mut winding = Winding::new(params)?;
-        winding.stage = stage;
-        Ok(winding)
+    /// `winding` at `settings`, its shader stopping after `stage`.
+    pub fn staged(settings: Settings, stage: Stage) -> Winding {
+        Winding {
+            settings,
+            stage,
+            layout: None,
+            pipelines: Vec::new(),
+            prepared: None,
+        }
     }
 
     /// The counts of a frame through `camera` (prepared, `aa=area`).

@@ -30,8 +30,8 @@
 //! layer draws, and overlapping glyphs unite instead of cancelling.
 //!
 //! The code, one concern a file, each importing only the ones above it:
-//! - `params.rs`: the name, and the fill rule, samples, passes and overlay, parsed
-//!   from `--param`.
+//! - `params.rs`: the name, and the fill rule, samples, passes and overlay its
+//!   parameters choose.
 //! - `geometry.rs`: each glyph's fan and Loop–Blinn triangles (CPU) and their buffers.
 //! - `jitter.rs`: the N-rooks pattern of the jittered passes.
 //! - `layers.rs`: even-odd's split of the instances into layers that cannot touch.
@@ -56,8 +56,9 @@ pub use geometry::{GeometryData, Triangles, tolerance_halvings};
 pub use jitter::jitter_offsets;
 pub use params::{FillRule, MAX_PASSES, NAME, PARAMS, Settings};
 
-use super::registry::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at, within};
-use super::{CurveCost, Method, Overlay, Params};
+use super::info::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at, within};
+use super::params::Params;
+use super::{CurveCost, Method, Overlay};
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::msaa::Attachments;
@@ -88,7 +89,7 @@ pub const INFO: MethodInfo = MethodInfo {
         label: NAME,
         params: &[],
         claim: Claim {
-            // Set by the margin rule (registry::Claim); last measured by
+            // Set by the margin rule (info::Claim); last measured by
             // `cargo run --release -- stability --methods xor-stencil`: max 0.377,
             // MAE 2.58/255 (glyphs-2px).
             bound: Some(within(0.5, 3.3)),
@@ -100,7 +101,7 @@ pub const INFO: MethodInfo = MethodInfo {
                         8-bit counters read a winding of 256 as 0",
         },
     }],
-    create: Some(|params| Ok(Box::new(XorStencil::new(params)?))),
+    constructor: Some(|params| Ok(Box::new(XorStencil::new(params)))),
 };
 
 pub struct XorStencil {
@@ -112,8 +113,8 @@ pub struct XorStencil {
 }
 
 impl XorStencil {
-    pub fn new(params: &Params) -> Result<XorStencil, Error> {
-        Ok(XorStencil::with_settings(Settings::from_params(params)?))
+    pub fn new(params: &Params) -> XorStencil {
+        XorStencil::with_settings(Settings::from_params(params))
     }
 
     pub fn with_settings(settings: Settings) -> XorStencil {
