@@ -441,7 +441,8 @@ fn the_default_integrates_and_a_ray_count_casts_rays() {
 /// other five. The shader cut short after the quads writes 1 in each fragment.
 #[test]
 fn the_cost_breakdown_counts_what_a_square_makes() {
-    use glyphscope::methods::winding::{CostCounts, Settings, Stage, Winding};
+    use glyphscope::methods::winding::cost::CostCounts;
+    use glyphscope::methods::winding::{Settings, Stage, Winding};
     let scene = single(polygons(&[&rect(0.0, 0.0, 6.0, 4.0)]));
     let mut cam = unit_camera(12, 10);
     cam.origin += DVec2::new(2.25, -2.25);

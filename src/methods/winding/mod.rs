@@ -29,7 +29,6 @@ pub mod cost;
 mod overlaps;
 
 pub use bands::{BandCount, GlyphData, Layout, MAX_BANDS};
-pub use cost::{CostCounts, Stage};
 
 use super::info::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at, within};
 use super::instances::Instances;
@@ -350,6 +349,44 @@ impl Settings {
                 4 => true,
                 _ => marked,
             },
+        }
+    }
+}
+
+/// Where the fragment shader stops (`STAGE` in winding.wgsl).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Stage {
+    /// Writes 1 at once: rasterizing the quads and blending.
+    Quads,
+    /// After the per-fragment setup: derivatives, the pixel's frame, its band.
+    Setup,
+    /// After the band walk: each visited curve loaded, mapped into the pixel's frame and
+    /// sorted into its zone, no term added.
+    Walk,
+    /// With the terms of the curves wholly right of the pixel, not those across it.
+    Right,
+    /// The whole shader: terms, fill rule, the sub-pixel grid where it is needed.
+    Full,
+}
+
+impl Stage {
+    /// In the order the shader runs them.
+    pub const ALL: [Stage; 5] = [
+        Stage::Quads,
+        Stage::Setup,
+        Stage::Walk,
+        Stage::Right,
+        Stage::Full,
+    ];
+
+    fn constant(self) -> f64 {
+        match self {
+            Stage::Quads => 0.0,
+            Stage::Setup => 1.0,
+            Stage::Walk => 2.0,
+            Stage::Right => 3.0,
+            Stage::Full => 4.0,
         }
     }
 }
