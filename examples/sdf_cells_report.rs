@@ -14,11 +14,11 @@ use glyphscope::font::{Font, GlyphId, SHIPPED_FONTS};
 use glyphscope::geometry::DEFAULT_QUAD_TOLERANCE_EM;
 use glyphscope::gpu::{CoverageTarget, GpuContext};
 use glyphscope::methods::frame::{FrameTime, render_frame, time_frames};
-use glyphscope::methods::{self, Method};
+use glyphscope::methods::{Method, registry};
 
 /// Owned `--param` pairs.
 type Params = Vec<(String, String)>;
-use glyphscope::methods::sdf_cells::SdfCells;
+use glyphscope::methods::sdf_cells::{self, SdfCells};
 use glyphscope::metrics::{self, ErrorStats, compare};
 use glyphscope::reference;
 use glyphscope::scene::Scene;
@@ -108,8 +108,9 @@ fn glyphs(font: &Font, text: &str) -> Vec<GlyphId> {
 }
 
 fn glyphs_report(gpu: &GpuContext) {
-    let mut estimate = SdfCells::new(&params(&[("mode", "estimate")])).unwrap();
-    let mut exact = SdfCells::new(&params(&[("mode", "exact")])).unwrap();
+    let sdf_cells = |pairs| SdfCells::new(&sdf_cells::INFO.parse_params(&params(pairs)).unwrap());
+    let mut estimate = sdf_cells(&[("mode", "estimate")]);
+    let mut exact = sdf_cells(&[("mode", "exact")]);
     println!("## Exact mode: worst pixel per font, size and transform\n");
     println!("Glyphs without overlapping contours; overlapping ones in their own rows.\n");
     println!(
@@ -209,7 +210,7 @@ fn page_report(gpu: &GpuContext) {
     ];
     let mut methods: Vec<(&str, Box<dyn Method>)> = rows
         .iter()
-        .map(|(name, method, p)| (*name, methods::create(method, p).unwrap()))
+        .map(|(name, method, p)| (*name, registry::create(method, p).unwrap()))
         .collect();
     for (_, method) in &mut methods {
         method.prepare(gpu, &scene).unwrap();

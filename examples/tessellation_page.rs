@@ -13,7 +13,7 @@ use glyphscope::camera::Camera;
 use glyphscope::font::Font;
 use glyphscope::gpu::{CoverageTarget, GpuContext};
 use glyphscope::methods::frame::{render_frame, time_frames};
-use glyphscope::methods::{self, Method};
+use glyphscope::methods::{Method, registry};
 use glyphscope::metrics::{self, compare};
 use glyphscope::reference;
 use glyphscope::scene::Scene;
@@ -65,7 +65,7 @@ fn main() {
         // The least CPU time of a few builds: prepare, and the first frame where the
         // meshes depend on the scale.
         let mut build_ms = f64::INFINITY;
-        let mut method = methods::create("tessellation", &params).unwrap();
+        let mut method = registry::create("tessellation", &params).unwrap();
         for _ in 0..BUILDS {
             // A fresh `prepare` drops every mesh.
             method.prepare(&gpu, &scene).unwrap();

@@ -12,7 +12,7 @@ use crate::coverage::{CoverageImage, ValueRange};
 use crate::gpu::{CoverageTarget, GpuContext};
 use crate::methods;
 use crate::methods::frame::{self, FrameTime, ms_since};
-use crate::methods::registry::MethodInfo;
+use crate::methods::info::MethodInfo;
 use crate::metrics::{self, ErrorStats};
 use crate::reference;
 use crate::scene::Scene;
@@ -133,19 +133,17 @@ pub fn measure(
         mesh: None,
         layout_offset: None,
     };
+    // Checked for the reference too, which takes none.
+    let checked = info.parse_params(params)?;
     let mut overlay = None;
     let image = if info.is_reference() {
-        methods::reject_unknown_params(info.name, params, &[])?;
         stats.adapter = "cpu (exact reference rasterizer)".into();
         let start = Instant::now();
         let image = reference::rasterize(scene, camera)?;
         stats.cpu_render_ms = Some(ms_since(start));
         image
     } else {
-        let create = info
-            .create
-            .ok_or_else(|| Error::Input(format!("'{}' has no GPU method", info.name)))?;
-        let mut method = create(params)?;
+        let mut method = info.create(params)?;
         let gpu = gpu.ok_or_else(|| Error::Gpu("a GPU method needs a GPU context".into()))?;
         stats.adapter = gpu.adapter_name();
         let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
@@ -156,7 +154,7 @@ pub fn measure(
         let raw = target.readback(gpu)?;
         stats.coverage_range = Some(raw.range());
         let image = raw.clamp_to_union();
-        if methods::param(params, "overlay").is_some_and(|v| v != "none") {
+        if checked.word("overlay").is_some_and(|o| o != "none") {
             overlay = Some(target.readback_color(gpu)?);
         }
         stats.curves_per_pixel = method.curves_per_pixel(gpu, camera)?;

@@ -67,7 +67,7 @@ fn screen_vs_coverage(
 
 fn gpu_methods() -> Vec<&'static str> {
     registry::names()
-        .filter(|&n| n != REFERENCE.name && methods::create(n, &[]).is_ok())
+        .filter(|&n| n != REFERENCE.name && registry::create(n, &[]).is_ok())
         .collect()
 }
 
@@ -108,7 +108,7 @@ fn every_method_in_every_layout_shows_its_own_coverage() {
                 );
                 if *name != "reference" {
                     // Counted in the background by the method itself, as the CLI does.
-                    let mut method = methods::create(name, &[]).unwrap();
+                    let mut method = registry::create(name, &[]).unwrap();
                     method.prepare(gpu(), app.scene().unwrap()).unwrap();
                     let expected = method
                         .curves_per_pixel(gpu(), &app.camera().unwrap())
@@ -128,7 +128,7 @@ fn every_method_in_every_layout_shows_its_own_coverage() {
     }
     // Methods that are not implemented yet are offered greyed, with the reason.
     for name in registry::names().filter(|&n| n != REFERENCE.name) {
-        if let Err(e) = methods::create(name, &[]) {
+        if let Err(e) = registry::create(name, &[]) {
             harness.state_mut().settings.panes[0] = PaneSettings::method(name);
             harness.step();
             harness.render().unwrap();
@@ -191,7 +191,7 @@ fn the_method_picker_switches_the_pane_and_greys_what_is_missing() {
         let disabled = harness.get_by_label(name).accesskit_node().is_disabled();
         assert_eq!(
             disabled,
-            methods::create(name, &[]).is_err() && name != REFERENCE.name,
+            registry::create(name, &[]).is_err() && name != REFERENCE.name,
             "{name}"
         );
     }
@@ -217,7 +217,7 @@ fn every_overlay_toggles_and_draws_or_is_greyed_with_a_reason() {
             assert!(problem.contains("glyph drawn by its id"), "{problem}");
             continue;
         }
-        let supported = methods::create(method, &[]).unwrap().overlays();
+        let supported = registry::create(method, &[]).unwrap().overlays();
         for overlay in Overlay::ALL {
             let button = harness.get_by_label(overlay.name());
             if !supported.contains(&overlay) {
@@ -538,7 +538,7 @@ fn live_gpu_time_and_the_speed_vs_error_sweep() {
     let expected: usize = gpu_methods()
         .iter()
         .map(|m| {
-            1 + methods::param_specs(m)
+            1 + registry::param_specs(m)
                 .iter()
                 .filter(|s| s.key != "overlay")
                 .map(|s| s.choices.len() - 1)
@@ -1246,7 +1246,7 @@ fn motion_steps_plays_and_charts_one_point_per_frame() {
     let offscreen = |harness: &Harness<'static, Explorer>, pane: usize| {
         let app = harness.state();
         let name = if pane == 0 { "atlas" } else { "winding" };
-        let mut method = methods::create(name, &[]).unwrap();
+        let mut method = registry::create(name, &[]).unwrap();
         method.prepare(gpu(), app.scene().unwrap()).unwrap();
         let camera = app.camera().unwrap();
         methods::frame::render_image(gpu(), method.as_mut(), &camera).unwrap()

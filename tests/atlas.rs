@@ -8,9 +8,9 @@ use common::gpu;
 use glam::DVec2;
 use glyphscope::camera::Camera;
 use glyphscope::font::Font;
-use glyphscope::methods::atlas::{AUTO_CACHE_MAX_PX_PER_EM, Atlas};
+use glyphscope::methods::atlas::{self, AUTO_CACHE_MAX_PX_PER_EM, Atlas};
 use glyphscope::methods::frame::render_image;
-use glyphscope::methods::{self, Method};
+use glyphscope::methods::{Method, registry};
 use glyphscope::metrics::{ErrorStats, compare};
 use glyphscope::reference;
 use glyphscope::scene::Scene;
@@ -23,6 +23,11 @@ fn params(list: &[(&str, &str)]) -> Vec<(String, String)> {
         .collect()
 }
 
+/// The atlas with parameters `list`.
+fn atlas_with(list: &[(&str, &str)]) -> Atlas {
+    Atlas::new(&atlas::INFO.parse_params(&params(list)).unwrap())
+}
+
 fn error(method: &mut dyn Method, scene: &Scene, camera: &Camera) -> ErrorStats {
     method.prepare(gpu(), scene).unwrap();
     let image = render_image(gpu(), method, camera).unwrap();
@@ -31,7 +36,7 @@ fn error(method: &mut dyn Method, scene: &Scene, camera: &Camera) -> ErrorStats 
 
 fn error_of(name: &str, list: &[(&str, &str)], scene: &Scene, camera: &Camera) -> ErrorStats {
     error(
-        methods::create(name, &params(list)).unwrap().as_mut(),
+        registry::create(name, &params(list)).unwrap().as_mut(),
         scene,
         camera,
     )
@@ -107,7 +112,7 @@ fn matches_hand_worked_coverage_at_the_cached_size() {
     let camera = Camera::new(26, 14, 16.0, DVec2::new(0.0, 14.0));
     // Image rows run down: font y becomes 14 − y.
     let rows = (14.0 - y1, 14.0 - y0);
-    let mut atlas = methods::create("atlas", &params(&[("subpixel", "4")])).unwrap();
+    let mut atlas = registry::create("atlas", &params(&[("subpixel", "4")])).unwrap();
     atlas.prepare(gpu(), &scene).unwrap();
     let image = render_image(gpu(), atlas.as_mut(), &camera).unwrap();
     let mut checked = [0usize; 3];
@@ -215,7 +220,7 @@ fn worse_than_winding_once_the_camera_zooms_and_turns() {
 #[test]
 fn auto_caches_at_the_first_frame_size_up_to_a_limit() {
     let (scene, mut camera) = row(DVec2::ZERO);
-    let mut atlas = Atlas::new(&[]).unwrap();
+    let mut atlas = atlas_with(&[]);
     atlas.prepare(gpu(), &scene).unwrap();
     assert_eq!(
         atlas.cached_px_per_em(),
@@ -229,7 +234,7 @@ fn auto_caches_at_the_first_frame_size_up_to_a_limit() {
     render_image(gpu(), &mut atlas, &camera).unwrap();
     assert_eq!(atlas.cached_px_per_em(), Some(SIZE));
 
-    let mut huge = Atlas::new(&[]).unwrap();
+    let mut huge = atlas_with(&[]);
     let one = Scene::from_text(&Font::default_font(), "l").unwrap();
     huge.prepare(gpu(), &one).unwrap();
     let far_in = Camera::new(64, 64, 20_000.0, DVec2::new(-100.0, 20_000.0));
@@ -247,7 +252,7 @@ fn bad_parameters_are_rejected() {
         ("cache_px_per_em", "NaN", "cache_px_per_em=NaN"),
         ("phases", "4", "no parameter 'phases'"),
     ] {
-        let err = methods::create("atlas", &params(&[(key, value)]))
+        let err = registry::create("atlas", &params(&[(key, value)]))
             .err()
             .unwrap_or_else(|| panic!("{key}={value} accepted"));
         assert!(matches!(err, glyphscope::Error::Input(_)));
@@ -264,7 +269,7 @@ fn bad_parameters_are_rejected() {
 fn a_cache_too_large_for_one_texture_is_refused_before_rasterizing() {
     let font = Font::default_font();
     let scene = Scene::from_text(&font, "ABCDEFGHIJKLMNOPQRSTabcdefghijklmnopqrst").unwrap();
-    let mut atlas = Atlas::new(&params(&[("cache_px_per_em", "4096")])).unwrap();
+    let mut atlas = atlas_with(&[("cache_px_per_em", "4096")]);
     // A cache size given is built by `prepare`.
     let err = atlas.prepare(gpu(), &scene).unwrap_err();
     assert!(matches!(err, glyphscope::Error::Input(_)), "{err}");

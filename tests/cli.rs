@@ -495,7 +495,11 @@ fn xor_stencil_renders_from_the_command_line() {
     fails("xor msaa", &xor("msaa=16"), "msaa must be 1 or 4");
     fails("xor passes", &xor("passes=0"), "passes must be");
     fails("xor fill", &xor("fill=odd"), "nonzero or evenodd");
-    fails("xor overlay", &xor("overlay=purple"), "no overlay 'purple'");
+    fails(
+        "xor overlay",
+        &xor("overlay=purple"),
+        "overlay must be none or wireframe",
+    );
 }
 
 /// `stability` runs the sweep on the cases and methods named, prints the table and

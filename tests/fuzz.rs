@@ -12,7 +12,7 @@ use glyphscope::Error;
 use glyphscope::camera::{Camera, MAX_SIZE_PX_PER_EM};
 use glyphscope::font::{Font, SHIPPED_FONTS};
 use glyphscope::geometry::{Contour, Outline, Segment};
-use glyphscope::methods::sdf_cells::{SceneData, Settings};
+use glyphscope::methods::sdf_cells::{self, SceneData, Settings};
 use glyphscope::methods::tessellation::{
     glyph_mesh,
     subdivision::{Subdivision, TaggedContour},
@@ -141,7 +141,8 @@ fn check_cpu_preparation(scene: &Scene) {
         assert!(data.band_curves.iter().all(|&c| c < curves));
     }
     for mode in ["estimate", "exact"] {
-        let settings = Settings::from_params(&[("mode".into(), mode.into())]).unwrap();
+        let params = sdf_cells::INFO.parse_params(&[("mode".into(), mode.into())]);
+        let settings = Settings::from_params(&params.unwrap());
         let data = SceneData::of_scene(scene, &settings).expect("sdf-cells prepares it");
         assert!(all_finite(data.points.iter().flatten()));
         assert!(
@@ -210,7 +211,7 @@ proptest! {
         prop_assert!(reference.data.iter().all(in_range));
         for info in registry::METHODS.iter().filter(|m| !m.is_reference()) {
             let name = info.name;
-            let mut method = (info.create.unwrap())(&[]).unwrap();
+            let mut method = info.create(&[]).unwrap();
             let drawn = method
                 .prepare(common::gpu(), &scene)
                 .and_then(|()| frame::render_image(common::gpu(), method.as_mut(), &camera));

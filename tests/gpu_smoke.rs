@@ -14,8 +14,9 @@ use glyphscope::coverage::CoverageImage;
 use glyphscope::geometry::{Contour, Outline, Segment};
 use glyphscope::gpu::{CoverageTarget, GpuContext};
 use glyphscope::methods::frame::{render_frame, time_frames};
+use glyphscope::methods::registry;
 use glyphscope::scene::Scene;
-use glyphscope::{Error, methods, reference};
+use glyphscope::{Error, reference};
 
 /// Half-float coverage holds about 3 decimal digits.
 const MAX_ERROR: f32 = 2e-3;
@@ -86,7 +87,7 @@ fn wide_scene() -> Scene {
 
 fn render(scene: &Scene, camera: &Camera) -> Result<CoverageImage, Error> {
     let gpu = gpu();
-    let mut method = methods::create("bounds", &[])?;
+    let mut method = registry::create("bounds", &[])?;
     method.prepare(gpu, scene)?;
     let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
     render_frame(gpu, method.as_mut(), &target, camera)?;
@@ -164,7 +165,7 @@ fn each_frame_starts_from_a_clear_target() {
     let gpu = gpu();
     let camera = Camera::new(37, 23, 10.0, DVec2::new(2.3, 17.6));
     let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
-    let mut method = methods::create("bounds", &[]).unwrap();
+    let mut method = registry::create("bounds", &[]).unwrap();
     method.prepare(gpu, &small_scene()).unwrap();
     render_frame(gpu, method.as_mut(), &target, &camera).unwrap();
     assert!(target.readback(gpu).unwrap().sum() > 10.0);
@@ -180,7 +181,7 @@ fn each_frame_starts_from_a_clear_target() {
 fn timestamps_give_finite_positive_frame_times() {
     let gpu = gpu();
     let camera = Camera::new(37, 23, 10.0, DVec2::new(2.3, 17.6));
-    let mut method = methods::create("bounds", &[]).unwrap();
+    let mut method = registry::create("bounds", &[]).unwrap();
     method.prepare(gpu, &small_scene()).unwrap();
     let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
     assert!(
@@ -229,7 +230,7 @@ fn a_device_opened_elsewhere_renders_the_same() {
     assert!(outside.has_timestamps(), "{}", outside.adapter_name());
     let scene = small_scene();
     let camera = Camera::new(37, 23, 10.0, DVec2::new(2.3, 17.6));
-    let mut method = methods::create("bounds", &[]).unwrap();
+    let mut method = registry::create("bounds", &[]).unwrap();
     method.prepare(&outside, &scene).unwrap();
     let target = CoverageTarget::new(&outside, camera.width, camera.height).unwrap();
     render_frame(&outside, method.as_mut(), &target, &camera).unwrap();

@@ -8,9 +8,11 @@ mod common;
 use std::collections::HashSet;
 
 use glyphscope::Error;
+use glyphscope::bench::method_settings;
 use glyphscope::measure::{self, FrameTiming};
-use glyphscope::methods::registry::{self, MethodInfo, Role, Trait};
-use glyphscope::methods::{Overlay, param_specs};
+use glyphscope::methods::info::{MethodInfo, Role, Trait};
+use glyphscope::methods::params::Numbers;
+use glyphscope::methods::{Overlay, registry};
 use glyphscope::metrics;
 use glyphscope::stability::claims;
 use glyphscope::view_args::ViewArgs;
@@ -69,14 +71,14 @@ fn every_row_is_complete_for_its_role() {
         );
         assert!(m.summary.len() > 20, "{}: say how it draws", m.name);
         assert_eq!(
-            m.create.is_some(),
+            m.constructor.is_some(),
             m.role != Role::Reference,
             "{}: every GPU method can be made; the reference is not one",
             m.name
         );
         assert_eq!(
             m.shader.is_some(),
-            m.create.is_some(),
+            m.constructor.is_some(),
             "{}: a shader",
             m.name
         );
@@ -108,7 +110,6 @@ fn every_row_is_complete_for_its_role() {
                 m.name
             );
         }
-        assert_eq!(param_specs(m.name).len(), m.params.len(), "{}", m.name);
     }
     assert_eq!(
         registry::METHODS
@@ -120,16 +121,69 @@ fn every_row_is_complete_for_its_role() {
     );
 }
 
-/// What the bench and stability run is exactly what the registry lists.
+/// The committed full bench run (`docs/bench/bench.json`, which the docs quote) measured
+/// exactly what the registry's rows list: every benched method at each of its settings
+/// and nothing else. A setting added, dropped or changed in a row without the bench
+/// rerun fails here, naming it.
 #[test]
-fn the_bench_and_stability_run_every_method_of_their_roles() {
-    let benched: Vec<&str> = registry::benched().map(|m| m.name).collect();
-    let expected: Vec<&str> = registry::METHODS
+fn the_committed_bench_run_measured_every_setting_the_rows_list() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/bench/bench.json");
+    let run: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let quick = run["quick"].as_bool().unwrap();
+    // (method, its parameters as the run names them), the scene's own atlas cache size
+    // left out: the bench adds it per scene.
+    let mut measured: Vec<(String, Vec<(String, String)>)> = run["cases"]
+        .as_array()
+        .unwrap()
         .iter()
-        .filter(|m| matches!(m.role, Role::Method | Role::Baseline | Role::Peer))
-        .map(|m| m.name)
+        .map(|case| {
+            let params = case["params"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|kv| {
+                    (
+                        kv[0].as_str().unwrap().into(),
+                        kv[1].as_str().unwrap().into(),
+                    )
+                })
+                .filter(|(k, _): &(String, String)| k != "cache_px_per_em")
+                .collect();
+            (case["method"].as_str().unwrap().to_owned(), params)
+        })
         .collect();
-    assert_eq!(benched, expected);
+    measured.sort();
+    measured.dedup();
+    let mut listed: Vec<(String, Vec<(String, String)>)> = std::iter::once(&registry::REFERENCE)
+        .chain(registry::benched())
+        .flat_map(|m| {
+            let settings = if m.is_reference() {
+                vec![Vec::new()]
+            } else {
+                method_settings::settings(m, quick)
+            };
+            settings.into_iter().map(|p| (m.name.to_owned(), p))
+        })
+        .collect();
+    listed.sort();
+    for setting in &listed {
+        assert!(
+            measured.contains(setting),
+            "{setting:?}: listed, but not in the committed run (rerun the bench)"
+        );
+    }
+    for setting in &measured {
+        assert!(
+            listed.contains(setting),
+            "{setting:?}: in the committed run, but no row lists it"
+        );
+    }
+}
+
+/// The stability sweep runs every drawing method and peer, each at settings it accepts.
+#[test]
+fn the_stability_sweep_runs_every_method_and_peer() {
     let swept: HashSet<&str> = claims::variants().iter().map(|v| v.method).collect();
     for m in registry::METHODS
         .iter()
@@ -143,8 +197,60 @@ fn the_bench_and_stability_run_every_method_of_their_roles() {
     }
     for v in claims::variants() {
         let m = registry::find(v.method).unwrap();
-        (m.create.unwrap())(&v.params()).unwrap_or_else(|e| panic!("{}: {e}", v.label));
+        m.create(&v.params())
+            .unwrap_or_else(|e| panic!("{}: {e}", v.label));
     }
+}
+
+/// The parameter table of a method's page, `docs/methods/NAME.md` (the section whose
+/// heading starts `## Parameters`): each parameter's key, and the value the page marks
+/// `` `X` (default``, if it marks one.
+fn documented_parameters(method: &str) -> Vec<(String, Option<String>)> {
+    let path = format!("{}/docs/methods/{method}.md", env!("CARGO_MANIFEST_DIR"));
+    let page = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let Some((_, section)) = page.split_once("\n## Parameters") else {
+        return Vec::new();
+    };
+    let section = section.split("\n## ").next().unwrap_or_default();
+    section
+        .lines()
+        .filter_map(|line| {
+            let mut cells = line.split('|').map(str::trim).skip(1);
+            let key = cells.next()?.strip_prefix('`')?.strip_suffix('`')?;
+            let default = cells.next().and_then(|values| {
+                let (before, _) = values.split_once("` (default")?;
+                Some(before.rsplit('`').next()?.to_owned())
+            });
+            Some((key.to_owned(), default))
+        })
+        .collect()
+}
+
+/// Each method takes exactly the parameters its page documents, and where the page
+/// names a default, it is the row's (the first choice, which the app and the Pareto
+/// sweep take as the default).
+#[test]
+fn every_method_takes_the_parameters_its_page_documents() {
+    for m in registry::METHODS {
+        let documented = documented_parameters(m.name);
+        let mut keys: Vec<&str> = m.params.iter().map(|p| p.key).collect();
+        let mut on_page: Vec<&str> = documented.iter().map(|(k, _)| k.as_str()).collect();
+        keys.sort();
+        on_page.sort();
+        assert_eq!(keys, on_page, "{}: its rows and its page's table", m.name);
+        for (key, default) in &documented {
+            let row = m.params.iter().find(|p| p.key == key).unwrap();
+            if let Some(default) = default {
+                assert_eq!(row.choices[0], default, "{} {key}: the default", m.name);
+            }
+        }
+    }
+    // The table is read: a page with parameters gives keys and defaults.
+    let winding = documented_parameters("winding");
+    assert!(
+        winding.contains(&("bands".into(), Some("auto".into()))),
+        "{winding:?}"
+    );
 }
 
 /// Every GPU method draws every scene as `render` does: finite coverage, ink where the
@@ -223,13 +329,12 @@ fn every_overlay_and_parameter_of_every_method_works() {
     let gpu = common::gpu();
     let (scene, camera) = ViewArgs::text("go", 48.0).build().unwrap();
     for m in registry::METHODS.iter().filter(|m| !m.is_reference()) {
-        let create = m.create.unwrap();
-        let offered = create(&[]).unwrap().overlays();
+        let offered = m.create(&[]).unwrap().overlays();
         for overlay in Overlay::ALL {
             let params = vec![("overlay".to_string(), overlay.name().to_string())];
             if !offered.contains(&overlay) {
                 assert!(
-                    create(&params).is_err(),
+                    m.create(&params).is_err(),
                     "{}: {} not offered",
                     m.name,
                     overlay.name()
@@ -249,11 +354,20 @@ fn every_overlay_and_parameter_of_every_method_works() {
         }
         for spec in m.params {
             let mut values: Vec<String> = spec.choices.iter().map(|v| v.to_string()).collect();
-            if let Some((lo, hi)) = spec.range {
-                values.extend([lo.to_string(), hi.to_string()]);
+            match spec.numbers {
+                Some(Numbers::Whole { min, max }) => {
+                    values.extend([min, max].map(|n| n.to_string()))
+                }
+                Some(Numbers::Real { min, max, .. }) => values.extend(
+                    [min, max]
+                        .iter()
+                        .filter(|x| x.is_finite())
+                        .map(|x| x.to_string()),
+                ),
+                None => {}
             }
             for value in values {
-                create(&[(spec.key.to_string(), value.clone())])
+                m.create(&[(spec.key.to_string(), value.clone())])
                     .unwrap_or_else(|e| panic!("{} {}={value}: {e}", m.name, spec.key));
             }
         }

@@ -24,7 +24,7 @@ use common::framed;
 use glam::DVec2;
 use glyphscope::font::Font;
 use glyphscope::geometry::{Outline, Segment, kurbo_path, merge_overlaps};
-use glyphscope::methods::registry::Trait;
+use glyphscope::methods::info::Trait;
 use glyphscope::reference;
 use glyphscope::scene::Scene;
 use glyphscope::stability::hard_cases;

@@ -12,7 +12,7 @@ use glyphscope::camera::Camera;
 use glyphscope::font::Font;
 use glyphscope::gpu::CoverageTarget;
 use glyphscope::measure::{self, FrameTiming};
-use glyphscope::methods::{self, frame, peers, registry};
+use glyphscope::methods::{frame, peers, registry};
 use glyphscope::metrics;
 use glyphscope::reference;
 use glyphscope::scene::Scene;
@@ -121,7 +121,7 @@ fn every_peer_draws_text_where_the_reference_does() {
 fn peers_refuse_what_their_apis_cannot_draw() {
     let gpu = common::gpu();
     let refused = |name: &str, scene: &Scene, camera: &Camera| -> String {
-        let mut method = methods::create(name, &[]).unwrap();
+        let mut method = registry::create(name, &[]).unwrap();
         let result = method
             .prepare(gpu, scene)
             .and_then(|()| frame::render_image(gpu, method.as_mut(), camera).map(|_| ()));
@@ -189,7 +189,7 @@ fn peers_refuse_what_their_apis_cannot_draw() {
     assert_eq!(weight(&[]).unwrap().map(|w| w.0), default);
     // The linebender peers fill synthetic outlines as paths: no refusal there.
     for name in [peers::vello::NAME, peers::vello_cpu::NAME] {
-        let mut method = methods::create(name, &[]).unwrap();
+        let mut method = registry::create(name, &[]).unwrap();
         method.prepare(gpu, &synthetic).unwrap();
         let image = frame::render_image(gpu, method.as_mut(), &upright).unwrap();
         assert!(image.sum() > 0.0, "{name}");
@@ -208,7 +208,7 @@ fn vellos_own_submissions_are_timed_within_the_frames_wall_time() {
         return;
     }
     let (scene, camera) = ViewArgs::text("Hamburgefonstiv", 32.0).build().unwrap();
-    let mut method = methods::create(peers::vello::NAME, &[]).unwrap();
+    let mut method = registry::create(peers::vello::NAME, &[]).unwrap();
     method.prepare(gpu, &scene).unwrap();
     let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
     // Shaders compile on the first frame.

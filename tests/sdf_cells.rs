@@ -15,20 +15,18 @@ use glyphscope::font::{Font, GlyphId, SHIPPED_FONTS};
 use glyphscope::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Segment, project};
 use glyphscope::gpu::CoverageTarget;
 use glyphscope::methods::frame::render_frame;
+use glyphscope::methods::params::{Params, owned};
 use glyphscope::methods::sdf_cells::cells::Mode;
 use glyphscope::methods::sdf_cells::curves::CurveLayout;
 use glyphscope::methods::sdf_cells::glyph::PreparedGlyph;
-use glyphscope::methods::sdf_cells::{SdfCells, Settings};
+use glyphscope::methods::sdf_cells::{self, SdfCells, Settings};
 use glyphscope::methods::{CurveCost, Method};
 use glyphscope::metrics::{ErrorStats, compare};
 use glyphscope::reference;
 use glyphscope::scene::Scene;
 
-fn params(pairs: &[(&str, &str)]) -> Vec<(String, String)> {
-    pairs
-        .iter()
-        .map(|(k, v)| (k.to_string(), v.to_string()))
-        .collect()
+fn params(pairs: &[(&str, &str)]) -> Params {
+    sdf_cells::INFO.parse_params(&owned(pairs)).unwrap()
 }
 
 /// Coverage, the rgb picture, and the method (for its cost and summary).
@@ -38,7 +36,7 @@ fn render(
     pairs: &[(&str, &str)],
 ) -> (CoverageImage, image::RgbImage, SdfCells) {
     let gpu = gpu();
-    let mut method = SdfCells::new(&params(pairs)).unwrap();
+    let mut method = SdfCells::new(&params(pairs));
     method.prepare(gpu, scene).unwrap();
     let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
     render_frame(gpu, &mut method, &target, camera).unwrap();
@@ -58,7 +56,7 @@ fn quadratic_outline(font: &Font, id: GlyphId) -> Outline {
 const GLYPH_COUNTS: [u16; 4] = [6253, 821, 2548, 488];
 
 fn prepare_every_glyph(mode: &str) {
-    let settings = Settings::from_params(&params(&[("mode", mode)])).unwrap();
+    let settings = Settings::from_params(&params(&[("mode", mode)]));
     let (mut past_slots, mut with_escapes, mut total) = (0, 0, 0);
     for (index, (name, _, _)) in SHIPPED_FONTS.iter().enumerate() {
         let font = Font::shipped(index);
@@ -133,7 +131,7 @@ struct Renderer {
 impl Renderer {
     fn new(pairs: &[(&str, &str)]) -> Renderer {
         Renderer {
-            method: SdfCells::new(&params(pairs)).unwrap(),
+            method: SdfCells::new(&params(pairs)),
         }
     }
 
@@ -928,7 +926,10 @@ fn the_command_line_renders_overlays_and_rejects_bad_parameters() {
         ("grid=0", "1 to 64"),
         ("encoding=zip", "auto, packed or list"),
         ("glow=-1", "number of em"),
-        ("overlay=wireframe", "no overlay 'wireframe'"),
+        (
+            "overlay=wireframe",
+            "overlay must be none, purple, cells or cost",
+        ),
     ] {
         std::fs::remove_file(&out).ok();
         let failed = run(&["--param", bad]);

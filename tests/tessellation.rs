@@ -20,7 +20,7 @@ use glyphscope::methods::tessellation::mesh::GlyphMesh;
 use glyphscope::methods::tessellation::subdivision::{
     self, PointKind, Subdivision, Tag, TaggedContour,
 };
-use glyphscope::methods::{self, MeshStats, Method};
+use glyphscope::methods::{MeshStats, Method, registry};
 use glyphscope::metrics::{ErrorStats, compare};
 use glyphscope::scene::Scene;
 use glyphscope::view_args::ViewArgs;
@@ -34,7 +34,7 @@ fn params(pairs: &[(&str, &str)]) -> Vec<(String, String)> {
 }
 
 fn tessellation(pairs: &[(&str, &str)]) -> Box<dyn Method> {
-    methods::create("tessellation", &params(pairs)).unwrap()
+    registry::create("tessellation", &params(pairs)).unwrap()
 }
 
 /// Prepares `method` for `scene` and renders one frame.
@@ -574,7 +574,7 @@ fn the_command_line_reports_points_triangles_and_area_error() {
 fn bad_parameters_are_input_errors() {
     for (pairs, expect) in [
         (&[("rays", "2")][..], "has no parameter 'rays'"),
-        (&[("subdivision", "magic")], "fsa, asa or screen"),
+        (&[("subdivision", "magic")], "must be screen, asa or fsa"),
         (&[("subdivision", "fsa"), ("steps", "0")], "steps must be"),
         (&[("subdivision", "fsa"), ("steps", "2.5")], "steps must be"),
         (
@@ -600,9 +600,12 @@ fn bad_parameters_are_input_errors() {
             &[("steps", "4"), ("threshold", "4")],
             "threshold applies to subdivision=asa, not to subdivision=fsa (implied by steps)",
         ),
-        (&[("overlay", "cells")], "no overlay 'cells'"),
+        (
+            &[("overlay", "cells")],
+            "overlay must be none, wireframe or points",
+        ),
     ] {
-        match methods::create("tessellation", &params(pairs)) {
+        match registry::create("tessellation", &params(pairs)) {
             Err(Error::Input(message)) => {
                 assert!(message.contains(expect), "{pairs:?}: {message}");
                 assert!(!message.contains('\n'));

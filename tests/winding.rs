@@ -10,7 +10,7 @@ use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
 use glyphscope::font::{Font, SHIPPED_FONTS};
 use glyphscope::gpu::{self, GpuContext};
-use glyphscope::methods::{self, Method, frame};
+use glyphscope::methods::{Method, frame, registry};
 use glyphscope::metrics::{ErrorStats, compare};
 use glyphscope::reference;
 use glyphscope::scene::Scene;
@@ -23,7 +23,7 @@ fn winding(params: &[(&str, &str)]) -> Box<dyn Method> {
         .chain(params)
         .map(|(k, v)| (k.to_string(), v.to_string()))
         .collect();
-    methods::create("winding", &params).unwrap()
+    registry::create("winding", &params).unwrap()
 }
 
 fn render(gpu: &GpuContext, method: &mut dyn Method, scene: &Scene, cam: &Camera) -> CoverageImage {
@@ -385,7 +385,7 @@ fn slug_combine_on_hand_worked_pixels() {
     for (what, scene, (i, j), slug, exact) in probes {
         let by_slug = render(gpu, winding(&[("rays", "slug")]).as_mut(), scene, &cam);
         let area_params = [("aa".to_string(), "area".to_string())];
-        let mut area = methods::create("winding", &area_params).unwrap();
+        let mut area = registry::create("winding", &area_params).unwrap();
         let by_area = render(gpu, area.as_mut(), scene, &cam);
         // Half floats hold ¾ and 9/16 exactly and 0.71875 within 2.5e-4.
         let (got_slug, got_area) = (by_slug.get(i, j), by_area.get(i, j));
@@ -408,11 +408,11 @@ fn bad_parameters_are_clear_errors() {
         ("bands", "0", "bands=0"),
         ("bands", "lots", "bands=lots"),
         ("fill", "winding", "fill=winding"),
-        ("overlay", "wireframe", "no overlay 'wireframe'"),
+        ("overlay", "wireframe", "overlay=wireframe is not valid"),
         ("colour", "red", "no parameter 'colour'"),
     ] {
         let params = vec![(key.to_string(), value.to_string())];
-        let err = methods::create("winding", &params)
+        let err = registry::create("winding", &params)
             .err()
             .expect("an error")
             .to_string();
@@ -524,7 +524,7 @@ fn probe(@builtin(global_invocation_id) id: vec3<u32>) {
     }
 }
 ";
-    let shader = methods::registry::find("winding").unwrap().shader.unwrap();
+    let shader = registry::find("winding").unwrap().shader.unwrap();
     run_probe(
         gpu,
         format!("{}\n{probe}", shader.source()),

@@ -19,7 +19,7 @@ use glyphscope::coverage::CoverageImage;
 use glyphscope::font::{Font, SHIPPED_FONTS};
 use glyphscope::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Quad, Segment};
 use glyphscope::methods::winding::area;
-use glyphscope::methods::{self, Method, frame};
+use glyphscope::methods::{Method, frame, registry};
 use glyphscope::metrics::{ErrorStats, compare};
 use glyphscope::reference;
 use glyphscope::scene::Scene;
@@ -33,7 +33,7 @@ fn area_method(params: &[(&str, &str)]) -> Box<dyn Method> {
         .chain(params)
         .map(|(k, v)| (k.to_string(), v.to_string()))
         .collect();
-    methods::create("winding", &params).unwrap()
+    registry::create("winding", &params).unwrap()
 }
 
 fn render(method: &mut dyn Method, scene: &Scene, cam: &Camera) -> CoverageImage {
@@ -406,7 +406,7 @@ fn bad_settings_are_clear_errors() {
             .iter()
             .map(|(k, v)| (k.to_string(), v.to_string()))
             .collect();
-        let err = methods::create("winding", &params)
+        let err = registry::create("winding", &params)
             .err()
             .expect("an error")
             .to_string();
@@ -417,13 +417,13 @@ fn bad_settings_are_clear_errors() {
 /// The default is the integral; a ray count alone asks for rays.
 #[test]
 fn the_default_integrates_and_a_ray_count_casts_rays() {
-    use glyphscope::methods::winding::{Antialiasing, Settings};
+    use glyphscope::methods::winding::{self, Antialiasing, Settings};
     let settings = |params: &[(&str, &str)]| {
         let params: Vec<(String, String)> = params
             .iter()
             .map(|(k, v)| (k.to_string(), v.to_string()))
             .collect();
-        Settings::from_params(&params).unwrap()
+        Settings::from_params(&winding::INFO.parse_params(&params).unwrap()).unwrap()
     };
     assert_eq!(settings(&[]).aa, Antialiasing::Area);
     assert_eq!(settings(&[("rays", "1")]).aa, Antialiasing::Rays);
@@ -442,11 +442,12 @@ fn the_default_integrates_and_a_ray_count_casts_rays() {
 /// other five. The shader cut short after the quads writes 1 in each fragment.
 #[test]
 fn the_cost_breakdown_counts_what_a_square_makes() {
-    use glyphscope::methods::winding::{CostCounts, Stage, Winding};
+    use glyphscope::methods::winding::cost::CostCounts;
+    use glyphscope::methods::winding::{Settings, Stage, Winding};
     let scene = single(polygons(&[&rect(0.0, 0.0, 6.0, 4.0)]));
     let mut cam = unit_camera(12, 10);
     cam.origin += DVec2::new(2.25, -2.25);
-    let mut whole = Winding::staged(&[], Stage::Full).unwrap();
+    let mut whole = Winding::staged(Settings::default(), Stage::Full);
     whole.prepare(gpu(), &scene).unwrap();
     let counts = whole.cost_counts(gpu(), &cam).unwrap();
     let expected = CostCounts {
@@ -463,7 +464,7 @@ fn the_cost_breakdown_counts_what_a_square_makes() {
     };
     assert_eq!(counts, expected);
     assert_eq!(counts.no_term(), 0);
-    let mut quads = Winding::staged(&[], Stage::Quads).unwrap();
+    let mut quads = Winding::staged(Settings::default(), Stage::Quads);
     let image = render(&mut quads, &scene, &cam);
     assert_eq!(image.sum(), 35.0);
 }

@@ -20,8 +20,8 @@ use glyphscope::font::{Font, SHIPPED_FONTS};
 use glyphscope::geometry::{Contour, Outline, Segment, project};
 use glyphscope::gpu::CoverageTarget;
 use glyphscope::methods::frame::render_frame;
-use glyphscope::methods::xor_stencil::{FillRule, Settings, XorStencil, jitter_offsets};
-use glyphscope::methods::{self, Method, Overlay};
+use glyphscope::methods::xor_stencil::{self, FillRule, Settings, XorStencil, jitter_offsets};
+use glyphscope::methods::{Method, Overlay, registry};
 use glyphscope::metrics::compare;
 use glyphscope::reference;
 use glyphscope::scene::Scene;
@@ -389,7 +389,7 @@ fn default_settings_beat_skia_1x() {
     // The bar is Skia's anti-aliasing at one sample a pixel on real glyphs: the worst
     // mean and max error it reaches, the bounds asserted below. The defaults (4 samples
     // x 4 passes) stay under both.
-    let defaults = Settings::from_params(&[]).unwrap();
+    let defaults = Settings::from_params(&xor_stencil::INFO.parse_params(&[]).unwrap());
     assert_eq!((defaults.samples, defaults.passes), (4, 4));
     let (mean, max) = reference_error(defaults);
     eprintln!("defaults: mean {mean:.2}/255, max {max:.3}");
@@ -402,7 +402,7 @@ fn wireframe_overlay_draws_both_kinds_and_keeps_coverage() {
     let camera = framed(&scene, 60.0, UPRIGHT, DVec2::new(0.5, 0.25));
     let gpu = gpu();
     let params = [("overlay".to_string(), "wireframe".to_string())];
-    let mut method = methods::create("xor-stencil", &params).unwrap();
+    let mut method = registry::create("xor-stencil", &params).unwrap();
     assert_eq!(method.overlays(), &[Overlay::TriangleWireframe]);
     let with_overlay = render_with(method.as_mut(), &scene, &camera);
     let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
@@ -420,7 +420,7 @@ fn wireframe_overlay_draws_both_kinds_and_keeps_coverage() {
         "fan {fan}, curves {curves}, grey {grey}"
     );
     assert!(
-        methods::create("xor-stencil", &[("overlay".into(), "cells".into())]).is_err(),
+        registry::create("xor-stencil", &[("overlay".into(), "cells".into())]).is_err(),
         "an overlay it cannot draw"
     );
 }
@@ -502,7 +502,7 @@ fn frames_start_clear_and_culled_scenes_draw_nothing() {
 #[test]
 fn parameters_are_checked() {
     let make = |key: &str, value: &str| {
-        methods::create("xor-stencil", &[(key.to_string(), value.to_string())]).map(|_| ())
+        registry::create("xor-stencil", &[(key.to_string(), value.to_string())]).map(|_| ())
     };
     for (key, value) in [
         ("fill", "nonzero"),

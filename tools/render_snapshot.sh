@@ -22,7 +22,8 @@ scenes=(
 )
 for method in $methods; do
     overlays=$("$bin" render --text x --size 8 --method "$method" --param overlay=zz \
-        --out /dev/null 2>&1 | sed -n 's/.*it has: none, //p' | tr -d ',' || true)
+        --out /dev/null 2>&1 | sed -n 's/.*overlay must be none\(, \| or \)//p' \
+        | sed 's/ or / /; s/,//g' || true)
     for scene in "${scenes[@]}"; do
         name=${scene%%|*}
         read -r -a args <<<"${scene#*|}"

@@ -18,7 +18,7 @@ use super::settings::CameraSettings;
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
 use crate::gpu::GpuContext;
-use crate::methods::{self, CurveCost, Method};
+use crate::methods::{CurveCost, Method, registry};
 use crate::metrics::{self, ErrorStats, TemporalError};
 use crate::reference;
 use crate::scene::Scene;
@@ -370,7 +370,7 @@ fn count_curves(
                 (*generation, n, p) == (request.scene_generation, name, params)
             });
             if !fresh {
-                let made = methods::create(name, params).and_then(|mut m| {
+                let made = registry::create(name, params).and_then(|mut m| {
                     m.prepare(gpu, &request.scene)?;
                     Ok(m)
                 });

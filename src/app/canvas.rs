@@ -19,6 +19,7 @@ use super::settings::{Layout, PaneOverlay, PaneSource};
 use crate::camera::Camera;
 use crate::gpu::shaders::COST_SCALE_CURVES;
 use crate::magnify::{VALUES_FROM, Window, block_labels};
+use crate::methods::params::assignments;
 use crate::methods::{Overlay, registry};
 
 /// Space between panes, points.
@@ -489,7 +490,7 @@ impl Explorer {
         let settings = &self.settings.panes[index];
         let mut title = match &settings.source {
             PaneSource::Method { name, params } => {
-                let params: Vec<String> = params.iter().map(|(k, v)| format!("{k}={v}")).collect();
+                let params: Vec<String> = assignments(params).collect();
                 format!("{} {name} {}", pane_letter(index), params.join(" "))
                     .trim_end()
                     .to_string()

@@ -31,6 +31,7 @@
 use super::panes::pane_letter;
 use super::settings::{CaseFrame, FontChoice, Layout, PANES, PaneOverlay, PaneSource, Settings};
 use crate::font::SHIPPED_FONTS;
+use crate::methods::params::assignments;
 use crate::methods::registry;
 use crate::motion::MotionPath;
 
@@ -318,7 +319,7 @@ fn parse_source(value: &str, index: usize) -> Result<PaneSource, String> {
 fn pane_source(source: &PaneSource) -> String {
     match source {
         PaneSource::Method { name, params } => std::iter::once(name.clone())
-            .chain(params.iter().map(|(k, v)| format!("{k}={v}")))
+            .chain(assignments(params))
             .collect::<Vec<_>>()
             .join(":"),
         PaneSource::Difference { first, second } => {

@@ -12,8 +12,9 @@ use super::settings::{PaneOverlay, PaneSettings, PaneSource};
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
 use crate::gpu::GpuContext;
+use crate::methods::params::{Numbers, ParamSpec, given_text};
 use crate::methods::registry;
-use crate::methods::{self, CurveCost, Overlay, ParamSpec};
+use crate::methods::{CurveCost, Overlay};
 use crate::metrics::ErrorStats;
 use crate::scene::Scene;
 
@@ -39,14 +40,14 @@ impl Catalog {
             .iter()
             .map(|info| {
                 let name = info.name;
-                let Some(create) = info.create else {
+                if info.constructor.is_none() {
                     return MethodEntry {
                         name,
                         unavailable: None,
                         overlays: &[],
                     };
-                };
-                match create(&[]) {
+                }
+                match info.create(&[]) {
                     Ok(method) => MethodEntry {
                         name,
                         unavailable: None,
@@ -191,7 +192,7 @@ impl Pane {
             params.push(("overlay".into(), overlay));
         }
         let start = Instant::now();
-        let made = methods::create(name, &params).and_then(|mut method| {
+        let made = registry::create(name, &params).and_then(|mut method| {
             method.prepare(gpu, scene)?;
             Ok(method)
         });
@@ -220,7 +221,7 @@ impl Pane {
 
 /// The current value of a parameter (its default when not given).
 fn param_value(params: &[(String, String)], spec: &ParamSpec) -> String {
-    methods::param(params, spec.key)
+    given_text(params, spec.key)
         .unwrap_or(spec.choices[0])
         .to_string()
 }
@@ -283,7 +284,7 @@ pub fn pane_controls(
     }
     match &mut pane.source {
         PaneSource::Method { name, params } => {
-            for spec in methods::param_specs(name) {
+            for spec in registry::param_specs(name) {
                 // Overlays have their own row.
                 if spec.key == "overlay" {
                     continue;
@@ -317,14 +318,34 @@ fn param_control(
             })
             .response
             .on_hover_text(spec.help);
-        if let Some((lo, hi)) = spec.range {
-            let mut n = value.parse::<u32>().unwrap_or(lo);
-            let response = ui
-                .add(egui::DragValue::new(&mut n).range(lo..=hi))
-                .on_hover_text(format!("{}: or a number {lo}–{hi}", spec.key));
-            if response.changed() {
-                value = n.to_string();
+        let allowed = format!("{}: {}", spec.key, spec.allowed());
+        match spec.numbers {
+            Some(Numbers::Whole { min, max }) => {
+                let mut n = value.parse::<u32>().unwrap_or(min);
+                let response = ui
+                    .add(egui::DragValue::new(&mut n).range(min..=max))
+                    .on_hover_text(allowed);
+                if response.changed() {
+                    value = n.to_string();
+                }
             }
+            Some(Numbers::Real { min, max, .. }) => {
+                let mut x = value.parse::<f64>().unwrap_or(min);
+                // A few hundred pixels of drag across the range, or steps of 0.1
+                // where it has no end.
+                let speed = if max.is_finite() {
+                    (max - min) / 500.0
+                } else {
+                    0.1
+                };
+                let response = ui
+                    .add(egui::DragValue::new(&mut x).range(min..=max).speed(speed))
+                    .on_hover_text(allowed);
+                if response.changed() {
+                    value = x.to_string();
+                }
+            }
+            None => {}
         }
     });
     if value != before {

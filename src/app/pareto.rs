@@ -16,8 +16,8 @@ use crate::camera::Camera;
 use crate::coverage::CoverageImage;
 use crate::gpu::GpuContext;
 use crate::measure::{self, FrameTiming};
+use crate::methods::params::{ParamSpec, assignments};
 use crate::methods::registry;
-use crate::methods::{self, ParamSpec};
 use crate::metrics;
 use crate::reference;
 use crate::scene::Scene;
@@ -65,11 +65,7 @@ pub struct ParetoPoint {
 
 impl ParetoPoint {
     pub fn label(&self) -> String {
-        let params: Vec<String> = self
-            .params
-            .iter()
-            .map(|(k, v)| format!("{k}={v}"))
-            .collect();
+        let params: Vec<String> = assignments(&self.params).collect();
         format!("{} {}", self.method, params.join(" "))
     }
 }
@@ -144,7 +140,7 @@ impl ParetoSweep {
         let jobs: Vec<(&'static str, Vec<(String, String)>)> = catalog
             .gpu_methods()
             .flat_map(|m| {
-                combinations(methods::param_specs(m.name))
+                combinations(registry::param_specs(m.name))
                     .into_iter()
                     .map(move |p| (m.name, p))
             })
@@ -370,8 +366,9 @@ mod tests {
 
     #[test]
     fn combinations_cover_every_choice_but_overlays() {
-        let all = combinations(methods::param_specs(methods::winding::INFO.name));
-        let one_at_a_time: usize = 1 + methods::param_specs(methods::winding::INFO.name)
+        let winding = registry::param_specs(crate::methods::winding::INFO.name);
+        let all = combinations(winding);
+        let one_at_a_time: usize = 1 + winding
             .iter()
             .filter(|s| s.key != "overlay")
             .map(|s| s.choices.len() - 1)

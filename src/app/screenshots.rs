@@ -14,7 +14,8 @@ use super::headless::Headless;
 use super::panes::{Catalog, REFERENCE};
 use super::settings::{Layout, PaneOverlay, PaneSettings, PaneSource, Settings};
 use crate::Error;
-use crate::methods::registry::{self, Role};
+use crate::methods::info::Role;
+use crate::methods::registry;
 use crate::methods::{Overlay, sdf_cells};
 
 /// Screen size of every screenshot, pixels.

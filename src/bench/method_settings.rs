@@ -8,8 +8,9 @@
 //! means: `atlas`' `cache_px_per_em`), and [`CONTRAST`], the method `--quick` keeps
 //! after caching and the report sets against the peers.
 
-use crate::methods::registry::MethodInfo;
-use crate::methods::{self, atlas, winding};
+use crate::methods::info::MethodInfo;
+use crate::methods::params;
+use crate::methods::{atlas, winding};
 
 /// glyphscope's own method that the bench sets beside the baseline and the peers:
 /// `--quick` keeps its default after caching, and the report's peers table compares
@@ -40,21 +41,14 @@ pub fn settings(method: &MethodInfo, quick: bool) -> Vec<Vec<(String, String)>> 
         .bench
         .iter()
         .filter(|s| s.quick || !quick)
-        .map(|s| owned(s.params))
-        .collect()
-}
-
-pub fn owned(params: &[(&str, &str)]) -> Vec<(String, String)> {
-    params
-        .iter()
-        .map(|&(k, v)| (k.to_owned(), v.to_owned()))
+        .map(|s| params::owned(s.params))
         .collect()
 }
 
 /// Parameters as `k=v, k=v`, or `default` (the baseline's cache size, the same for
 /// every case of a scene, left out).
 pub fn settings_text(params: &[(String, String)]) -> String {
-    methods::settings_text(params.iter().filter(|(k, _)| k != BASELINE_CACHE_KEY))
+    params::settings_text(params, &[BASELINE_CACHE_KEY])
 }
 
 #[cfg(test)]
@@ -76,9 +70,8 @@ mod tests {
                 settings(method, true).len() >= quick,
                 "{name}: quick sweeps a trade"
             );
-            let create = method.create.expect("a benched method is drawn on the GPU");
             for params in all {
-                create(&params).unwrap();
+                method.create(&params).unwrap();
             }
         }
     }
@@ -87,8 +80,9 @@ mod tests {
     /// setting the baseline accepts.
     #[test]
     fn contrast_and_cache_are_what_they_say() {
-        assert_eq!(CONTRAST.role, registry::Role::Method);
-        let create = registry::baseline().create.expect("the baseline draws");
-        create(&[baseline_cache_param(baseline_cache_size(16.0))]).unwrap();
+        assert_eq!(CONTRAST.role, crate::methods::info::Role::Method);
+        registry::baseline()
+            .create(&[baseline_cache_param(baseline_cache_size(16.0))])
+            .unwrap();
     }
 }

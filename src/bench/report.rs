@@ -312,10 +312,9 @@ fn peers_summary(result: &BenchResult, md: &mut String) {
                     c.error.max,
                     c.error.pixels_over_05
                 )
-            } else if let Some(r) = refusals
-                .iter()
-                .find(|r| r.method == method && settings_text(&r.params) == "default")
-            {
+            } else if let Some(r) = refusals.iter().find(|r| {
+                r.method == method && settings_text(&r.params) == "default"
+            }) {
                 format!("n/a — {}", r.reason)
             } else {
                 "not run".into()

@@ -8,7 +8,7 @@ use serde::Serialize;
 use super::method_settings;
 use crate::measure::FrameTiming;
 use crate::methods::registry;
-use crate::methods::winding::CostCounts;
+use crate::methods::winding::cost::CostCounts;
 use crate::methods::{CurveCost, LayoutOffset};
 use crate::metrics::{ErrorStats, TemporalSummary};
 use crate::motion::run::MethodSpec;

@@ -15,7 +15,9 @@ use crate::camera::Camera;
 use crate::effort::Effort;
 use crate::gpu::GpuContext;
 use crate::measure::{self, FrameTiming, Measured};
-use crate::methods::registry::{self, MethodInfo};
+use crate::methods::info::{MethodInfo, Role};
+use crate::methods::params::assignments;
+use crate::methods::registry;
 use crate::metrics;
 use crate::motion::run::MethodSpec;
 use crate::scene::Scene;
@@ -211,7 +213,7 @@ fn settings_for(
     if method.is_reference() {
         return vec![Vec::new()];
     }
-    let is_baseline = method.role == registry::Role::Baseline;
+    let is_baseline = method.role == Role::Baseline;
     let mut all = method_settings::settings(method, quick);
     if view == SceneCamera::Moved && !is_baseline {
         let kept = if quick && method.name != CONTRAST.name && !method.is_peer() {
@@ -327,8 +329,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
             for _ in 0..timing.rounds {
                 let mut round = Vec::with_capacity(plan.len());
                 for (method, params) in &plan {
-                    let settings: Vec<String> =
-                        params.iter().map(|(k, v)| format!("{k}={v}")).collect();
+                    let settings: Vec<String> = assignments(params).collect();
                     progress.set_message(format!(
                         "{} ({view:?}): {} {}",
                         bench_scene.name,

@@ -24,7 +24,8 @@ use crate::Error;
 use crate::effort::Effort;
 use crate::gpu::GpuContext;
 use crate::measure::{self, FrameTiming};
-use crate::methods::registry::{self, MethodInfo};
+use crate::methods::info::MethodInfo;
+use crate::methods::registry;
 use crate::metrics;
 use crate::view_args::ViewArgs;
 

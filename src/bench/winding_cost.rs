@@ -10,8 +10,8 @@ use super::result::{BenchResult, Rounds, SceneCamera, WindingCost};
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::{CoverageTarget, GpuContext};
-use crate::methods::registry::MethodInfo;
-use crate::methods::winding::{self, Stage, Winding};
+use crate::methods::info::MethodInfo;
+use crate::methods::winding::{self, Settings, Stage, Winding};
 use crate::methods::{Method, frame};
 use crate::metrics;
 use crate::scene::Scene;
@@ -31,14 +31,14 @@ pub fn measure(
     camera: &Camera,
     timing: Rounds,
 ) -> Result<WindingCost, Error> {
-    let mut whole = Winding::staged(&[], Stage::Full)?;
+    let mut whole = Winding::staged(Settings::default(), Stage::Full);
     whole.prepare(gpu, scene)?;
     let counts = whole.cost_counts(gpu, camera)?;
     let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
     let mut medians: [Vec<f64>; 5] = Default::default();
     for _ in 0..timing.rounds {
         for (stage, medians) in Stage::ALL.into_iter().zip(&mut medians) {
-            let mut method = Winding::staged(&[], stage)?;
+            let mut method = Winding::staged(Settings::default(), stage);
             method.prepare(gpu, scene)?;
             let per_round = timing.per_round;
             let times = frame::time_frames(

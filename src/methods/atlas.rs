@@ -16,9 +16,10 @@
 
 use glam::DVec2;
 
+use super::Method;
+use super::info::{MethodInfo, Role, bench_at};
 use super::instances::Instances;
-use super::registry::{MethodInfo, Role, bench_at};
-use super::{Method, ParamSpec, Params, param, reject_unknown_params};
+use super::params::{Numbers, ParamSpec, Params};
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::kit::{self, PipelineBuilder, Slot};
@@ -44,7 +45,7 @@ pub const INFO: MethodInfo = MethodInfo {
     ],
     // Exact only at the size it cached: it claims nothing under a moving camera.
     claims: &[],
-    create: Some(|params| Ok(Box::new(Atlas::new(params)?))),
+    constructor: Some(|params| Ok(Box::new(Atlas::new(params)))),
 };
 
 pub const NAME: &str = "atlas";
@@ -54,7 +55,7 @@ const SHADER: Shader = crate::method_shader!("atlas.wgsl");
 /// bitmap of hundreds of megabytes. Beyond it the atlas magnifies, as real ones do.
 pub const AUTO_CACHE_MAX_PX_PER_EM: f64 = 512.0;
 /// The largest size `cache_px_per_em` takes.
-const MAX_CACHE_PX_PER_EM: u32 = 4096;
+const MAX_CACHE_PX_PER_EM: f64 = 4096.0;
 /// Zero texels around each bitmap: bilinear taps at its edge read zero, never a
 /// neighbour.
 const PAD_TEXELS: i64 = 1;
@@ -63,7 +64,7 @@ pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "subpixel",
         choices: &["4", "1", "2", "off"],
-        range: None,
+        numbers: None,
         help: "Sub-pixel phases per axis: each glyph cached N×N times, pens snapped to the \
                nearest 1/N px. 1: whole pixels (classic atlas); off: the exact position, \
                resampled. N² times the CPU rasterization and atlas memory.",
@@ -71,7 +72,11 @@ pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "cache_px_per_em",
         choices: &["auto"],
-        range: Some((1, MAX_CACHE_PX_PER_EM)),
+        numbers: Some(Numbers::Real {
+            min: 1.0,
+            max: MAX_CACHE_PX_PER_EM,
+            unit: "px/em",
+        }),
         help: "The size glyphs are cached at; auto: the first frame's size (at most 512 \
                px/em). Drawn at any other size, the bitmaps are resampled.",
     },
@@ -87,36 +92,16 @@ pub struct Settings {
 }
 
 impl Settings {
-    pub fn from_params(params: &Params) -> Result<Settings, Error> {
-        let keys: Vec<&str> = PARAMS.iter().map(|p| p.key).collect();
-        reject_unknown_params(NAME, params, &keys)?;
-        let phases = match param(params, "subpixel") {
-            None | Some("4") => 4,
-            Some("1") => 1,
-            Some("2") => 2,
-            Some("off") => 0,
-            Some(v) => {
-                return Err(Error::Input(format!(
-                    "atlas: subpixel={v} is not one of 1, 2, 4, off"
-                )));
-            }
-        };
-        let cache_px_per_em = match param(params, "cache_px_per_em") {
-            None | Some("auto") => None,
-            Some(v) => match v.parse::<f64>() {
-                Ok(size) if (1.0..=f64::from(MAX_CACHE_PX_PER_EM)).contains(&size) => Some(size),
-                _ => {
-                    return Err(Error::Input(format!(
-                        "atlas: cache_px_per_em={v} is not auto or a size from 1 to \
-                         {MAX_CACHE_PX_PER_EM} px/em"
-                    )));
-                }
+    pub fn from_params(params: &Params) -> Settings {
+        Settings {
+            phases: match params.word("subpixel") {
+                Some("1") => 1,
+                Some("2") => 2,
+                Some("off") => 0,
+                _ => 4,
             },
-        };
-        Ok(Settings {
-            phases,
-            cache_px_per_em,
-        })
+            cache_px_per_em: params.real("cache_px_per_em"),
+        }
     }
 }
 
@@ -175,12 +160,12 @@ struct Bitmap {
 }
 
 impl Atlas {
-    pub fn new(params: &Params) -> Result<Atlas, Error> {
-        Ok(Atlas {
-            settings: Settings::from_params(params)?,
+    pub fn new(params: &Params) -> Atlas {
+        Atlas {
+            settings: Settings::from_params(params),
             pipeline: None,
             prepared: None,
-        })
+        }
     }
 
     /// The size the glyphs are cached at, once they are.

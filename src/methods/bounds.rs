@@ -12,8 +12,8 @@
 
 use glam::DVec2;
 
-use super::registry::{MethodInfo, Role};
-use super::{Method, Params, reject_unknown_params};
+use super::Method;
+use super::info::{MethodInfo, Role};
 use crate::Error;
 use crate::camera::Camera;
 use crate::geometry::{Rect, project};
@@ -33,27 +33,18 @@ pub const INFO: MethodInfo = MethodInfo {
     colour: [127, 127, 127],
     bench: &[],
     claims: &[],
-    create: Some(|params| Ok(Box::new(Bounds::new(params)?))),
+    constructor: Some(|_| Ok(Box::<Bounds>::default())),
 };
 
 pub const NAME: &str = "bounds";
 const SHADER: Shader = crate::method_shader!("bounds.wgsl");
 
+#[derive(Default)]
 pub struct Bounds {
     /// Built on the first `prepare`; it depends on the device only.
     pipeline: Option<QuadPipeline>,
     /// What `prepare` keeps of the scene.
     prepared: Option<PreparedScene>,
-}
-
-impl Bounds {
-    pub fn new(params: &Params) -> Result<Bounds, Error> {
-        reject_unknown_params(NAME, params, &[])?;
-        Ok(Bounds {
-            pipeline: None,
-            prepared: None,
-        })
-    }
 }
 
 struct QuadPipeline {

@@ -168,6 +168,12 @@ impl Overlay {
         Overlay::SubdivisionPoints,
     ];
 
+    /// The overlay called `name` (see [`Overlay::name`]); None for `none` and any name
+    /// that is no overlay's.
+    pub fn named(name: &str) -> Option<Overlay> {
+        Overlay::ALL.into_iter().find(|o| o.name() == name)
+    }
+
     /// The value `--param overlay=` takes.
     pub fn name(self) -> &'static str {
         match self {
@@ -181,83 +187,6 @@ impl Overlay {
     }
 }
 
-/// The `overlay` parameter's value among `supported` (None for absent or `none`).
-pub fn parse_overlay(
-    method: &str,
-    value: Option<&str>,
-    supported: &[Overlay],
-) -> Result<Option<Overlay>, Error> {
-    match value {
-        None | Some("none") => Ok(None),
-        Some(v) => supported
-            .iter()
-            .copied()
-            .find(|o| o.name() == v)
-            .map(Some)
-            .ok_or_else(|| {
-                let names: Vec<_> = supported.iter().map(|o| o.name()).collect();
-                Error::Input(format!(
-                    "method '{method}' has no overlay '{v}'; it has: none{}{}",
-                    if names.is_empty() { "" } else { ", " },
-                    names.join(", ")
-                ))
-            }),
-    }
-}
-
-/// Parameters as `k=v, k=v`, or `default` when there are none: how tables and reports
-/// name a setting.
-pub fn settings_text<'a>(params: impl IntoIterator<Item = &'a (String, String)>) -> String {
-    let shown: Vec<String> = params
-        .into_iter()
-        .map(|(k, v)| format!("{k}={v}"))
-        .collect();
-    if shown.is_empty() {
-        "default".into()
-    } else {
-        shown.join(", ")
-    }
-}
-
-/// The value of parameter `key`, if given (the last one wins).
-pub fn param<'a>(params: &'a Params, key: &str) -> Option<&'a str> {
-    params
-        .iter()
-        .rev()
-        .find(|(k, _)| k == key)
-        .map(|(_, v)| v.as_str())
-}
-
-/// A `--param KEY=VALUE` list, in the order given.
-pub type Params = [(String, String)];
-
-/// Creates the GPU method called `name` (see [`registry`]). The reference is not a GPU
-/// method: callers ask the registry whether a name is the reference and handle it.
-pub fn create(name: &str, params: &Params) -> Result<Box<dyn Method>, Error> {
-    let info = registry::find(name)?;
-    let create = info.create.ok_or_else(|| {
-        Error::Input(format!("'{name}' is drawn on the CPU, not by a GPU method"))
-    })?;
-    create(params)
-}
-
-/// One parameter a method takes, described for controls and help.
-#[derive(Clone, Copy, Debug)]
-pub struct ParamSpec {
-    pub key: &'static str,
-    /// The values offered; the first is the default.
-    pub choices: &'static [&'static str],
-    /// Whole numbers in this range are accepted too (e.g. a band count), when given.
-    pub range: Option<(u32, u32)>,
-    /// What it does and what it costs.
-    pub help: &'static str,
-}
-
-/// The parameters of method `name` (none for unknown names and the reference).
-pub fn param_specs(name: &str) -> &'static [ParamSpec] {
-    registry::find(name).map_or(&[], |m| m.params)
-}
-
 /// The error of a method asked to draw before `prepare`: a caller's bug, reported
 /// rather than panicking.
 pub fn not_prepared(method: &str) -> Error {
@@ -266,27 +195,12 @@ pub fn not_prepared(method: &str) -> Error {
     ))
 }
 
-/// Rejects parameters a method does not take, naming the ones it does.
-pub fn reject_unknown_params(method: &str, params: &Params, known: &[&str]) -> Result<(), Error> {
-    for (key, _) in params {
-        if !known.contains(&key.as_str()) {
-            return Err(Error::Input(if known.is_empty() {
-                format!("method '{method}' takes no parameters (got '{key}')")
-            } else {
-                format!(
-                    "method '{method}' has no parameter '{key}'; it takes: {}",
-                    known.join(", ")
-                )
-            }));
-        }
-    }
-    Ok(())
-}
-
 pub mod atlas;
 pub mod bounds;
 pub mod frame;
+pub mod info;
 pub mod instances;
+pub mod params;
 pub mod peers;
 pub mod registry;
 pub mod sdf_cells;

@@ -1,185 +1,13 @@
-//! The registry: one row per method, and every list of methods derived from it — the
-//! CLI's `--method` values and help, the app's menus, the bench's sweep and plot
-//! colours, the stability sweep's variants and claims, shader validation. A method is
-//! added by writing its module (with its [`MethodInfo`] row) and one line in
-//! [`METHODS`]; nothing else names it.
+//! The registry: the list of every method's row, and every list of methods derived from
+//! it — the CLI's `--method` values and help, the app's menus, the bench's sweep and
+//! plot colours, the stability sweep's variants and claims, shader validation. A method
+//! is added by writing its module (with its [`MethodInfo`] row, `info.rs`) and one line
+//! in [`METHODS`]; nothing else names it.
 
-use super::{Method, ParamSpec, Params};
+use super::Method;
+use super::info::{MethodInfo, Role};
+use super::params::ParamSpec;
 use crate::Error;
-use crate::gpu::shaders::Shader;
-
-/// What a method is for, which decides where it appears.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Role {
-    /// The exact CPU rasterizer every method is measured against.
-    Reference,
-    /// A way to draw text from outlines on the GPU: benched, swept, claimed.
-    Method,
-    /// What the methods are compared with (the atlas); the bench divides times by it.
-    Baseline,
-    /// A check of the GPU path, not a way to draw text (`bounds`): drawn and tested,
-    /// not benched.
-    Diagnostic,
-    /// A renderer people use instead (vello, glyphon, vello_cpu), measured as it is:
-    /// benched beside the methods, run through the stability sweep as an observed row,
-    /// never claimed for.
-    Peer,
-}
-
-/// Makes a GPU method from its `--param`s.
-pub type Constructor = fn(&Params) -> Result<Box<dyn Method>, Error>;
-
-/// One method, as everything that lists methods sees it.
-#[derive(Debug)]
-pub struct MethodInfo {
-    /// The name `--method` takes.
-    pub name: &'static str,
-    /// One line: how it draws. Shown in `--help` and the app's menus.
-    pub summary: &'static str,
-    pub role: Role,
-    /// Its WGSL (None for the CPU reference).
-    pub shader: Option<Shader>,
-    pub params: &'static [ParamSpec],
-    /// Its colour in plots, (r, g, b).
-    pub colour: [u8; 3],
-    /// The settings the bench measures it at, its default first (empty: not benched).
-    pub bench: &'static [BenchSetting],
-    /// What the stability sweep checks of it: each setting with its claim.
-    pub claims: &'static [ClaimedSetting],
-    /// Builds it from `--param`s (None for the reference, which is not a GPU method).
-    pub create: Option<Constructor>,
-}
-
-impl MethodInfo {
-    pub fn is_reference(&self) -> bool {
-        self.role == Role::Reference
-    }
-
-    /// Whether the bench measures it (a drawing method, the baseline or a peer).
-    pub fn is_benched(&self) -> bool {
-        matches!(self.role, Role::Method | Role::Baseline | Role::Peer)
-    }
-
-    pub fn is_peer(&self) -> bool {
-        self.role == Role::Peer
-    }
-}
-
-/// One setting the bench measures a method at.
-#[derive(Clone, Copy, Debug)]
-pub struct BenchSetting {
-    pub params: &'static [(&'static str, &'static str)],
-    /// Measured by `--quick` too.
-    pub quick: bool,
-}
-
-/// A bench setting: `params`, measured by `--quick` when `quick`.
-pub const fn bench_at(
-    params: &'static [(&'static str, &'static str)],
-    quick: bool,
-) -> BenchSetting {
-    BenchSetting { params, quick }
-}
-
-/// One setting of a method the stability sweep runs, with what it claims there.
-#[derive(Clone, Copy, Debug)]
-pub struct ClaimedSetting {
-    /// Its column in the stability table.
-    pub label: &'static str,
-    pub params: &'static [(&'static str, &'static str)],
-    pub claim: Claim,
-}
-
-/// A method's claim: within `bound` on every case but those with one of the `except`
-/// traits (its documented limitations), or on none; on its limitations, within
-/// `limitation` where that is given, so a regression inside a limitation still breaks
-/// the claim.
-///
-/// **The margin rule**: every bound is written down before the sweep that checks it,
-/// from what the method is expected to do, so that the worst value measured stays at
-/// or under [`MARGIN`] of it (the full sweep prints each claim's share in its report).
-/// A bound just over one measured value claims nothing but that measurement.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Claim {
-    /// None: the method claims no bound; its errors are documented limitations.
-    pub bound: Option<Bound>,
-    pub except: &'static [Trait],
-    /// The looser bound that still holds on the limitations (None: none does).
-    pub limitation: Option<Bound>,
-    /// Outside the limitations, a bound on the temporal error (see
-    /// [`crate::metrics::temporal`]) as each case drifts 1/16 px a frame
-    /// (`stability::temporal`): its largest and its mean over the frame pairs, 1/255.
-    /// None: the method claims nothing about motion; its figures are still shown.
-    pub temporal: Option<Bound>,
-    /// The claim, and its limitations, in the words of the method's page in docs/methods/.
-    pub statement: &'static str,
-}
-
-/// The share of a bound the worst measured value may reach: the margin rule.
-pub const MARGIN: f64 = 0.8;
-
-/// What a claim bounds on one case, over every camera the sweep sees it through.
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
-pub struct Bound {
-    /// No pixel off by more than this (coverage, 0..1).
-    pub max: f64,
-    /// The mean absolute error over the frames, in 1/255: a bound on the maximum alone
-    /// lets a method round every pixel to 0 or 1 (off by at most 0.5) pass.
-    pub mae_255: f64,
-}
-
-/// A bound on the largest error and on the mean one (1/255).
-pub const fn within(max: f64, mae_255: f64) -> Bound {
-    Bound { max, mae_255 }
-}
-
-impl Bound {
-    /// Whether a largest error `max` and a mean error `mae_255` keep to this bound. A
-    /// NaN compares false with everything, so it never does.
-    pub fn holds(&self, max: f64, mae_255: f64) -> bool {
-        max <= self.max && mae_255 <= self.mae_255
-    }
-}
-
-impl Claim {
-    /// Whether an outline with `traits` is one of this claim's documented limitations.
-    pub fn is_limitation(&self, traits: &[Trait]) -> bool {
-        self.bound.is_none() || traits.iter().any(|t| self.except.contains(t))
-    }
-
-    /// The bound this claim sets on an outline with `traits`, if any.
-    pub fn bound(&self, traits: &[Trait]) -> Option<Bound> {
-        if self.is_limitation(traits) {
-            self.limitation
-        } else {
-            self.bound
-        }
-    }
-}
-
-/// A property of an outline that a method's claim may leave out of its scope. Each
-/// says what the outline is, never how a method fails on it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
-pub enum Trait {
-    /// Contours overlap or cross themselves: a distance to the outline is not a
-    /// distance to the filled area's boundary.
-    Overlapping,
-    /// Separate contours meet at a point or along an edge without overlapping: the
-    /// outline's boundary there is made of two contours' edges.
-    TouchingContours,
-    /// Several edges, or a whole contour, inside one pixel: one distance per pixel (or
-    /// four point samples) cannot resolve them.
-    SubpixelDetail,
-    /// More than 8 edges cross one pixel somewhere (at the case's size): more than a
-    /// ray keeps sorted in its pixel window.
-    CrowdedPixels,
-    /// Somewhere the winding number exceeds 255, the largest an 8-bit counter holds.
-    DeepWinding,
-    /// A view so deep into one glyph (10⁶ px/em) that f32 font units resolve only about
-    /// 1/32 px there: a method that places edges in local coordinates cannot place them
-    /// closer than that.
-    BeyondF32,
-}
 
 /// The exact CPU rasterizer: not a GPU method, so it has no constructor; callers ask
 /// [`MethodInfo::is_reference`] and rasterize with [`crate::reference`].
@@ -192,7 +20,7 @@ pub const REFERENCE: MethodInfo = MethodInfo {
     colour: [0, 0, 0],
     bench: &[],
     claims: &[],
-    create: None,
+    constructor: None,
 };
 
 /// Every method, in the order menus, tables and plots list them.
@@ -208,6 +36,18 @@ pub const METHODS: &[&MethodInfo] = &[
     &super::peers::glyphon::INFO,
     &super::peers::vello_cpu::INFO,
 ];
+
+/// The GPU method called `name`, made with the parameters `given`. The reference is
+/// not a GPU method: callers ask the registry whether a name is the reference and
+/// handle it.
+pub fn create(name: &str, given: &[(String, String)]) -> Result<Box<dyn Method>, Error> {
+    find(name)?.create(given)
+}
+
+/// The parameters of method `name` (none for unknown names and the reference).
+pub fn param_specs(name: &str) -> &'static [ParamSpec] {
+    find(name).map_or(&[], |m| m.params)
+}
 
 /// The method called `name`, or an error listing the names there are.
 pub fn find(name: &str) -> Result<&'static MethodInfo, Error> {

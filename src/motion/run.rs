@@ -13,6 +13,7 @@ use crate::coverage::CoverageImage;
 use crate::gpu::{CoverageTarget, GpuContext};
 use crate::measure::{self, FrameTiming};
 use crate::methods::frame::{ms_since, render_frame};
+use crate::methods::params::settings_text;
 use crate::methods::{Method, registry};
 use crate::metrics::{self, ErrorStats, TemporalError, TemporalSummary};
 use crate::reference;
@@ -52,7 +53,7 @@ impl MethodSpec {
 
     /// `key=value, …`, or `default`.
     pub fn settings(&self) -> String {
-        crate::methods::settings_text(&self.params)
+        settings_text(&self.params, &[])
     }
 
     fn is_reference(&self) -> bool {
@@ -243,16 +244,13 @@ fn start<'g>(
             refused: None,
         },
     };
+    let info = registry::find(&spec.name)?;
     if spec.is_reference() {
-        crate::methods::reject_unknown_params(&spec.name, &spec.params, &[])?;
+        info.parse_params(&spec.params)?;
         return Ok(live);
     }
-    let info = registry::find(&spec.name)?;
-    let create = info
-        .create
-        .ok_or_else(|| Error::Input(format!("'{}' has no GPU method", info.name)))?;
+    let mut method = info.create(&spec.params)?;
     let gpu = gpu.ok_or_else(|| Error::Gpu("a GPU method needs a GPU context".into()))?;
-    let mut method = create(&spec.params)?;
     let target = CoverageTarget::new(gpu, first.width, first.height)?;
     let warm = method.prepare(gpu, scene).and_then(|()| {
         (0..WARMUP).try_for_each(|_| render_frame(gpu, method.as_mut(), &target, first))

@@ -3,7 +3,9 @@
 //! its page in docs/methods/ does). Outside a claim's scope the method documents a known
 //! limitation, and the table still shows the measured numbers.
 
-use crate::methods::registry::{self, Claim};
+use crate::methods::info::Claim;
+use crate::methods::params::owned;
+use crate::methods::registry;
 
 /// One method at one setting, as the sweep runs it.
 #[derive(Clone, Copy, Debug)]
@@ -18,10 +20,7 @@ pub struct Variant {
 
 impl Variant {
     pub fn params(&self) -> Vec<(String, String)> {
-        self.params
-            .iter()
-            .map(|&(k, v)| (k.to_owned(), v.to_owned()))
-            .collect()
+        owned(self.params)
     }
 }
 

@@ -53,7 +53,7 @@ pub struct HardCase {
 }
 
 /// A property of a case that a method's claim may leave out of its scope.
-pub use crate::methods::registry::Trait;
+pub use crate::methods::info::Trait;
 
 impl HardCase {
     /// The case's camera, turned by `rotation_deg` about the view (after the case's own

@@ -13,7 +13,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use crate::Error;
-use crate::methods::registry::MARGIN;
+use crate::methods::info::MARGIN;
 use crate::metrics;
 use claims::Variant;
 use hard_cases::HardCase;
@@ -303,7 +303,7 @@ pub fn write_report(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::methods::registry::within;
+    use crate::methods::info::within;
     use sweep::Worst;
 
     fn outcome(max: f64, bound: Option<f64>) -> Outcome {

@@ -11,8 +11,8 @@ use super::worst_cameras;
 use crate::Error;
 use crate::coverage::CoverageImage;
 use crate::gpu::GpuContext;
-use crate::methods::registry::Bound;
-use crate::methods::{self, Method, frame};
+use crate::methods::info::Bound;
+use crate::methods::{Method, frame, registry};
 use crate::metrics::{self, ErrorStats};
 use crate::reference;
 
@@ -225,7 +225,7 @@ pub fn run(
             .iter()
             .map(|variant| {
                 let mut outcome = Outcome::new(case, variant);
-                let method = methods::create(variant.method, &variant.params())
+                let method = registry::create(variant.method, &variant.params())
                     .and_then(|mut m| m.prepare(gpu, &case.scene).map(|()| m))
                     .map_err(|e| match e {
                         Error::Refused(reason) => outcome.refused = Some(reason),

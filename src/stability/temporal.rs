@@ -1,7 +1,7 @@
 //! The hard cases in motion: each drifts 1/16 px a frame along 30° from the view the
 //! sweep starts from, every method drawing every frame, and each method's temporal error
 //! (see [`crate::metrics::temporal`]) is held to its temporal claim where it makes one
-//! ([`crate::methods::registry::Claim::temporal`]) and shown where it does not.
+//! ([`crate::methods::info::Claim::temporal`]) and shown where it does not.
 
 use std::fmt::Write as _;
 
@@ -12,7 +12,7 @@ use super::claims::Variant;
 use super::hard_cases::HardCase;
 use crate::Error;
 use crate::gpu::GpuContext;
-use crate::methods::registry::Bound;
+use crate::methods::info::Bound;
 use crate::motion::MotionPath;
 use crate::motion::run::{self, MethodSpec};
 

@@ -23,11 +23,9 @@ use super::{PeerImage, observed};
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::{CoverageTarget, GpuContext};
-use crate::methods::registry::{MethodInfo, Role, bench_at};
-use crate::methods::{
-    LayoutOffset, Method, ParamSpec, Params, PeerGpuTime, not_prepared, param,
-    reject_unknown_params,
-};
+use crate::methods::info::{MethodInfo, Role, bench_at};
+use crate::methods::params::{ParamSpec, Params};
+use crate::methods::{LayoutOffset, Method, PeerGpuTime, not_prepared};
 use crate::scene::Scene;
 
 /// `glyphon`'s row in the registry.
@@ -41,7 +39,7 @@ pub const INFO: MethodInfo = MethodInfo {
     colour: [23, 190, 207],
     bench: &[bench_at(&[], true), bench_at(&[("hint", "off")], false)],
     claims: &[observed(NAME)],
-    create: Some(|params| Ok(Box::new(Glyphon::new(params)?))),
+    constructor: Some(|params| Ok(Box::new(Glyphon::new(params)))),
 };
 
 pub const NAME: &str = "glyphon";
@@ -49,7 +47,7 @@ pub const NAME: &str = "glyphon";
 const PARAMS: &[ParamSpec] = &[ParamSpec {
     key: "hint",
     choices: &["on", "off"],
-    range: None,
+    numbers: None,
     help: "swash's hinting of the glyph bitmaps (cosmic-text's DISABLE_HINTING flag when \
            off): on is glyphon's default; off draws the outlines as they are.",
 }];
@@ -85,23 +83,13 @@ struct Prepared {
 }
 
 impl Glyphon {
-    pub fn new(params: &Params) -> Result<Glyphon, Error> {
-        reject_unknown_params(NAME, params, &["hint"])?;
-        let hint = match param(params, "hint").unwrap_or("on") {
-            "on" => true,
-            "off" => false,
-            other => {
-                return Err(Error::Input(format!(
-                    "glyphon has no hint '{other}': it takes on or off"
-                )));
-            }
-        };
-        Ok(Glyphon {
-            hint,
+    pub fn new(params: &Params) -> Glyphon {
+        Glyphon {
+            hint: params.word("hint") != Some("off"),
             prepared: None,
             image: None,
             last_frame: None,
-        })
+        }
     }
 }
 

@@ -16,7 +16,7 @@ pub mod vello_cpu;
 
 use glam::{DMat2, DVec2};
 
-use super::registry::{Claim, ClaimedSetting};
+use super::info::{Claim, ClaimedSetting};
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::kit::{self, ColorOut, PipelineBuilder, Slot};

@@ -18,10 +18,9 @@ use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::timing::Timestamps;
 use crate::gpu::{CoverageTarget, GpuContext};
-use crate::methods::registry::{MethodInfo, Role, bench_at};
-use crate::methods::{
-    Method, ParamSpec, Params, PeerGpuTime, not_prepared, param, reject_unknown_params,
-};
+use crate::methods::info::{MethodInfo, Role, bench_at};
+use crate::methods::params::{ParamSpec, Params};
+use crate::methods::{Method, PeerGpuTime, not_prepared};
 use crate::scene::Scene;
 
 /// `vello`'s row in the registry.
@@ -39,7 +38,7 @@ pub const INFO: MethodInfo = MethodInfo {
         bench_at(&[("aa", "msaa16")], false),
     ],
     claims: &[observed(NAME)],
-    create: Some(|params| Ok(Box::new(Vello::new(params)?))),
+    constructor: Some(|params| Ok(Box::new(Vello::new(params)))),
 };
 
 pub const NAME: &str = "vello";
@@ -47,7 +46,7 @@ pub const NAME: &str = "vello";
 const PARAMS: &[ParamSpec] = &[ParamSpec {
     key: "aa",
     choices: &["area", "msaa8", "msaa16"],
-    range: None,
+    numbers: None,
     help: "vello's anti-aliasing: area (analytic, its default) integrates the winding \
            number over each pixel; msaa8 and msaa16 count samples, right where contours \
            overlap, at more cost.",
@@ -65,25 +64,19 @@ pub struct Vello {
 }
 
 impl Vello {
-    pub fn new(params: &Params) -> Result<Vello, Error> {
-        reject_unknown_params(NAME, params, &["aa"])?;
-        let aa = match param(params, "aa").unwrap_or("area") {
-            "area" => AaConfig::Area,
-            "msaa8" => AaConfig::Msaa8,
-            "msaa16" => AaConfig::Msaa16,
-            other => {
-                return Err(Error::Input(format!(
-                    "vello has no aa '{other}': it takes area, msaa8 or msaa16"
-                )));
-            }
+    pub fn new(params: &Params) -> Vello {
+        let aa = match params.word("aa") {
+            Some("msaa8") => AaConfig::Msaa8,
+            Some("msaa16") => AaConfig::Msaa16,
+            _ => AaConfig::Area,
         };
-        Ok(Vello {
+        Vello {
             aa,
             renderer: None,
             prepared: None,
             image: None,
             timestamps: None,
-        })
+        }
     }
 
     /// The vello scene of one frame.

@@ -15,10 +15,9 @@ use super::{AffinePlacement, LinebenderScene, PeerImage, observed};
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::{CoverageTarget, GpuContext};
-use crate::methods::registry::{MethodInfo, Role, bench_at};
-use crate::methods::{
-    Method, ParamSpec, Params, PeerGpuTime, not_prepared, param, reject_unknown_params,
-};
+use crate::methods::info::{MethodInfo, Role, bench_at};
+use crate::methods::params::{ParamSpec, Params};
+use crate::methods::{Method, PeerGpuTime, not_prepared};
 use crate::scene::Scene;
 
 /// `vello-cpu`'s row in the registry.
@@ -32,7 +31,7 @@ pub const INFO: MethodInfo = MethodInfo {
     colour: [188, 189, 34],
     bench: &[bench_at(&[], true), bench_at(&[("mode", "quality")], false)],
     claims: &[observed(NAME)],
-    create: Some(|params| Ok(Box::new(VelloCpu::new(params)?))),
+    constructor: Some(|params| Ok(Box::new(VelloCpu::new(params)))),
 };
 
 pub const NAME: &str = "vello-cpu";
@@ -40,7 +39,7 @@ pub const NAME: &str = "vello-cpu";
 const PARAMS: &[ParamSpec] = &[ParamSpec {
     key: "mode",
     choices: &["speed", "quality"],
-    range: None,
+    numbers: None,
     help: "vello_cpu's render mode: speed (its default) rasterizes with u8/u16 \
            arithmetic, quality with f32.",
 }];
@@ -56,25 +55,19 @@ pub struct VelloCpu {
 }
 
 impl VelloCpu {
-    pub fn new(params: &Params) -> Result<VelloCpu, Error> {
-        reject_unknown_params(NAME, params, &["mode"])?;
-        let mode = match param(params, "mode").unwrap_or("speed") {
-            "speed" => RenderMode::OptimizeSpeed,
-            "quality" => RenderMode::OptimizeQuality,
-            other => {
-                return Err(Error::Input(format!(
-                    "vello-cpu has no mode '{other}': it takes speed or quality"
-                )));
-            }
+    pub fn new(params: &Params) -> VelloCpu {
+        let mode = match params.word("mode") {
+            Some("quality") => RenderMode::OptimizeQuality,
+            _ => RenderMode::OptimizeSpeed,
         };
-        Ok(VelloCpu {
+        VelloCpu {
             mode,
             prepared: None,
             image: None,
             resources: Resources::new(),
             context: None,
             pixmap: None,
-        })
+        }
     }
 
     /// Rasterizes one frame into `pixmap`.

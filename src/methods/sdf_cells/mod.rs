@@ -29,9 +29,10 @@ pub mod params;
 
 use glam::DMat2;
 
+use super::info::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at, within};
 use super::instances::Instances;
-use super::registry::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at, within};
-use super::{CurveCost, Method, Overlay, Params};
+use super::params::Params;
+use super::{CurveCost, Method, Overlay};
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::kit::{self, PipelineBuilder, Slot};
@@ -52,7 +53,7 @@ pub const INFO: MethodInfo = MethodInfo {
     params: params::PARAMS,
     colour: [44, 160, 44],
     bench: &[bench_at(&[], true), bench_at(&[("mode", "exact")], true)],
-    // Bounds set by the margin rule (registry::Claim) from the sweep before them.
+    // Bounds set by the margin rule (info::Claim) from the sweep before them.
     claims: &[
         ClaimedSetting {
             label: params::NAME,
@@ -96,7 +97,7 @@ pub const INFO: MethodInfo = MethodInfo {
             },
         },
     ],
-    create: Some(|params| Ok(Box::new(SdfCells::new(params)?))),
+    constructor: Some(|params| Ok(Box::new(SdfCells::new(params)))),
 };
 
 const SHADER: Shader = crate::method_shader!("sdf_cells.wgsl");
@@ -189,12 +190,12 @@ pub struct Summary {
 }
 
 impl SdfCells {
-    pub fn new(params: &Params) -> Result<SdfCells, Error> {
-        Ok(SdfCells {
-            settings: Settings::from_params(params)?,
+    pub fn new(params: &Params) -> SdfCells {
+        SdfCells {
+            settings: Settings::from_params(params),
             pipeline: None,
             prepared: None,
-        })
+        }
     }
 
     pub fn settings(&self) -> &Settings {

@@ -1,8 +1,8 @@
-//! `--param` values of `sdf-cells`, checked.
+//! The parameters of `sdf-cells` and the settings they choose.
 
 use super::cells::Mode;
-use crate::Error;
-use crate::methods::{Overlay, ParamSpec, Params, param, parse_overlay, reject_unknown_params};
+use crate::methods::Overlay;
+use crate::methods::params::{Numbers, ParamSpec, Params, Value};
 
 pub const NAME: &str = "sdf-cells";
 
@@ -11,7 +11,7 @@ pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "mode",
         choices: &["estimate", "exact"],
-        range: None,
+        numbers: None,
         help: "estimate: the tangent-line distance of kocsis1david's font-demo (cheap, \
                wrong far from high curvature and where curves tie); exact: true distance \
                to each quadratic (a cubic solve per curve, after Clément Bœsch's \
@@ -20,28 +20,35 @@ pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "bias",
         choices: &["0.001", "0", "0.005"],
-        range: None,
+        numbers: Some(Numbers::Real {
+            min: 0.0,
+            max: 0.1,
+            unit: "em",
+        }),
         help: "UDIST_BIAS of kocsis1david's font-demo, em: distances closer than this \
                tie and the turn at the join decides.",
     },
     ParamSpec {
         key: "grid",
         choices: &["auto"],
-        range: Some((1, MAX_GRID)),
+        numbers: Some(Numbers::Whole {
+            min: 1,
+            max: MAX_GRID,
+        }),
         help: "Cells per side of each glyph's grid. More cells, fewer curves per pixel, \
                more memory.",
     },
     ParamSpec {
         key: "encoding",
         choices: &["auto", "packed", "list"],
-        range: None,
+        numbers: None,
         help: "packed: the three loops in one u32 per cell of kocsis1david's font-demo; \
                list: offset + count into an index list; auto: packed where it fits.",
     },
     ParamSpec {
         key: "overlaps",
         choices: &["merge", "keep"],
-        range: None,
+        numbers: None,
         help: "merge: a glyph whose contours overlap is drawn from their nonzero union \
                (geometry::merge_overlaps), as kocsis1david's font-demo asks; keep: from \
                the contours as the font has them.",
@@ -49,25 +56,37 @@ pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "outline",
         choices: &["0", "0.02", "0.05"],
-        range: None,
+        numbers: Some(Numbers::Real {
+            min: 0.0,
+            max: 0.5,
+            unit: "em",
+        }),
         help: "Stroke width outside the edge, em (0 = off). Free once the distance exists.",
     },
     ParamSpec {
         key: "glow",
         choices: &["0", "0.1", "0.3"],
-        range: None,
+        numbers: Some(Numbers::Real {
+            min: 0.0,
+            max: 1.0,
+            unit: "em",
+        }),
         help: "How far a glow fades beyond the outer edge, em (0 = off); grows the quads.",
     },
     ParamSpec {
         key: "dilate",
         choices: &["0", "0.02", "-0.02"],
-        range: None,
+        numbers: Some(Numbers::Real {
+            min: -0.5,
+            max: 0.5,
+            unit: "em",
+        }),
         help: "Grow (positive) or erode (negative) the shape, em.",
     },
     ParamSpec {
         key: "overlay",
         choices: &["none", "purple", "cells", "cost"],
-        range: None,
+        numbers: None,
         help: "purple: where the two nearest curves tie; cells: cell borders tinted by \
                curve count; cost: curves evaluated per pixel.",
     },
@@ -150,52 +169,35 @@ impl Default for Settings {
 }
 
 impl Settings {
-    pub fn from_params(params: &Params) -> Result<Settings, Error> {
-        let keys: Vec<&str> = PARAMS.iter().map(|p| p.key).collect();
-        reject_unknown_params(NAME, params, &keys)?;
+    pub fn from_params(params: &Params) -> Settings {
         let defaults = Settings::default();
-        let mode = match param(params, "mode") {
-            None | Some("estimate") => Mode::Estimate,
-            Some("exact") => Mode::Exact,
-            Some(other) => return Err(bad("mode", other, "estimate or exact")),
-        };
-        let grid = match param(params, "grid") {
-            None | Some("auto") => GridChoice::Auto,
-            Some(v) => match v.parse::<u32>() {
-                Ok(n) if (1..=MAX_GRID).contains(&n) => GridChoice::Fixed(n),
-                _ => {
-                    return Err(bad(
-                        "grid",
-                        v,
-                        &format!("auto or a whole number 1 to {MAX_GRID}"),
-                    ));
-                }
+        let em = |key: &str, default: f64| params.real(key).unwrap_or(default);
+        Settings {
+            mode: match params.word("mode") {
+                Some("exact") => Mode::Exact,
+                _ => Mode::Estimate,
             },
-        };
-        let encoding = match param(params, "encoding") {
-            None | Some("auto") => EncodingChoice::Auto,
-            Some("packed") => EncodingChoice::Packed,
-            Some("list") => EncodingChoice::List,
-            Some(other) => return Err(bad("encoding", other, "auto, packed or list")),
-        };
-        let overlaps = match param(params, "overlaps") {
-            None | Some("merge") => Overlaps::Merge,
-            Some("keep") => Overlaps::Keep,
-            Some(other) => return Err(bad("overlaps", other, "merge or keep")),
-        };
-        Ok(Settings {
-            mode,
-            overlaps,
-            bias_em: number(params, "bias", defaults.bias_em, 0.0, 0.1)?,
-            grid,
-            encoding,
+            overlaps: match params.word("overlaps") {
+                Some("keep") => Overlaps::Keep,
+                _ => Overlaps::Merge,
+            },
+            bias_em: em("bias", defaults.bias_em),
+            grid: match params.get("grid") {
+                Some(Value::Whole(n)) => GridChoice::Fixed(n),
+                _ => GridChoice::Auto,
+            },
+            encoding: match params.word("encoding") {
+                Some("packed") => EncodingChoice::Packed,
+                Some("list") => EncodingChoice::List,
+                _ => EncodingChoice::Auto,
+            },
             effects: Effects {
-                dilate: number(params, "dilate", 0.0, -0.5, 0.5)?,
-                outline: number(params, "outline", 0.0, 0.0, 0.5)?,
-                glow: number(params, "glow", 0.0, 0.0, 1.0)?,
+                dilate: em("dilate", defaults.effects.dilate),
+                outline: em("outline", defaults.effects.outline),
+                glow: em("glow", defaults.effects.glow),
             },
-            overlay: parse_overlay(NAME, param(params, "overlay"), OVERLAYS)?,
-        })
+            overlay: params.word("overlay").and_then(Overlay::named),
+        }
     }
 
     /// How far outside the outline the effects draw, em.
@@ -205,37 +207,14 @@ impl Settings {
     }
 }
 
-fn bad(key: &str, value: &str, expected: &str) -> Error {
-    Error::Input(format!(
-        "method '{NAME}': {key}={value} is not valid; expected {expected}"
-    ))
-}
-
-/// The number of em a parameter gives, within [low, high].
-fn number(params: &Params, key: &str, default: f64, low: f64, high: f64) -> Result<f64, Error> {
-    let Some(text) = param(params, key) else {
-        return Ok(default);
-    };
-    match text.parse::<f64>() {
-        Ok(v) if v.is_finite() && (low..=high).contains(&v) => Ok(v),
-        _ => Err(bad(
-            key,
-            text,
-            &format!("a number of em from {low} to {high}"),
-        )),
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::Error;
+    use crate::methods::params::owned;
 
     fn parse(pairs: &[(&str, &str)]) -> Result<Settings, Error> {
-        let params: Vec<(String, String)> = pairs
-            .iter()
-            .map(|(k, v)| (k.to_string(), v.to_string()))
-            .collect();
-        Settings::from_params(&params)
+        Params::parse(NAME, PARAMS, &owned(pairs)).map(|params| Settings::from_params(&params))
     }
 
     #[test]
@@ -274,7 +253,7 @@ mod tests {
             ("bias", "nan", "number of em"),
             ("glow", "1e400", "number of em"),
             ("outline", "wide", "number of em"),
-            ("overlay", "wireframe", "no overlay 'wireframe'"),
+            ("overlay", "wireframe", "overlay=wireframe is not valid"),
             ("colour", "red", "no parameter 'colour'"),
         ] {
             let err = parse(&[(key, value)]).unwrap_err();

@@ -28,12 +28,10 @@ use glam::{DMat2, DMat3, DVec2};
 use self::mesh::GlyphMesh;
 use self::store::{MeshKey, MeshStore};
 use self::subdivision::{GLYPH_TABLE_EM_PER_HEIGHT, Polylines, Subdivision, TaggedContour};
+use super::info::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at, within};
 use super::instances::Instances;
-use super::registry::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at, within};
-use super::{
-    GlyphMeshStats, MeshStats, Method, Overlay, ParamSpec, Params, param, parse_overlay,
-    reject_unknown_params,
-};
+use super::params::{Numbers, ParamSpec, Params, Value};
+use super::{GlyphMeshStats, MeshStats, Method, Overlay};
 use crate::Error;
 use crate::camera::Camera;
 use crate::font::GlyphId;
@@ -66,7 +64,7 @@ pub const INFO: MethodInfo = MethodInfo {
         label: NAME,
         params: &[],
         claim: Claim {
-            // Set by the margin rule (registry::Claim); last measured by
+            // Set by the margin rule (info::Claim); last measured by
             // `cargo run --release -- stability --methods tessellation`: max 0.474
             // (strong-skew), MAE 4.51/255 (latin-modern-cubics).
             bound: Some(within(0.6, 6.0)),
@@ -78,7 +76,7 @@ pub const INFO: MethodInfo = MethodInfo {
                         0.6; four point samples cannot resolve several edges inside one pixel",
         },
     }],
-    create: Some(|params| Ok(Box::new(Tessellation::new(params)?))),
+    constructor: Some(|params| Ok(Box::new(Tessellation::new(params)?))),
 };
 
 const SHADER: Shader = crate::method_shader!("tessellation.wgsl");
@@ -94,8 +92,6 @@ pub const DEFAULT_THRESHOLD: f64 = 3.0;
 /// renderer holds its fills to at any zoom (its change "Keep cubic fills accurate at high
 /// zoom").
 pub const DEFAULT_TOLERANCE_PX: f64 = 0.1;
-const MAX_STEPS: u32 = 1024;
-const TOLERANCE_RANGE_PX: std::ops::RangeInclusive<f64> = 0.01..=16.0;
 
 /// lyon merges vertices closer than half its tolerance: 2⁻²¹ em (0.01 px at
 /// 20 000 px/em), or an eighth of the screen-space tolerance where that is finer, but
@@ -154,7 +150,7 @@ pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "subdivision",
         choices: &["screen", "asa", "fsa"],
-        range: None,
+        numbers: None,
         help: "screen: never more than tolerance_px from the curve under the current \
                transform (re-tessellates per power-of-two zoom); asa: the adaptive steps \
                of Jeff Boody's Glyph; fsa: N equal steps per curve.",
@@ -162,14 +158,18 @@ pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "steps",
         choices: &["16", "1", "2", "4", "8"],
-        range: Some((1, 1024)),
+        numbers: Some(Numbers::Whole { min: 1, max: 1024 }),
         help: "fsa: steps per curve. More steps, more triangles; 16 is the best in Jeff \
                Boody's Glyph.",
     },
     ParamSpec {
         key: "threshold",
         choices: &["3", "1", "13", "20"],
-        range: Some((0, 1000)),
+        numbers: Some(Numbers::Real {
+            min: 0.0,
+            max: f64::INFINITY,
+            unit: "",
+        }),
         help: "asa: area error per length allowed, in tenths of a unit with the glyph \
                1000 units tall, as in Jeff Boody's Glyph; Glyph sees artifacts begin \
                between 3 and 13.",
@@ -177,21 +177,25 @@ pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "tolerance_px",
         choices: &["0.1", "0.05", "0.25"],
-        range: None,
+        numbers: Some(Numbers::Real {
+            min: 0.01,
+            max: 16.0,
+            unit: "pixels",
+        }),
         help: "screen: largest distance from the true curve, pixels. Halving it costs \
                about 20% more points.",
     },
     ParamSpec {
         key: "msaa",
         choices: &["4", "1"],
-        range: None,
+        numbers: None,
         help: "Samples per pixel of the method's own target: 4 quantizes coverage to \
                quarters; 1 aliases. 4x costs a large resolve on software GPUs.",
     },
     ParamSpec {
         key: "overlay",
         choices: &["none", "wireframe", "points"],
-        range: None,
+        numbers: None,
         help: "wireframe: the triangles; points: on-curve, virtual midpoints and \
                subdivision steps.",
     },
@@ -199,33 +203,9 @@ pub const PARAMS: &[ParamSpec] = &[
 
 impl Tessellation {
     pub fn new(params: &Params) -> Result<Tessellation, Error> {
-        let keys: Vec<&str> = PARAMS.iter().map(|p| p.key).collect();
-        reject_unknown_params(NAME, params, &keys)?;
-        let overlay = parse_overlay(NAME, param(params, "overlay"), OVERLAYS)?;
-        let steps = number(
-            params,
-            "steps",
-            "a whole number of steps from 1 to 1024",
-            |n| (1..=MAX_STEPS).contains(n),
-        )?;
-        let threshold = number(params, "threshold", "a number ≥ 0", |t: &f64| {
-            t.is_finite() && *t >= 0.0
-        })?;
-        let tolerance_px = number(
-            params,
-            "tolerance_px",
-            "a number of pixels from 0.01 to 16",
-            |d| TOLERANCE_RANGE_PX.contains(d),
-        )?;
-        let samples = match param(params, "msaa") {
-            None | Some("4") => 4,
-            Some("1") => 1,
-            Some(v) => {
-                return Err(Error::Input(format!(
-                    "method '{NAME}': msaa must be 1 or 4 (the sample counts every GPU has), got '{v}'"
-                )));
-            }
-        };
+        let steps = params.given("steps").and_then(Value::whole);
+        let threshold = params.given("threshold").and_then(Value::real);
+        let tolerance_px = params.given("tolerance_px").and_then(Value::real);
         // Each mode's own parameter; given without `subdivision`, it picks its mode.
         let given: Vec<(&str, &str)> = [
             ("steps", "fsa", steps.is_some()),
@@ -236,11 +216,19 @@ impl Tessellation {
         .filter(|&(_, _, is_given)| is_given)
         .map(|(key, mode, _)| (key, mode))
         .collect();
-        let (mode, why) = match (param(params, "subdivision"), given.first()) {
+        let (mode, why) = match (
+            params.given("subdivision").and_then(Value::word),
+            given.first(),
+        ) {
             (Some(mode), _) => (mode, String::new()),
             (None, Some(&(key, mode))) => (mode, format!(" (implied by {key})")),
             (None, None) => ("screen", String::new()),
         };
+        if let Some((key, owner)) = given.iter().find(|(_, owner)| *owner != mode) {
+            return Err(Error::Input(format!(
+                "method '{NAME}': {key} applies to subdivision={owner}, not to subdivision={mode}{why}"
+            )));
+        }
         let setting = match mode {
             "fsa" => Setting::Fixed {
                 steps: steps.unwrap_or(DEFAULT_STEPS),
@@ -248,45 +236,23 @@ impl Tessellation {
             "asa" => Setting::Adaptive {
                 threshold: threshold.unwrap_or(DEFAULT_THRESHOLD),
             },
-            "screen" => Setting::Screen {
+            _ => Setting::Screen {
                 tolerance_px: tolerance_px.unwrap_or(DEFAULT_TOLERANCE_PX),
             },
-            other => {
-                return Err(Error::Input(format!(
-                    "method '{NAME}': subdivision must be fsa, asa or screen, got '{other}'"
-                )));
-            }
         };
-        if let Some((key, owner)) = given.iter().find(|(_, owner)| *owner != mode) {
-            return Err(Error::Input(format!(
-                "method '{NAME}': {key} applies to subdivision={owner}, not to subdivision={mode}{why}"
-            )));
-        }
         Ok(Tessellation {
             setting,
-            samples,
-            overlay,
+            samples: if params.word("msaa") == Some("1") {
+                1
+            } else {
+                4
+            },
+            overlay: params.word("overlay").and_then(Overlay::named),
             pipelines: None,
             scene: None,
             attachments: None,
         })
     }
-}
-
-/// The parameter `key` parsed as a T that `valid` accepts, if given.
-fn number<T: std::str::FromStr>(
-    params: &Params,
-    key: &str,
-    what: &str,
-    valid: impl Fn(&T) -> bool,
-) -> Result<Option<T>, Error> {
-    param(params, key)
-        .map(|v| {
-            v.parse().ok().filter(&valid).ok_or_else(|| {
-                Error::Input(format!("method '{NAME}': {key} must be {what}, got '{v}'"))
-            })
-        })
-        .transpose()
 }
 
 impl Setting {

@@ -8,49 +8,10 @@
 //! or 1, and those that integrated the sub-pixel grid (`OVERLAY` 5). A [`Stage`] cuts
 //! the shader short so that each stage's time is the difference from the one before.
 
-use super::{Output, Winding};
+use super::{Output, Settings, Stage, Winding};
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::{GpuContext, kit};
-use crate::methods::Params;
-
-/// Where the fragment shader stops (`STAGE` in winding.wgsl).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Stage {
-    /// Writes 1 at once: rasterizing the quads and blending.
-    Quads,
-    /// After the per-fragment setup: derivatives, the pixel's frame, its band.
-    Setup,
-    /// After the band walk: each visited curve loaded, mapped into the pixel's frame and
-    /// sorted into its zone, no term added.
-    Walk,
-    /// With the terms of the curves wholly right of the pixel, not those across it.
-    Right,
-    /// The whole shader: terms, fill rule, the sub-pixel grid where it is needed.
-    Full,
-}
-
-impl Stage {
-    /// In the order the shader runs them.
-    pub const ALL: [Stage; 5] = [
-        Stage::Quads,
-        Stage::Setup,
-        Stage::Walk,
-        Stage::Right,
-        Stage::Full,
-    ];
-
-    pub(super) fn constant(self) -> f64 {
-        match self {
-            Stage::Quads => 0.0,
-            Stage::Setup => 1.0,
-            Stage::Walk => 2.0,
-            Stage::Right => 3.0,
-            Stage::Full => 4.0,
-        }
-    }
-}
 
 /// One frame's counts, summed over its pixels.
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
@@ -90,11 +51,15 @@ impl CostCounts {
 }
 
 impl Winding {
-    /// `winding` with `params`, its shader stopping after `stage`.
-    pub fn staged(params: &Params, stage: Stage) -> Result<Winding, Error> {
-        let mut winding = Winding::new(params)?;
-        winding.stage = stage;
-        Ok(winding)
+    /// `winding` at `settings`, its shader stopping after `stage`.
+    pub fn staged(settings: Settings, stage: Stage) -> Winding {
+        Winding {
+            settings,
+            stage,
+            layout: None,
+            pipelines: Vec::new(),
+            prepared: None,
+        }
     }
 
     /// The counts of a frame through `camera` (prepared, `aa=area`).

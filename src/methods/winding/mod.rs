@@ -29,13 +29,11 @@ pub mod cost;
 mod overlaps;
 
 pub use bands::{BandCount, GlyphData, Layout, MAX_BANDS};
-pub use cost::{CostCounts, Stage};
 
+use super::info::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at, within};
 use super::instances::Instances;
-use super::registry::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at, within};
-use super::{
-    CurveCost, Method, Overlay, ParamSpec, Params, param, parse_overlay, reject_unknown_params,
-};
+use super::params::{Numbers, ParamSpec, Params, Value};
+use super::{CurveCost, Method, Overlay};
 use crate::Error;
 use crate::camera::Camera;
 use crate::geometry::{Rect, keeps_axes, steps_lean_apart};
@@ -69,7 +67,7 @@ pub const INFO: MethodInfo = MethodInfo {
         bench_at(&[("rays", "1"), ("samples", "1")], true),
         bench_at(&[("rays", "1"), ("samples", "1"), ("bands", "off")], false),
     ],
-    // Bounds set by the margin rule (registry::Claim) from the sweep before them.
+    // Bounds set by the margin rule (info::Claim) from the sweep before them.
     claims: &[
         ClaimedSetting {
             label: NAME,
@@ -122,7 +120,7 @@ pub const INFO: MethodInfo = MethodInfo {
             },
         },
     ],
-    create: Some(|params| Ok(Box::new(Winding::new(params)?))),
+    constructor: Some(|params| Ok(Box::new(Winding::new(params)?))),
 };
 
 pub const NAME: &str = "winding";
@@ -137,7 +135,7 @@ pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "aa",
         choices: &["area", "rays"],
-        range: None,
+        numbers: None,
         help: "area: the exact box-filter integral of the winding number over the pixel, \
                by Green's theorem over each curve, for less than rays with one sample \
                cost; rays: coverage from the crossings of \
@@ -146,7 +144,7 @@ pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "rays",
         choices: &["2", "1", "slug"],
-        range: None,
+        numbers: None,
         help: "Selects aa=rays. 2: rays along x and y, weighted by which sees the edge \
                best; 1: x only (aliases edges near horizontal). 2 costs about twice the \
                curves. slug: x and y rays combined as Slug's published shader does \
@@ -156,7 +154,7 @@ pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "samples",
         choices: &["auto", "1", "4"],
-        range: None,
+        numbers: None,
         help: "4 sub-pixels tiling the pixel cut small-size error ~4x for ~3.5x the \
                curves; auto uses 4 where a pixel spans over 1/32 em. With aa=area: 4 \
                integrates 4×4 sub-pixels everywhere, 1 never, auto only in the pixels \
@@ -165,20 +163,23 @@ pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "bands",
         choices: &["auto", "off"],
-        range: Some((1, MAX_BANDS)),
+        numbers: Some(Numbers::Whole {
+            min: 1,
+            max: MAX_BANDS,
+        }),
         help: "Bands let a pixel visit only the curves at its height; off visits every \
                curve of the glyph (same image, ~10x the cost).",
     },
     ParamSpec {
         key: "fill",
         choices: &["nonzero", "evenodd"],
-        range: None,
+        numbers: None,
         help: "Fill rule. Fonts mean nonzero.",
     },
     ParamSpec {
         key: "overlaps",
         choices: &["merge", "keep"],
-        range: None,
+        numbers: None,
         help: "merge (the default with fill=nonzero): a glyph whose contours overlap is \
                drawn from their nonzero union (geometry::merge_overlaps), so aa=area needs \
                no sub-pixels there; keep (the default with fill=evenodd): from the \
@@ -187,7 +188,7 @@ pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "overlay",
         choices: &["none", "classes", "cost"],
-        range: None,
+        numbers: None,
         help: "classes: each curve's sign class for the ray through the pixel; cost: \
                curves evaluated per pixel.",
     },
@@ -258,85 +259,58 @@ impl Default for Settings {
 }
 
 impl Settings {
+    /// The settings `params` choose; refused where two parameters contradict each
+    /// other.
     pub fn from_params(params: &Params) -> Result<Settings, Error> {
-        let keys: Vec<&str> = PARAMS.iter().map(|p| p.key).collect();
-        reject_unknown_params(NAME, params, &keys)?;
-        let bad = |key: &str, value: &str, allowed: &str| {
-            Error::Input(format!("winding: {key}={value} is not one of {allowed}"))
-        };
         let mut s = Settings::default();
-        if let Some(v) = param(params, "aa") {
-            s.aa = match v {
-                "area" => Antialiasing::Area,
-                "rays" => Antialiasing::Rays,
-                _ => return Err(bad("aa", v, "area, rays")),
-            };
+        let aa = params.given("aa").and_then(Value::word);
+        if aa == Some("rays") {
+            s.aa = Antialiasing::Rays;
         }
-        if let Some(v) = param(params, "rays") {
+        if let Some(rays) = params.given("rays").and_then(Value::word) {
             // A ray count asks for rays.
-            match param(params, "aa") {
-                None => s.aa = Antialiasing::Rays,
-                Some("area") => {
-                    return Err(Error::Input(format!(
-                        "winding: rays={v} does not apply to aa=area, which casts no rays"
-                    )));
-                }
-                Some(_) => {}
+            if aa == Some("area") {
+                return Err(Error::Input(format!(
+                    "winding: rays={rays} does not apply to aa=area, which casts no rays"
+                )));
             }
-            s.rays = match v {
+            s.aa = Antialiasing::Rays;
+            s.rays = match rays {
                 "1" => Rays::X,
-                "2" => Rays::XY,
                 "slug" => {
                     // Slug's shader takes one sample per pixel.
                     s.samples = 1;
                     Rays::Slug
                 }
-                _ => return Err(bad("rays", v, "1, 2, slug")),
+                _ => Rays::XY,
             };
         }
-        if let Some(v) = param(params, "samples") {
-            s.samples = match v {
-                "auto" => 0,
+        if let Some(samples) = params.given("samples").and_then(Value::word) {
+            s.samples = match samples {
                 "1" => 1,
                 "4" => 4,
-                _ => return Err(bad("samples", v, "auto, 1, 4")),
+                _ => 0,
             };
         }
-        if let Some(v) = param(params, "fill") {
-            s.even_odd = match v {
-                "nonzero" => false,
-                "evenodd" => true,
-                _ => return Err(bad("fill", v, "nonzero, evenodd")),
-            };
-        }
+        s.even_odd = params.word("fill") == Some("evenodd");
         // Merged unless the fill is even-odd, whose image the nonzero union is not.
-        s.merge_overlaps = !s.even_odd;
-        let overlaps = param(params, "overlaps");
-        if let Some(v) = overlaps {
-            s.merge_overlaps = match v {
-                "keep" => false,
-                "merge" => true,
-                _ => return Err(bad("overlaps", v, "keep, merge")),
-            };
-        }
-        if overlaps == Some("merge") && s.even_odd {
-            return Err(Error::Input(
-                "winding: overlaps=merge takes the nonzero union, which fill=evenodd would \
-                 not draw the same"
-                    .into(),
-            ));
-        }
-        if let Some(v) = param(params, "bands") {
-            s.bands = match v {
-                "auto" => Some(BandCount::Auto),
-                "off" => None,
-                n => match n.parse::<u32>() {
-                    Ok(n) if (1..=MAX_BANDS).contains(&n) => Some(BandCount::Fixed(n)),
-                    _ => return Err(bad("bands", v, &format!("auto, off, 1..{MAX_BANDS}"))),
-                },
-            };
-        }
-        s.overlay = parse_overlay(NAME, param(params, "overlay"), OVERLAYS)?;
+        s.merge_overlaps = match params.given("overlaps").and_then(Value::word) {
+            Some("merge") if s.even_odd => {
+                return Err(Error::Input(
+                    "winding: overlaps=merge takes the nonzero union, which fill=evenodd \
+                     would not draw the same"
+                        .into(),
+                ));
+            }
+            Some(overlaps) => overlaps == "merge",
+            None => !s.even_odd,
+        };
+        s.bands = match params.get("bands") {
+            Some(Value::Whole(n)) => Some(BandCount::Fixed(n)),
+            Some(Value::Word("off")) => None,
+            _ => Some(BandCount::Auto),
+        };
+        s.overlay = params.word("overlay").and_then(Overlay::named);
         Ok(s)
     }
 }
@@ -375,6 +349,44 @@ impl Settings {
                 4 => true,
                 _ => marked,
             },
+        }
+    }
+}
+
+/// Where the fragment shader stops (`STAGE` in winding.wgsl).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Stage {
+    /// Writes 1 at once: rasterizing the quads and blending.
+    Quads,
+    /// After the per-fragment setup: derivatives, the pixel's frame, its band.
+    Setup,
+    /// After the band walk: each visited curve loaded, mapped into the pixel's frame and
+    /// sorted into its zone, no term added.
+    Walk,
+    /// With the terms of the curves wholly right of the pixel, not those across it.
+    Right,
+    /// The whole shader: terms, fill rule, the sub-pixel grid where it is needed.
+    Full,
+}
+
+impl Stage {
+    /// In the order the shader runs them.
+    pub const ALL: [Stage; 5] = [
+        Stage::Quads,
+        Stage::Setup,
+        Stage::Walk,
+        Stage::Right,
+        Stage::Full,
+    ];
+
+    fn constant(self) -> f64 {
+        match self {
+            Stage::Quads => 0.0,
+            Stage::Setup => 1.0,
+            Stage::Walk => 2.0,
+            Stage::Right => 3.0,
+            Stage::Full => 4.0,
         }
     }
 }
@@ -426,13 +438,7 @@ struct Prepared {
 
 impl Winding {
     pub fn new(params: &Params) -> Result<Winding, Error> {
-        Ok(Winding {
-            settings: Settings::from_params(params)?,
-            stage: Stage::Full,
-            layout: None,
-            pipelines: Vec::new(),
-            prepared: None,
-        })
+        Ok(Winding::staged(Settings::from_params(params)?, Stage::Full))
     }
 
     pub fn settings(&self) -> Settings {

@@ -1,11 +1,9 @@
 //! The count behind `curves_per_pixel`: the frame's curve triangles drawn again, with
 //! its samples and jitter, into an additive target instead of the stencil.
 
-use super::Settings;
-use super::jitter::jitter_offset;
-use super::passes::draw_runs;
+use super::params::Settings;
 use super::pipelines::{Builder, Pipelines};
-use super::prepared::Prepared;
+use super::prepared::{Prepared, draw_runs};
 use crate::Error;
 use crate::gpu::kit::{self, ColorOut};
 use crate::gpu::msaa::Attachments;
@@ -62,7 +60,7 @@ pub(super) fn curve_cost(
             // `render_frame` left this camera's instances and runs in place.
             for k in 0..settings.passes {
                 pass.set_bind_group(0, prepared.instances.bind_group(), &[]);
-                pass.set_bind_group(1, &prepared.bind_group, &[jitter_offset(pipelines, k)]);
+                pass.set_bind_group(1, &prepared.bind_group, &[pipelines.jitter_offset(k)]);
                 draw_runs(
                     &mut pass,
                     &prepared.runs,

@@ -1,12 +1,6 @@
-//! The jittered passes: their N-rooks pattern of sub-pixel offsets, and the uniform
-//! buffer that hands each pass its offset and weight.
+//! The jittered passes' N-rooks pattern of sub-pixel offsets.
 
 use glam::DVec2;
-
-use super::Settings;
-use super::overlay::OVERLAY_TINT;
-use super::pipelines::Pipelines;
-use crate::gpu::GpuContext;
 
 /// The sub-pixel offsets of `passes` jittered passes over `samples` MSAA samples,
 /// centred on the pixel centre in a cell of side 1/samples.
@@ -77,54 +71,6 @@ pub fn jitter_offsets(passes: u32, samples: u32) -> Vec<DVec2> {
     }
     let cell = 1.0 / f64::from(samples);
     (0..n).map(|i| (point(i, rows[i]) - 0.5) * cell).collect()
-}
-
-/// The `Jitter` uniform of `xor_stencil.wgsl`, one per pass at the device's uniform
-/// offset alignment.
-#[repr(C)]
-#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
-pub(super) struct Jitter {
-    offset: [f32; 2],
-    weight: f32,
-    tint: f32,
-}
-
-/// Bytes between two passes' `Jitter`s: the device's uniform offset alignment.
-pub(super) fn jitter_stride(device: &wgpu::Device) -> u64 {
-    u64::from(device.limits().min_uniform_buffer_offset_alignment).max(size_of::<Jitter>() as u64)
-}
-
-/// The `Jitter` entries of every pass of `settings`, and an unshifted one last.
-pub(super) fn jitter_buffer(gpu: &GpuContext, settings: &Settings, stride: usize) -> wgpu::Buffer {
-    let offsets = jitter_offsets(settings.passes, settings.samples);
-    let tint = if settings.overlay.is_some() {
-        OVERLAY_TINT
-    } else {
-        1.0
-    };
-    let weight = 1.0 / settings.passes as f32;
-    let mut bytes = vec![0u8; stride * (offsets.len() + 1)];
-    for (k, offset) in offsets.iter().chain([&DVec2::ZERO]).enumerate() {
-        let entry = Jitter {
-            offset: offset.as_vec2().to_array(),
-            weight,
-            tint,
-        };
-        bytes[k * stride..][..size_of::<Jitter>()].copy_from_slice(bytemuck::bytes_of(&entry));
-    }
-    let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("xor-stencil jitter"),
-        size: bytes.len() as u64,
-        usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
-    gpu.queue.write_buffer(&buffer, 0, &bytes);
-    buffer
-}
-
-/// Dynamic offset of pass `k`'s `Jitter`.
-pub(super) fn jitter_offset(pipelines: &Pipelines, k: u32) -> u32 {
-    (u64::from(k) * pipelines.jitter_stride) as u32
 }
 
 #[cfg(test)]

@@ -29,15 +29,17 @@
 //! touch; each layer's parity is folded into a "covered" stencil bit before the next
 //! layer draws, and overlapping glyphs unite instead of cancelling.
 //!
-//! The code, one concern a file:
-//! - `params.rs`: the fill rule, samples, passes and overlay, parsed from `--param`.
+//! The code, one concern a file, each importing only the ones above it:
+//! - `params.rs`: the name, and the fill rule, samples, passes and overlay its
+//!   parameters choose.
 //! - `geometry.rs`: each glyph's fan and Loop–Blinn triangles (CPU) and their buffers.
-//! - `jitter.rs`: the N-rooks pattern of the jittered passes and its uniform buffer.
+//! - `jitter.rs`: the N-rooks pattern of the jittered passes.
 //! - `layers.rs`: even-odd's split of the instances into layers that cannot touch.
-//! - `pipelines.rs`: the stencil states and render pipelines.
-//! - `prepared.rs`: a scene on the GPU and each frame's runs of visible instances.
-//! - `passes.rs`: recording a frame — count into the stencil, fold layers, cover.
-//! - `overlay.rs`: the triangle wireframe.
+//! - `pipelines.rs`: the stencil states and render pipelines (the wireframe's lines
+//!   among them), and the uniform buffer of the passes' jitter.
+//! - `prepared.rs`: a scene on the GPU, each frame's runs of visible instances, and
+//!   recording a frame from them — count into the stencil, fold layers, cover, then
+//!   the wireframe.
 //! - `count.rs`: `curves_per_pixel`, the Loop–Blinn evaluations per covered pixel.
 //!
 //! Shader: `shaders/xor_stencil.wgsl`.
@@ -46,28 +48,25 @@ mod count;
 mod geometry;
 mod jitter;
 mod layers;
-mod overlay;
 mod params;
-mod passes;
 mod pipelines;
 mod prepared;
 
 pub use geometry::{GeometryData, Triangles, tolerance_halvings};
 pub use jitter::jitter_offsets;
-pub use params::{FillRule, MAX_PASSES, PARAMS, Settings};
+pub use params::{FillRule, MAX_PASSES, NAME, PARAMS, Settings};
 
-use super::registry::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at, within};
-use super::{CurveCost, Method, Overlay, Params};
+use super::info::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at, within};
+use super::params::Params;
+use super::{CurveCost, Method, Overlay};
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::msaa::Attachments;
-use crate::gpu::shaders::Shader;
 use crate::gpu::{CoverageTarget, GpuContext};
 use crate::scene::Scene;
 use params::OVERLAYS;
-use passes::record_passes;
-use pipelines::Pipelines;
-use prepared::Prepared;
+use pipelines::{Pipelines, SHADER};
+use prepared::{Prepared, record_passes, record_wireframe};
 
 /// `xor-stencil`'s row in the registry.
 pub const INFO: MethodInfo = MethodInfo {
@@ -90,7 +89,7 @@ pub const INFO: MethodInfo = MethodInfo {
         label: NAME,
         params: &[],
         claim: Claim {
-            // Set by the margin rule (registry::Claim); last measured by
+            // Set by the margin rule (info::Claim); last measured by
             // `cargo run --release -- stability --methods xor-stencil`: max 0.377,
             // MAE 2.58/255 (glyphs-2px).
             bound: Some(within(0.5, 3.3)),
@@ -102,11 +101,8 @@ pub const INFO: MethodInfo = MethodInfo {
                         8-bit counters read a winding of 256 as 0",
         },
     }],
-    create: Some(|params| Ok(Box::new(XorStencil::new(params)?))),
+    constructor: Some(|params| Ok(Box::new(XorStencil::new(params)))),
 };
-
-pub const NAME: &str = "xor-stencil";
-const SHADER: Shader = crate::method_shader!("xor_stencil.wgsl");
 
 pub struct XorStencil {
     settings: Settings,
@@ -117,8 +113,8 @@ pub struct XorStencil {
 }
 
 impl XorStencil {
-    pub fn new(params: &Params) -> Result<XorStencil, Error> {
-        Ok(XorStencil::with_settings(Settings::from_params(params)?))
+    pub fn new(params: &Params) -> XorStencil {
+        XorStencil::with_settings(Settings::from_params(params))
     }
 
     pub fn with_settings(settings: Settings) -> XorStencil {
@@ -178,13 +174,7 @@ impl Method for XorStencil {
             if prepared.visible > 0 {
                 record_passes(&mut pass, pipelines, prepared, self.settings.passes);
                 if let Some(lines) = &pipelines.wireframe {
-                    overlay::record_wireframe(
-                        &mut pass,
-                        lines,
-                        pipelines,
-                        prepared,
-                        self.settings.passes,
-                    );
+                    record_wireframe(&mut pass, lines, pipelines, prepared, self.settings.passes);
                 }
             }
         }

@@ -1,8 +1,10 @@
-//! `--param` values of `xor-stencil`, checked: fill rule, MSAA samples, jittered passes
-//! and overlay.
+//! The parameters of `xor-stencil` — fill rule, MSAA samples, jittered passes and
+//! overlay — and the settings they choose.
 
-use crate::Error;
-use crate::methods::{Overlay, ParamSpec, Params, param, parse_overlay, reject_unknown_params};
+use crate::methods::Overlay;
+use crate::methods::params::{Numbers, ParamSpec, Params};
+
+pub const NAME: &str = "xor-stencil";
 
 /// Which samples an outline fills.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -42,73 +44,51 @@ pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "fill",
         choices: &["nonzero", "evenodd"],
-        range: None,
+        numbers: None,
         help: "nonzero counts front faces up and back faces down (overlapping contours \
                unite); evenodd flips one stencil bit per triangle (overlaps cancel).",
     },
     ParamSpec {
         key: "msaa",
         choices: &["4", "1"],
-        range: None,
+        numbers: None,
         help: "Hardware samples per pixel. Nearly free on real GPUs; on lavapipe the 4x \
                buffer costs ~75 MB and a large resolve.",
     },
     ParamSpec {
         key: "passes",
         choices: &["4", "1", "8", "16"],
-        range: Some((1, MAX_PASSES)),
+        numbers: Some(Numbers::Whole {
+            min: 1,
+            max: MAX_PASSES,
+        }),
         help: "Jittered passes accumulated (N-rooks pattern). Each pass redraws every \
                triangle: cost grows linearly, error falls about as 1/√N.",
     },
     ParamSpec {
         key: "overlay",
         choices: &["none", "wireframe"],
-        range: None,
+        numbers: None,
         help: "wireframe: fan triangles blue, Loop–Blinn curve triangles orange.",
     },
 ];
 pub(super) const OVERLAYS: &[Overlay] = &[Overlay::TriangleWireframe];
 
 impl Settings {
-    pub fn from_params(params: &Params) -> Result<Settings, Error> {
-        let keys: Vec<&str> = PARAMS.iter().map(|p| p.key).collect();
-        reject_unknown_params(super::NAME, params, &keys)?;
-        let mut settings = Settings::default();
-        if let Some(fill) = param(params, "fill") {
-            settings.fill = match fill {
-                "nonzero" => FillRule::NonZero,
-                "evenodd" => FillRule::EvenOdd,
-                _ => {
-                    return Err(Error::Input(format!(
-                        "xor-stencil: fill must be nonzero or evenodd, got '{fill}'"
-                    )));
-                }
-            };
+    pub fn from_params(params: &Params) -> Settings {
+        let defaults = Settings::default();
+        Settings {
+            fill: match params.word("fill") {
+                Some("evenodd") => FillRule::EvenOdd,
+                _ => FillRule::NonZero,
+            },
+            samples: if params.word("msaa") == Some("1") {
+                1
+            } else {
+                4
+            },
+            passes: params.whole("passes").unwrap_or(defaults.passes),
+            overlay: params.word("overlay").and_then(Overlay::named),
         }
-        if let Some(msaa) = param(params, "msaa") {
-            settings.samples = match msaa {
-                "1" => 1,
-                "4" => 4,
-                _ => {
-                    return Err(Error::Input(format!(
-                        "xor-stencil: msaa must be 1 or 4, got '{msaa}'"
-                    )));
-                }
-            };
-        }
-        if let Some(passes) = param(params, "passes") {
-            settings.passes = passes
-                .parse()
-                .ok()
-                .filter(|p| (1..=MAX_PASSES).contains(p))
-                .ok_or_else(|| {
-                    Error::Input(format!(
-                        "xor-stencil: passes must be a whole number from 1 to {MAX_PASSES}, \
-                         got '{passes}'"
-                    ))
-                })?;
-        }
-        settings.overlay = parse_overlay(super::NAME, param(params, "overlay"), OVERLAYS)?;
-        Ok(settings)
     }
 }

@@ -1,13 +1,18 @@
-//! The render pipelines and their stencil states: the fan and curve triangles counted
-//! into the stencil, even-odd's layer fold, and the cover that turns the stencil into
-//! coverage.
+//! The render pipelines and their stencil states — the fan and curve triangles counted
+//! into the stencil, even-odd's layer fold, the cover that turns the stencil into
+//! coverage, the wireframe overlay's lines — and the uniform buffer that hands each
+//! jittered pass its offset and weight.
 
-use super::jitter::{jitter_buffer, jitter_stride};
-use super::overlay::wireframe_pipelines;
-use super::{FillRule, NAME, SHADER, Settings};
+use glam::DVec2;
+
+use super::jitter::jitter_offsets;
+use super::params::{FillRule, NAME, Settings};
 use crate::gpu::GpuContext;
 use crate::gpu::kit::{self, ColorOut, PipelineBuilder, Slot};
+use crate::gpu::shaders::Shader;
 use crate::methods::Overlay;
+
+pub(super) const SHADER: Shader = crate::method_shader!("xor_stencil.wgsl");
 
 /// Stencil bit that marks, under even-odd, samples some earlier layer covered.
 pub(super) const COVERED_BIT: u32 = 0x80;
@@ -57,9 +62,22 @@ fn face(
 }
 
 /// Colour output of the passes that only count into the stencil.
-pub(super) const STENCIL_ONLY: ColorOut = ColorOut::Replace(wgpu::ColorWrites::empty());
+const STENCIL_ONLY: ColorOut = ColorOut::Replace(wgpu::ColorWrites::empty());
 /// Colour output of the overlay's lines: rgb replaced, alpha (coverage) kept.
-pub(super) const REPLACE_RGB: ColorOut = ColorOut::Replace(wgpu::ColorWrites::COLOR);
+const REPLACE_RGB: ColorOut = ColorOut::Replace(wgpu::ColorWrites::COLOR);
+
+/// The line pipelines of the fan triangles and of the curve triangles.
+fn wireframe_pipelines(builder: &Builder) -> [wgpu::RenderPipeline; 2] {
+    ["vs_wire_fan", "vs_wire_curve"].map(|vertex| {
+        builder.build(
+            "xor-stencil lines",
+            (vertex, "fs_wire"),
+            wgpu::PrimitiveTopology::LineList,
+            Some(wgpu::StencilState::default()),
+            REPLACE_RGB,
+        )
+    })
+}
 
 /// Compiles one pipeline of the method: its shader, layout and sample count.
 pub(super) struct Builder<'a> {
@@ -184,4 +202,55 @@ impl Pipelines {
             count: None,
         }
     }
+
+    /// Dynamic offset of pass `k`'s `Jitter` (pass `passes`: the unshifted one).
+    pub(super) fn jitter_offset(&self, k: u32) -> u32 {
+        (u64::from(k) * self.jitter_stride) as u32
+    }
+}
+
+/// Grey level of coverage under the wireframe, so that the lines stand out.
+const OVERLAY_TINT: f32 = 0.45;
+
+/// The `Jitter` uniform of `xor_stencil.wgsl`, one per pass at the device's uniform
+/// offset alignment.
+#[repr(C)]
+#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+pub(super) struct Jitter {
+    offset: [f32; 2],
+    weight: f32,
+    tint: f32,
+}
+
+/// Bytes between two passes' `Jitter`s: the device's uniform offset alignment.
+fn jitter_stride(device: &wgpu::Device) -> u64 {
+    u64::from(device.limits().min_uniform_buffer_offset_alignment).max(size_of::<Jitter>() as u64)
+}
+
+/// The `Jitter` entries of every pass of `settings`, and an unshifted one last.
+fn jitter_buffer(gpu: &GpuContext, settings: &Settings, stride: usize) -> wgpu::Buffer {
+    let offsets = jitter_offsets(settings.passes, settings.samples);
+    let tint = if settings.overlay.is_some() {
+        OVERLAY_TINT
+    } else {
+        1.0
+    };
+    let weight = 1.0 / settings.passes as f32;
+    let mut bytes = vec![0u8; stride * (offsets.len() + 1)];
+    for (k, offset) in offsets.iter().chain([&DVec2::ZERO]).enumerate() {
+        let entry = Jitter {
+            offset: offset.as_vec2().to_array(),
+            weight,
+            tint,
+        };
+        bytes[k * stride..][..size_of::<Jitter>()].copy_from_slice(bytemuck::bytes_of(&entry));
+    }
+    let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("xor-stencil jitter"),
+        size: bytes.len() as u64,
+        usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    gpu.queue.write_buffer(&buffer, 0, &bytes);
+    buffer
 }
