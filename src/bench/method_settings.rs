@@ -45,9 +45,9 @@ pub fn settings(method: &MethodInfo, quick: bool) -> Vec<Vec<(String, String)>> 
         .collect()
 }
 
-/// Parameters as `k=v, k=v`, or `default` (the baseline's cache size, the same for
+/// A setting as the report names it: `k=v, k=v`, or `default` (the baseline's cache size, the same for
 /// every case of a scene, left out).
-pub fn settings_text(params: &[(String, String)]) -> String {
+pub fn setting_name(params: &[(String, String)]) -> String {
     params::settings_text(params, &[BASELINE_CACHE_KEY])
 }
 

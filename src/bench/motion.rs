@@ -118,7 +118,7 @@ pub fn markdown(result: &BenchResult, md: &mut String) {
                 md,
                 "| {} | {} | {still} | {} |",
                 case.method.name,
-                method_settings::settings_text(&case.method.params),
+                method_settings::setting_name(&case.method.params),
                 columns.join(" | ")
             );
         }

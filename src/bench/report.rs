@@ -3,7 +3,7 @@
 
 use std::fmt::Write;
 
-use super::method_settings::{CONTRAST, settings_text};
+use super::method_settings::{CONTRAST, setting_name};
 use super::numbers::{kb_or_mb, sig};
 use super::result::{BenchResult, Measurement, Refusal, SceneCamera, SceneInfo};
 use super::{motion, scaling, scenes, winding_cost};
@@ -168,7 +168,7 @@ fn scene_sections(result: &BenchResult, clock: &str, md: &mut String) {
                 md,
                 "| {} | {} | n/a — {} | | | | | | | | | | | |",
                 refusal.method,
-                settings_text(&refusal.params),
+                setting_name(&refusal.params),
                 refusal.reason
             );
         }
@@ -312,9 +312,10 @@ fn peers_summary(result: &BenchResult, md: &mut String) {
                     c.error.max,
                     c.error.pixels_over_05
                 )
-            } else if let Some(r) = refusals.iter().find(|r| {
-                r.method == method && settings_text(&r.params) == "default"
-            }) {
+            } else if let Some(r) = refusals
+                .iter()
+                .find(|r| r.method == method && setting_name(&r.params) == "default")
+            {
                 format!("n/a — {}", r.reason)
             } else {
                 "not run".into()
@@ -394,7 +395,7 @@ pub fn csv(result: &BenchResult) -> String {
                 .as_str()
                 .unwrap_or(""),
             r.method,
-            settings_text(&r.params),
+            setting_name(&r.params),
             ",".repeat(26),
             r.reason.replace('"', "'")
         );

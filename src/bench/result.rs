@@ -100,7 +100,7 @@ pub struct Measurement {
 impl Measurement {
     /// `k=v, k=v`, or `default`.
     pub fn settings(&self) -> String {
-        method_settings::settings_text(&self.params)
+        method_settings::setting_name(&self.params)
     }
 
     /// Whether this is the baseline every time is divided by.
