@@ -814,7 +814,7 @@ fn overlapping_contours_crack_only_along_the_curves_inside_the_fill() {
 
 /// The estimate through the stability sweep's CI cameras on `case`: the outcome of its
 /// worst frame, artifact pixels (off by more than 0.5) summed over the frames.
-fn estimate_on_case(case: &str) -> glyphscope::stability::sweep::Outcome {
+fn estimate_on_case(case: &str) -> glyphscope::stability::outcome::Outcome {
     use glyphscope::stability::{self, sweep};
     let cases = stability::select_cases(Some(&[case.into()])).unwrap();
     let variants: Vec<_> = stability::select_variants(Some(&["sdf-cells".into()]))
@@ -846,7 +846,7 @@ fn estimate_on_case(case: &str) -> glyphscope::stability::sweep::Outcome {
 }
 
 /// The outcome in one line: MAE, max, pixels over 0.5, where it was worst.
-fn summary(case: &str, o: &glyphscope::stability::sweep::Outcome) -> String {
+fn summary(case: &str, o: &glyphscope::stability::outcome::Outcome) -> String {
     format!(
         "{case}, estimate: MAE {:.2}/255, max {:.3}, {} pixels over 0.5, worst at {:?}",
         o.mae_255, o.max, o.artifact_pixels, o.worst

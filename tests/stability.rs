@@ -10,7 +10,7 @@ use glyphscope::coverage::CoverageImage;
 use glyphscope::methods::registry;
 use glyphscope::metrics;
 use glyphscope::reference;
-use glyphscope::stability::{self, claims, hard_cases, sweep, worst_cameras};
+use glyphscope::stability::{self, claims, hard_cases, outcome, sweep, worst_cameras};
 
 #[test]
 fn every_method_keeps_its_claims_on_every_hard_case() {
@@ -222,9 +222,9 @@ fn every_claim_rejects_coverage_rounded_to_0_or_1_and_nan() {
     let variants = claims::variants();
     let mut broken_by_rounding = vec![0; variants.len()];
     for case in hard_cases::all() {
-        let mut rounded: Vec<sweep::Outcome> = variants
+        let mut rounded: Vec<outcome::Outcome> = variants
             .iter()
-            .map(|v| sweep::Outcome::new(&case, v))
+            .map(|v| outcome::Outcome::new(&case, v))
             .collect();
         let mut with_nan = rounded.clone();
         // Four cameras a case (one per offset at the first rotation) are enough here.
