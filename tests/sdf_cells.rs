@@ -823,7 +823,13 @@ fn estimate_on_case(case: &str) -> glyphscope::stability::outcome::Outcome {
         .filter(|v| v.params.is_empty())
         .collect();
     assert_eq!(variants.len(), 1, "the estimate is sdf-cells' default");
-    let outcomes = sweep::run(gpu(), &cases, &variants, &sweep::SweepSize::quick(), |_| {});
+    let outcomes = sweep::run(
+        gpu(),
+        &cases,
+        &variants,
+        &sweep::SweepSize::of(&glyphscope::effort::Effort::QUICK),
+        |_| {},
+    );
     let outcome = outcomes.unwrap().remove(0);
     assert!(outcome.failure.is_none(), "{:?}", outcome.failure);
     // One frame in full, whole frame and edge pixels (> 0.25 and > 0.5 counted), for

@@ -10,7 +10,6 @@ mod common;
 use common::*;
 use glam::DVec2;
 use glyphscope::camera::Camera;
-use glyphscope::cli::{RenderArgs, render};
 use glyphscope::coverage::CoverageImage;
 use glyphscope::font::{Font, SHIPPED_FONTS};
 use glyphscope::geometry::{Contour, Outline, Segment, project};
@@ -22,6 +21,7 @@ use glyphscope::methods::tessellation::subdivision::{
 };
 use glyphscope::methods::{self, MeshStats, Method};
 use glyphscope::metrics::{ErrorStats, compare};
+use glyphscope::render::{RenderOptions, render};
 use glyphscope::scene::Scene;
 use glyphscope::view_args::ViewArgs;
 use glyphscope::{Error, reference};
@@ -548,13 +548,13 @@ fn overlays_draw_over_unchanged_coverage() {
 
 #[test]
 fn the_command_line_reports_points_triangles_and_area_error() {
-    let args = |pairs: &[&str]| RenderArgs {
+    let args = |pairs: &[&str]| RenderOptions {
         method: "tessellation".into(),
         params: pairs
             .chunks(2)
             .map(|kv| (kv[0].to_string(), kv[1].to_string()))
             .collect(),
-        ..RenderArgs::of(ViewArgs::text("gg", 24.0))
+        ..RenderOptions::of(ViewArgs::text("gg", 24.0))
     };
     // A mode's own parameter picks the mode.
     let asa = render(&args(&["threshold", "13"])).unwrap();

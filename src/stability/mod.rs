@@ -4,6 +4,7 @@
 //! and writes.
 
 pub mod claims;
+pub mod command;
 pub mod hard_cases;
 pub mod outcome;
 pub mod sweep;

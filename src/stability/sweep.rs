@@ -9,6 +9,7 @@ use super::hard_cases::HardCase;
 use super::outcome::Outcome;
 use super::worst_cameras;
 use crate::Error;
+use crate::effort::Effort;
 use crate::gpu::GpuContext;
 use crate::methods::{self, Method, frame};
 use crate::metrics;
@@ -27,34 +28,28 @@ pub struct SweepSize {
 }
 
 impl SweepSize {
-    /// 16 sub-pixel offsets (a 4×4 grid of 1/4 px) × rotations of 0°, 1°, 45°, 89.9°;
-    /// for a full turn, every 30° besides.
-    pub fn full() -> SweepSize {
-        SweepSize {
-            offsets: (0..16)
-                .map(|k| DVec2::new(f64::from(k % 4), f64::from(k / 4)) / 4.0)
-                .collect(),
-            rotations_deg: vec![0.0, 1.0, 45.0, 89.9],
-            full_turn_deg: every(30.0),
-            // Its grid is where every worst camera was found.
-            also: Vec::new(),
-        }
-    }
-
-    /// The CI size: 4 offsets (one per row and column of the grid) × 0° and 45°; for a
-    /// full turn, every 90° besides; and the camera where the full sweep found each
-    /// method worst on each case ([`worst_cameras`]).
-    pub fn quick() -> SweepSize {
-        SweepSize {
-            offsets: [(0.0, 0.0), (0.25, 0.5), (0.5, 0.75), (0.75, 0.25)]
-                .map(DVec2::from)
-                .to_vec(),
-            rotations_deg: vec![0.0, 45.0],
-            full_turn_deg: every(90.0),
-            also: worst_cameras::all()
+    /// The cameras `effort` sweeps: its offsets at each of its rotations, its full
+    /// turn's rotations for the cases seen through one, and, where it reruns them, the
+    /// camera where the full sweep found each method worst on each case
+    /// ([`worst_cameras`]).
+    pub fn of(effort: &Effort) -> SweepSize {
+        let also = if effort.sweep_reruns_worst_cameras {
+            worst_cameras::all()
                 .iter()
                 .map(|w| (w.case, w.rotation_deg, DVec2::from(w.subpixel)))
+                .collect()
+        } else {
+            Vec::new()
+        };
+        SweepSize {
+            offsets: effort
+                .sweep_offsets
+                .iter()
+                .map(|&o| DVec2::from(o))
                 .collect(),
+            rotations_deg: effort.sweep_rotations_deg.to_vec(),
+            full_turn_deg: every(effort.sweep_full_turn_step_deg),
+            also,
         }
     }
 

@@ -1,0 +1,97 @@
+//! What `--quick` means, in one place: the plain numbers a full run and a quick one
+//! measure with, side by side. The command line picks [`Effort::FULL`] or
+//! [`Effort::QUICK`] once per command; the modules read the numbers from the one picked
+//! and never choose with an `if quick` of their own.
+
+/// How much a run measures.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Effort {
+    /// The stability sweep's sub-pixel offsets (x, y), in pixels, each seen at every
+    /// rotation of [`Effort::sweep_rotations_deg`].
+    pub sweep_offsets: &'static [(f64, f64)],
+    /// The stability sweep's rotations, degrees.
+    pub sweep_rotations_deg: &'static [f64],
+    /// A hard case seen through a full turn is seen every this many degrees besides.
+    pub sweep_full_turn_step_deg: f64,
+    /// Whether the sweep also runs the cameras where the full sweep found each method
+    /// worst (`data/worst-cameras.csv`): a grid too coarse to contain them.
+    pub sweep_reruns_worst_cameras: bool,
+    /// Frames each hard case drifts through in the stability run's motion stage.
+    pub stability_motion_frames: usize,
+    /// The bench's rounds per case (interleaved across the methods).
+    pub bench_rounds: usize,
+    /// Frames the bench times per case and round.
+    pub bench_frames_per_round: usize,
+    /// Frames the bench draws per path in motion.
+    pub bench_motion_frames: usize,
+    /// Points per scaling series.
+    pub scaling_points: usize,
+    /// Frames timed per point and method of a scaling series.
+    pub scaling_frames: usize,
+    /// The glyph-count series' last point, glyphs.
+    pub scaling_last_glyphs: f64,
+    /// The px-per-em series' last point, px/em.
+    pub scaling_last_px_per_em: f64,
+}
+
+impl Effort {
+    /// A full run: the sweep at 16 sub-pixel offsets (a 4×4 grid of 1/4 px) × 0°, 1°,
+    /// 45° and 89.9° (and every 30° for a full turn), whose grid is where every listed
+    /// worst camera was found.
+    pub const FULL: Effort = Effort {
+        sweep_offsets: &[
+            (0.0, 0.0),
+            (0.25, 0.0),
+            (0.5, 0.0),
+            (0.75, 0.0),
+            (0.0, 0.25),
+            (0.25, 0.25),
+            (0.5, 0.25),
+            (0.75, 0.25),
+            (0.0, 0.5),
+            (0.25, 0.5),
+            (0.5, 0.5),
+            (0.75, 0.5),
+            (0.0, 0.75),
+            (0.25, 0.75),
+            (0.5, 0.75),
+            (0.75, 0.75),
+        ],
+        sweep_rotations_deg: &[0.0, 1.0, 45.0, 89.9],
+        sweep_full_turn_step_deg: 30.0,
+        sweep_reruns_worst_cameras: false,
+        stability_motion_frames: 16,
+        bench_rounds: 3,
+        bench_frames_per_round: 7,
+        bench_motion_frames: 16,
+        scaling_points: 11,
+        scaling_frames: 5,
+        scaling_last_glyphs: 30_000.0,
+        scaling_last_px_per_em: 4096.0,
+    };
+
+    /// `--quick`, the CI size: the sweep at 4 offsets (one per row and column of the
+    /// full grid) × 0° and 45° (every 90° for a full turn) plus the listed worst
+    /// cameras; the bench at a few frames, its scaling series stopping at about a tenth
+    /// of the pixels, so a run takes minutes.
+    pub const QUICK: Effort = Effort {
+        sweep_offsets: &[(0.0, 0.0), (0.25, 0.5), (0.5, 0.75), (0.75, 0.25)],
+        sweep_rotations_deg: &[0.0, 45.0],
+        sweep_full_turn_step_deg: 90.0,
+        sweep_reruns_worst_cameras: true,
+        stability_motion_frames: 8,
+        bench_rounds: 3,
+        bench_frames_per_round: 3,
+        bench_motion_frames: 8,
+        scaling_points: 3,
+        scaling_frames: 2,
+        scaling_last_glyphs: 3_000.0,
+        scaling_last_px_per_em: 256.0,
+    };
+
+    /// [`Effort::QUICK`] when `quick`, else [`Effort::FULL`]: what a `--quick` flag
+    /// picks.
+    pub fn picked(quick: bool) -> Effort {
+        if quick { Effort::QUICK } else { Effort::FULL }
+    }
+}
