@@ -4,11 +4,11 @@
 use eframe::egui;
 
 use super::Explorer;
-use super::camera_control::{MAX_SIZE_PX_PER_EM, MAX_TILT_DEG, MIN_SIZE_PX_PER_EM};
 use super::display::{Darkening, DisplayMode};
 use super::panes::{REFERENCE, pane_controls, pane_letter};
-use super::settings::{FontChoice, Layout, PaneSource};
+use super::settings::{FontChoice, Layout, MAX_TILT_DEG, MIN_SIZE_PX_PER_EM, PaneSource};
 use super::shortcuts::{Action, SHORTCUTS, key_name};
+use crate::camera::MAX_SIZE_PX_PER_EM;
 use crate::font::SHIPPED_FONTS;
 use crate::magnify::MAX_FACTOR;
 
