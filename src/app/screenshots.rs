@@ -9,7 +9,7 @@ use web_time::Instant;
 
 use eframe::egui;
 
-use super::Explorer;
+use super::explorer::Explorer;
 use super::headless::Headless;
 use super::panes::{Catalog, REFERENCE};
 use super::settings::{Layout, PaneOverlay, PaneSettings, PaneSource, Settings};
