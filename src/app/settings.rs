@@ -64,7 +64,9 @@ impl Default for Settings {
             layout: Layout::SideBySide,
             // Pane A is a method with visible artifacts at small sizes (the first start
             // opens on one), beside the reference; then the near-exact winding, and A's
-            // signed difference from the reference.
+            // signed difference from the reference. No row says "shows artifacts" or
+            // "near-exact", so the two are picked by their rows (`INFO.name`, never a
+            // string): removing either method stops the build here.
             panes: [
                 PaneSettings::method(sdf_cells::INFO.name),
                 PaneSettings::method(registry::REFERENCE.name),
