@@ -13,8 +13,6 @@ use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
 use glyphscope::font::{Font, GlyphId, SHIPPED_FONTS};
 use glyphscope::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Segment, project};
-use glyphscope::gpu::CoverageTarget;
-use glyphscope::methods::frame::render_frame;
 use glyphscope::methods::sdf_cells::cells::Mode;
 use glyphscope::methods::sdf_cells::curves::{CurveLayout, overlapping_contours};
 use glyphscope::methods::sdf_cells::glyph::PreparedGlyph;
@@ -37,13 +35,8 @@ fn render(
     camera: &Camera,
     pairs: &[(&str, &str)],
 ) -> (CoverageImage, image::RgbImage, SdfCells) {
-    let gpu = gpu();
     let mut method = SdfCells::new(&params(pairs)).unwrap();
-    method.prepare(gpu, scene).unwrap();
-    let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
-    render_frame(gpu, &mut method, &target, camera).unwrap();
-    let coverage = target.readback(gpu).unwrap();
-    let picture = target.readback_color(gpu).unwrap();
+    let (coverage, picture) = render_with_picture(&mut method, scene, camera);
     (coverage, picture, method)
 }
 
@@ -138,11 +131,7 @@ impl Renderer {
     }
 
     fn coverage(&mut self, scene: &Scene, camera: &Camera) -> CoverageImage {
-        let gpu = gpu();
-        self.method.prepare(gpu, scene).unwrap();
-        let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
-        render_frame(gpu, &mut self.method, &target, camera).unwrap();
-        target.readback(gpu).unwrap()
+        common::render(&mut self.method, scene, camera)
     }
 
     fn error(&mut self, scene: &Scene, camera: &Camera) -> ErrorStats {

@@ -37,19 +37,8 @@ fn tessellation(pairs: &[(&str, &str)]) -> Box<dyn Method> {
     methods::create("tessellation", &params(pairs)).unwrap()
 }
 
-/// Prepares `method` for `scene` and renders one frame.
-fn draw(method: &mut dyn Method, scene: &Scene, camera: &Camera) -> CoverageTarget {
-    let gpu = gpu();
-    method.prepare(gpu, scene).unwrap();
-    let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
-    render_frame(gpu, method, &target, camera).unwrap();
-    target
-}
-
 fn coverage(pairs: &[(&str, &str)], scene: &Scene, camera: &Camera) -> CoverageImage {
-    draw(tessellation(pairs).as_mut(), scene, camera)
-        .readback(gpu())
-        .unwrap()
+    common::render(tessellation(pairs).as_mut(), scene, camera)
 }
 
 /// Glyph's table (resource/adaptive-subdivision.dat): points and summed area error
@@ -408,9 +397,7 @@ fn a_page_of_repeated_glyphs_matches_the_reference() {
     camera.tilt_deg = 35.0;
     let expected = reference::rasterize(&scene, &camera).unwrap();
     let mut method = tessellation(&[]);
-    let actual = draw(method.as_mut(), &scene, &camera)
-        .readback(gpu())
-        .unwrap();
+    let actual = common::render(method.as_mut(), &scene, &camera);
     let e = compare(&actual, &expected).unwrap();
     eprintln!("page, tilted 35°: {e:?}");
     assert!(e.max <= 0.5 && e.mae_255 < 8.0, "{e:?}");
@@ -520,7 +507,6 @@ fn overlays_draw_over_unchanged_coverage() {
     let scene = Scene::from_text(&Font::default_font(), "g").unwrap();
     let camera = Camera::new(90, 110, 100.0, DVec2::new(8.0, 78.0));
     let plain = coverage(&[("subdivision", "asa")], &scene, &camera);
-    let gpu = gpu();
     type Colour = fn(&[u8; 3]) -> bool;
     let orange: Colour = |&[r, g, b]| r > 200 && (100..180).contains(&g) && b < 60;
     let yellow: Colour = |&[r, g, b]| r > 200 && g > 180 && b < 100;
@@ -532,13 +518,8 @@ fn overlays_draw_over_unchanged_coverage() {
         ("points", vec![yellow, magenta, blue]),
     ] {
         let mut method = tessellation(&[("subdivision", "asa"), ("overlay", overlay)]);
-        let target = draw(method.as_mut(), &scene, &camera);
-        assert_eq!(
-            target.readback(gpu).unwrap().data,
-            plain.data,
-            "{overlay} changed coverage"
-        );
-        let picture = target.readback_color(gpu).unwrap();
+        let (coverage, picture) = render_with_picture(method.as_mut(), &scene, &camera);
+        assert_eq!(coverage.data, plain.data, "{overlay} changed coverage");
         for (k, colour) in colours.into_iter().enumerate() {
             let count = picture.pixels().filter(|p| colour(&p.0)).count();
             assert!(count > 10, "{overlay}: {count} pixels of colour {k}");
