@@ -1,24 +1,23 @@
-//! The command line. `glyphscope render` is the command every figure of the docs and
-//! every outside check drives; it lives in the library so tests call exactly what users
-//! run.
+//! The command line: each subcommand's arguments and their help, mapped to the plain
+//! options of the module that does its work (`render`, `stability::command`,
+//! `bench::run_to`, `motion::command`, `info`), which runs it and returns what is
+//! printed here or turned into the exit code; `--quick` picks an [`Effort`] here,
+//! once. The binary dispatches to the `run_*` functions.
 
 use std::path::PathBuf;
-use web_time::Instant;
 
 use clap::{Args, Parser, Subcommand};
 
 use crate::Error;
-use crate::coverage::CoverageImage;
-use crate::gpu::GpuContext;
-use crate::magnify::{self, Focus, Window};
-use crate::measure::{self, Measured, RENDER_TIMING, RenderStats};
-use crate::methods::frame::ms_since;
+use crate::effort::Effort;
+use crate::info::InfoOptions;
+use crate::magnify::{self, Focus};
 use crate::methods::registry;
-use crate::metrics;
-use crate::outline_overlay;
-use crate::reference;
-use crate::stability::{self, sweep::SweepSize};
-use crate::view_args::{ViewArgs, parse_key_value};
+use crate::motion::command::{MotionOptions, animated_methods};
+use crate::motion::{MotionPath, run::MethodSpec};
+use crate::render::{PictureOverlay, RenderOptions};
+use crate::stability::command::StabilityOptions;
+use crate::view_args::{ViewArgs, parse_key_value, parse_variation};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -55,7 +54,7 @@ pub enum Command {
     Motion(Box<MotionArgs>),
     /// Print which outline table a font uses (and why), its units per em and axes, and
     /// for the glyphs asked for their advance, lsb, xMin and the shift applied to them.
-    Info(crate::info::InfoArgs),
+    Info(InfoArgs),
 }
 
 #[derive(Args, Clone, Debug)]
@@ -63,6 +62,22 @@ pub struct ScreenshotsArgs {
     /// Folder to write the PNGs into.
     #[arg(long, default_value = "screenshots")]
     pub out: PathBuf,
+}
+
+#[derive(Args, Clone, Debug)]
+pub struct InfoArgs {
+    /// Font file (.ttf/.otf); the embedded DejaVu Sans when absent.
+    #[arg(long)]
+    pub font: Option<PathBuf>,
+    /// Also report the glyphs this text shapes to, in order of first use.
+    #[arg(long, conflicts_with = "glyph_id")]
+    pub text: Option<String>,
+    /// Also report this glyph, by its id in the font.
+    #[arg(long)]
+    pub glyph_id: Option<u32>,
+    /// Variable-font axis values, TAG=VALUE[,TAG=VALUE...]; a short tag is space-padded.
+    #[arg(long, value_delimiter = ',', value_parser = parse_variation)]
+    pub variation: Vec<(String, f32)>,
 }
 
 #[derive(Args, Clone, Debug)]
@@ -226,366 +241,85 @@ pub struct RenderArgs {
     pub overlays: Vec<PictureOverlay>,
 }
 
-/// A layer of `render`'s magnified picture.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum PictureOverlay {
-    Error,
-    Outline,
-}
-
-impl RenderArgs {
-    /// `view` drawn by the reference, with no output: the start of a render built in
-    /// code.
-    pub fn of(view: ViewArgs) -> RenderArgs {
-        RenderArgs {
-            view,
-            case: None,
-            method: registry::REFERENCE.name.into(),
-            params: Vec::new(),
-            out: PathBuf::new(),
-            stats: None,
-            error_image: None,
-            magnify: 1,
-            focus: None,
-            overlays: Vec::new(),
-        }
-    }
-
-    /// Whether the PNG is the magnifier's picture rather than the frame's coverage.
-    pub fn wants_picture(&self) -> bool {
-        self.magnify > 1 || self.focus.is_some() || !self.overlays.is_empty()
-    }
-
-    fn wants_reference(&self) -> bool {
-        self.error_image.is_some()
-            || (self.wants_picture()
-                && (self.focus.is_none_or(|f| f == Focus::Worst)
-                    || self.overlays.contains(&PictureOverlay::Error)))
-    }
-}
-
 /// `--method`'s help: the registry's names and summaries.
 fn method_help() -> String {
     format!("The method that draws it: {}", registry::help())
 }
 
-/// A rendered image, its statistics, and the reference it was compared with (if any).
-pub struct Rendered {
-    pub image: CoverageImage,
-    /// The overlay picture, when the `overlay` parameter asked for one.
-    pub overlay: Option<image::RgbImage>,
-    pub reference: Option<CoverageImage>,
-    pub stats: RenderStats,
-    /// The magnifier's picture and the pixels it shows, when one was asked for.
-    pub picture: Option<(image::RgbImage, Window)>,
-}
-
-/// Renders what `args` describe (nothing is written).
-pub fn render(args: &RenderArgs) -> Result<Rendered, Error> {
-    let method = registry::find(&args.method)?;
-    let start = Instant::now();
-    let (scene, camera) = match &args.case {
-        Some(name) => crate::named_views::build(name)?,
-        None => args.view.build()?,
-    };
-    let scene_ms = ms_since(start);
-    let gpu = if method.is_reference() {
-        None
-    } else {
-        Some(GpuContext::new()?)
-    };
-    let Measured {
-        image,
-        overlay,
-        mut stats,
-    } = measure::measure(
-        gpu.as_ref(),
-        &scene,
-        &camera,
-        method,
-        &args.params,
-        RENDER_TIMING,
-    )?;
-    stats.cpu_prepare_ms += scene_ms;
-    let reference = match args.wants_reference() {
-        true if method.is_reference() => Some(image.clone()),
-        true => Some(reference::rasterize(&scene, &camera)?),
-        false => None,
-    };
-    if let Some(reference) = &reference {
-        stats.error = Some(metrics::compare(&image, reference)?);
-    }
-    let picture = if args.wants_picture() {
-        let focus = args.focus.unwrap_or(Focus::Worst);
-        let pixel = focus.pixel(image.width, image.height, stats.error.as_ref())?;
-        let window = Window::around(image.width, image.height, args.magnify, pixel);
-        let outline = if args.overlays.contains(&PictureOverlay::Outline) {
-            let tolerance_px = 0.2 / f64::from(window.factor);
-            Some(
-                outline_overlay::trace(
-                    &scene,
-                    &camera,
-                    &window.rect(),
-                    tolerance_px,
-                    f64::from(window.factor),
-                )
-                .map_err(Error::Input)?,
-            )
-        } else {
-            None
-        };
-        let layers = magnify::Layers {
-            overlay: overlay.as_ref(),
-            error_against: reference
-                .as_ref()
-                .filter(|_| args.overlays.contains(&PictureOverlay::Error)),
-            outline: outline.as_ref(),
-        };
-        let picture = magnify::picture(&image, &window, &layers, image.width, image.height);
-        Some((picture, window))
-    } else {
-        None
-    };
-    Ok(Rendered {
-        image,
-        overlay,
-        reference,
-        stats,
-        picture,
+/// `glyphscope render`: renders the view and writes the PNG and what else is asked for.
+pub fn run_render(args: &RenderArgs) -> Result<(), Error> {
+    crate::render::run(&RenderOptions {
+        view: args.view.clone(),
+        case: args.case.clone(),
+        method: args.method.clone(),
+        params: args.params.clone(),
+        out: args.out.clone(),
+        stats: args.stats.clone(),
+        error_image: args.error_image.clone(),
+        magnify: args.magnify,
+        focus: args.focus,
+        overlays: args.overlays.clone(),
     })
 }
 
-/// `glyphscope render`: renders, then writes the PNG and, if asked, the statistics.
-pub fn run_render(args: &RenderArgs) -> Result<(), Error> {
-    let rendered = render(args)?;
-    let colour = rendered
-        .picture
-        .as_ref()
-        .map(|(picture, _)| picture)
-        .or(rendered.overlay.as_ref());
-    match colour {
-        // A picture is not coverage: it is written in colour.
-        Some(picture) => picture
-            .save(&args.out)
-            .map_err(|e| Error::Output(format!("cannot write '{}': {e}", args.out.display())))?,
-        None => rendered.image.save_png(&args.out)?,
-    }
-    if let (Some(path), Some(reference)) = (&args.error_image, &rendered.reference) {
-        metrics::error_image(&rendered.image, reference, 0.5)
-            .save(path)
-            .map_err(|e| Error::Output(format!("cannot write '{}': {e}", path.display())))?;
-    }
-    if let Some(path) = &args.stats {
-        /// The statistics, and the magnified window where there is one.
-        #[derive(serde::Serialize)]
-        struct Written<'a> {
-            #[serde(flatten)]
-            stats: &'a RenderStats,
-            #[serde(skip_serializing_if = "Option::is_none")]
-            magnified: Option<Window>,
-        }
-        let written = Written {
-            stats: &rendered.stats,
-            magnified: rendered.picture.as_ref().map(|(_, window)| *window),
-        };
-        let json = serde_json::to_string_pretty(&written).expect("stats serialize");
-        std::fs::write(path, json + "\n")
-            .map_err(|e| Error::Output(format!("cannot write '{}': {e}", path.display())))?;
-    }
-    Ok(())
+/// `glyphscope stability`: runs the sweep and the motion stage, printing their tables.
+/// Returns whether every claim held (broken claims are printed to stderr).
+pub fn run_stability(args: &StabilityArgs) -> Result<bool, Error> {
+    crate::stability::command::run(&StabilityOptions {
+        effort: Effort::of(args.quick),
+        cases: args.cases.clone(),
+        methods: args.methods.clone(),
+        out: args.out.clone(),
+    })
 }
 
 /// `glyphscope motion`: runs the methods through the path, writes the report and the
-/// animated picture, prints the summary table.
+/// animated picture, prints the summary table. The arguments are read in the order
+/// their errors are said: the path, the methods, `--animate`, then the view.
 pub fn run_motion(args: &MotionArgs) -> Result<(), Error> {
-    use crate::motion::{MotionPath, report, run};
     let path = MotionPath::parse(&args.path)?;
-    let specs = args
+    let methods = args
         .method
         .iter()
-        .map(|m| run::MethodSpec::parse(m))
+        .map(|m| MethodSpec::parse(m))
         .collect::<Result<Vec<_>, _>>()?;
-    let animated = animated_methods(&args.animate, &specs)?;
+    let animated = animated_methods(&args.animate, &methods)?;
     let (scene, camera) = match &args.case {
         Some(name) => crate::named_views::build(name)?,
         None => args.view.build()?,
     };
-    // A pixel outside the frame is bad input: said before anything is measured.
-    let chosen_focus = match args.focus {
-        Some(Focus::Pixel(x, y)) => {
-            Some(Focus::Pixel(x, y).pixel(camera.width, camera.height, None)?)
-        }
-        _ => None,
-    };
-    let needs_gpu = specs.iter().any(|s| s.name != registry::REFERENCE.name);
-    let gpu = needs_gpu.then(GpuContext::new).transpose()?;
-    let frames = args.frames as usize;
-    let bar = indicatif::ProgressBar::new(frames as u64);
-    let result = run::run(gpu.as_ref(), &scene, &camera, &path, frames, &specs, |_| {
-        bar.inc(1)
-    })?;
-    bar.finish_and_clear();
     let command = std::env::args()
         .skip(1)
         .map(|a| if a.contains(' ') { format!("'{a}'") } else { a })
         .collect::<Vec<_>>()
         .join(" ");
-    report::write(&result, &args.out, &format!("glyphscope {command}"))?;
-    // The animated picture: a window around the focus, drawn again for the methods
-    // shown (the run keeps no frames).
-    let shown = animated
-        .iter()
-        .filter(|&&k| result.methods[k].refused.is_none())
-        .copied()
-        .collect::<Vec<_>>();
-    if let Some(&first) = shown.first() {
-        let animate_frames = (args.animate_frames as usize).clamp(2, frames);
-        let panel = 288 / args.magnify;
-        let (cols, rows) = (
-            panel.min(camera.width),
-            (192 / args.magnify).min(camera.height),
-        );
-        // The pixel of the largest change of the run (the worst pair's worst pixel);
-        // the frame's centre when the method changed nothing the reference did not.
-        let focus = chosen_focus.unwrap_or_else(|| {
-            result.methods[first]
-                .frames
-                .iter()
-                .filter_map(|f| f.temporal.map(|t| (t.max, t.worst_pixel)))
-                .filter(|(max, _)| *max > 0.0)
-                .max_by(|a, b| a.0.total_cmp(&b.0))
-                .map_or((camera.width / 2, camera.height / 2), |w| w.1)
-        });
-        let x0 = focus.0.saturating_sub(cols / 2).min(camera.width - cols);
-        let y0 = focus.1.saturating_sub(rows / 2).min(camera.height - rows);
-        let draw = |spec: &run::MethodSpec| {
-            run::window_frames(
-                gpu.as_ref(),
-                &scene,
-                &camera,
-                &path,
-                animate_frames,
-                spec,
-                (x0, y0, cols, rows),
-            )
-        };
-        let reference_spec = run::MethodSpec::parse(registry::REFERENCE.name)?;
-        let reference = draw(&reference_spec)?;
-        let mut panels = vec![report::Panel {
-            label: "reference".into(),
-            frames: reference.clone(),
-            against: None,
-        }];
-        for &k in &shown {
-            panels.push(report::Panel {
-                label: specs[k].label(),
-                frames: draw(&specs[k])?,
-                against: Some(reference.clone()),
-            });
-        }
-        report::animation(&panels, args.magnify, &args.out.join("motion.png"))?;
-        eprintln!(
-            "animated: pixels ({x0}, {y0}) to ({}, {}), frames 0 to {}",
-            x0 + cols - 1,
-            y0 + rows - 1,
-            animate_frames - 1
-        );
-    }
-    print!(
-        "{}",
-        report::markdown(&result, &format!("glyphscope {command}"))
-    );
+    let summary = crate::motion::command::run(&MotionOptions {
+        scene,
+        camera,
+        path,
+        frames: args.frames as usize,
+        methods,
+        animated,
+        animate_frames: args.animate_frames as usize,
+        magnify: args.magnify,
+        focus: args.focus,
+        out: args.out.clone(),
+        command: format!("glyphscope {command}"),
+    })?;
+    print!("{summary}");
     Ok(())
 }
 
-/// Indices into `specs` of the methods `--animate` names (default the first two).
-fn animated_methods(
-    names: &[String],
-    specs: &[crate::motion::run::MethodSpec],
-) -> Result<Vec<usize>, Error> {
-    if names.is_empty() {
-        return Ok((0..specs.len().min(2)).collect());
-    }
-    names
-        .iter()
-        .map(|name| {
-            if let Ok(k) = name.trim().parse::<usize>() {
-                return (1..=specs.len())
-                    .contains(&k)
-                    .then_some(k - 1)
-                    .ok_or_else(|| {
-                        Error::Input(format!(
-                            "--animate {k}: --method lists {} methods",
-                            specs.len()
-                        ))
-                    });
-            }
-            specs
-                .iter()
-                .position(|s| s.name == name.trim() || s.label() == name.trim())
-                .ok_or_else(|| Error::Input(format!("--animate '{name}' is not one of --method")))
-        })
-        .collect()
-}
-
-/// `glyphscope stability`: runs the sweep, prints the table and writes the report.
-/// Returns whether every claim held (broken claims are printed to stderr).
-pub fn run_stability(args: &StabilityArgs) -> Result<bool, Error> {
-    let cases = stability::select_cases(args.cases.as_deref())?;
-    let variants = stability::select_variants(args.methods.as_deref())?;
-    let size = if args.quick {
-        SweepSize::quick()
-    } else {
-        SweepSize::full()
-    };
-    let gpu = GpuContext::new()?;
-    let frames: usize = cases.iter().map(|c| size.cameras_for(c).len()).sum();
-    eprintln!(
-        "{} cases × {} methods, {frames} frames each (cameras per case: {}, a full turn \
-         and known worst cameras more) on {}",
-        cases.len(),
-        variants.len(),
-        size.grid_cameras(),
-        gpu.adapter_name()
-    );
-    let outcomes =
-        stability::sweep::run(&gpu, &cases, &variants, &size, |case| eprintln!("  {case}"))?;
-    print!("{}", stability::long_table(&outcomes));
-    print!("\n{}", stability::margin_table(&outcomes));
-    let motion_frames = if args.quick {
-        stability::temporal::QUICK_FRAMES
-    } else {
-        stability::temporal::FRAMES
-    };
-    eprintln!(
-        "in motion: {} frames of {}",
-        motion_frames,
-        stability::temporal::PATH
-    );
-    let in_motion = stability::temporal::run(&gpu, &cases, &variants, motion_frames, |case| {
-        eprintln!("  {case}")
-    })?;
+/// `glyphscope info`: prints the font's report.
+pub fn run_info(args: &InfoArgs) -> Result<(), Error> {
     print!(
-        "\n{}\n{}",
-        stability::temporal::table(&in_motion, motion_frames),
-        stability::temporal::summary_table(&in_motion)
+        "{}",
+        crate::info::run(&InfoOptions {
+            font: args.font.clone(),
+            text: args.text.clone(),
+            glyph_id: args.glyph_id,
+            variation: args.variation.clone(),
+        })?
     );
-    if let Some(dir) = &args.out {
-        // Only the full sweep of every case and method finds the worst cameras.
-        let full = !args.quick && args.cases.is_none() && args.methods.is_none();
-        let device = gpu.adapter_name();
-        stability::write_report(
-            dir,
-            &outcomes,
-            &in_motion,
-            motion_frames,
-            full.then_some(device.as_str()),
-        )?;
-    }
-    let mut broken = stability::broken_claims(&outcomes);
-    broken.extend(stability::temporal::broken_claims(&in_motion));
-    for line in &broken {
-        eprintln!("claim broken: {line}");
-    }
-    Ok(broken.is_empty())
+    Ok(())
 }

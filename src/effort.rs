@@ -1,11 +1,23 @@
-//! What `--quick` means, in one place: every number a full run and a quick one differ
-//! by, in one value. A subcommand picks [`Effort::FULL`] or [`Effort::QUICK`] once and
-//! hands it to each part. What `--quick` measures besides in the bench (fewer
-//! settings, only the contrast after caching) is said by `bench::method_settings`.
+//! What `--quick` means, in one place: the plain numbers a full run and a quick one
+//! measure with, side by side. The command line picks [`Effort::FULL`] or
+//! [`Effort::QUICK`] once per command; the modules read the numbers from the one picked
+//! and never choose with an `if quick` of their own.
 
-/// The numbers `--quick` changes.
+/// How much a run measures.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Effort {
+    /// The stability sweep's sub-pixel offsets (x, y), in pixels, each seen at every
+    /// rotation of [`Effort::sweep_rotations_deg`].
+    pub sweep_offsets: &'static [(f64, f64)],
+    /// The stability sweep's rotations, degrees.
+    pub sweep_rotations_deg: &'static [f64],
+    /// A hard case seen through a full turn is seen every this many degrees besides.
+    pub sweep_full_turn_step_deg: f64,
+    /// Whether the sweep also runs the cameras where the full sweep found each method
+    /// worst (`data/worst-cameras.csv`): a grid too coarse to contain them.
+    pub sweep_reruns_worst_cameras: bool,
+    /// Frames each hard case drifts through in the stability run's motion stage.
+    pub stability_motion_frames: usize,
     /// `bench`: rounds that interleave a view's cases, each preparing the method anew
     /// (`bench::result::Rounds`).
     pub bench_rounds: usize,
@@ -25,12 +37,32 @@ pub struct Effort {
 }
 
 impl Effort {
-    /// The full run. `bench`: 3 rounds of 7 frames (21 in all, as `render --stats`
-    /// times); 11 points a series (the px/em series then falls on the powers of two) up to 30 000
-    /// glyphs and 4 096 px/em, 5 frames timed at each (at 30 000 glyphs or 4 096 px/em
-    /// a frame of the slowest methods takes seconds on a software GPU, and the fitted
-    /// slope pools the points); 16 frames per camera path.
+    /// A full run: the sweep at 16 sub-pixel offsets (a 4×4 grid of 1/4 px) × 0°, 1°,
+    /// 45° and 89.9° (and every 30° for a full turn), whose grid is where every listed
+    /// worst camera was found.
     pub const FULL: Effort = Effort {
+        sweep_offsets: &[
+            (0.0, 0.0),
+            (0.25, 0.0),
+            (0.5, 0.0),
+            (0.75, 0.0),
+            (0.0, 0.25),
+            (0.25, 0.25),
+            (0.5, 0.25),
+            (0.75, 0.25),
+            (0.0, 0.5),
+            (0.25, 0.5),
+            (0.5, 0.5),
+            (0.75, 0.5),
+            (0.0, 0.75),
+            (0.25, 0.75),
+            (0.5, 0.75),
+            (0.75, 0.75),
+        ],
+        sweep_rotations_deg: &[0.0, 1.0, 45.0, 89.9],
+        sweep_full_turn_step_deg: 30.0,
+        sweep_reruns_worst_cameras: false,
+        stability_motion_frames: 16,
         bench_rounds: 3,
         bench_frames_per_round: 7,
         bench_scaling_points: 11,
@@ -40,17 +72,25 @@ impl Effort {
         bench_motion_frames: 16,
     };
 
-    /// `--quick`. `bench`: three rounds of three frames each after the full run's warm-up. On
+    /// `--quick`, the CI size: the sweep at 4 offsets (one per row and column of the
+    /// full grid) × 0° and 45° (every 90° for a full turn) plus the listed worst
+    /// cameras; the bench at a few frames, its scaling series stopping at about a tenth
+    /// of the pixels, so a run takes minutes.
+    ///
+    /// The bench's three rounds of three frames come after the full run's warm-up. On
     /// lavapipe the first frames after a method is prepared run slow on the small
     /// scenes (the atlas on `rotated`: 4.1–4.3 ms for the three frames after one
     /// warm-up frame, 2.5 ms after), and a median of three such frames measured the
     /// warm-up, not the method. One round measured whatever load the machine had while
     /// each case ran: three one-round runs of the same build put `winding` on `rotated`
     /// at 1.32×, 2.16× and 3.04× the atlas (a slow spell of a few seconds covering one
-    /// case's frames). The scaling series: 3 points, 2 frames timed at each, stopping
-    /// at about a tenth of the pixels (3 000 glyphs, 256 px/em) so they stay a run of
-    /// seconds; 8 frames per camera path.
+    /// case's frames).
     pub const QUICK: Effort = Effort {
+        sweep_offsets: &[(0.0, 0.0), (0.25, 0.5), (0.5, 0.75), (0.75, 0.25)],
+        sweep_rotations_deg: &[0.0, 45.0],
+        sweep_full_turn_step_deg: 90.0,
+        sweep_reruns_worst_cameras: true,
+        stability_motion_frames: 8,
         bench_rounds: 3,
         bench_frames_per_round: 3,
         bench_scaling_points: 3,
@@ -60,7 +100,8 @@ impl Effort {
         bench_motion_frames: 8,
     };
 
-    /// [`Effort::QUICK`] with `quick`, else [`Effort::FULL`].
+    /// [`Effort::QUICK`] when `quick`, else [`Effort::FULL`]: what a `--quick` flag
+    /// picks.
     pub fn of(quick: bool) -> Effort {
         if quick { Effort::QUICK } else { Effort::FULL }
     }

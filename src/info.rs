@@ -5,40 +5,29 @@
 use std::fmt::Write;
 use std::path::PathBuf;
 
-use clap::Args;
-
 use crate::Error;
 use crate::font::{GlyphId, OutlineTable, describe_sfnt_version};
 use crate::shaping;
-use crate::view_args::{load_font, parse_variation};
+use crate::view_args::load_font;
 
-#[derive(Args, Clone, Debug)]
-pub struct InfoArgs {
-    /// Font file (.ttf/.otf); the embedded DejaVu Sans when absent.
-    #[arg(long)]
+/// The font and the glyphs to report on.
+#[derive(Clone, Debug)]
+pub struct InfoOptions {
+    /// The font file; the embedded DejaVu Sans when None.
     pub font: Option<PathBuf>,
-    /// Also report the glyphs this text shapes to, in order of first use.
-    #[arg(long, conflicts_with = "glyph_id")]
+    /// Report the glyphs this text shapes to, in order of first use.
     pub text: Option<String>,
-    /// Also report this glyph, by its id in the font.
-    #[arg(long)]
+    /// Report this glyph, by its id in the font (when there is no text).
     pub glyph_id: Option<u32>,
-    /// Variable-font axis values, TAG=VALUE[,TAG=VALUE...]; a short tag is space-padded.
-    #[arg(long, value_delimiter = ',', value_parser = parse_variation)]
+    /// Variable-font axis values, (tag, value).
     pub variation: Vec<(String, f32)>,
-}
-
-/// `glyphscope info`: prints the report.
-pub fn run(args: &InfoArgs) -> Result<(), Error> {
-    print!("{}", report(args)?);
-    Ok(())
 }
 
 /// The report: the font's outline table and why, units per em, axes (tags quoted so their
 /// padding shows), and per requested glyph its advance, lsb, xMin and the applied shift.
-pub fn report(args: &InfoArgs) -> Result<String, Error> {
-    let font = load_font(args.font.as_deref(), &args.variation)?;
-    let glyphs: Vec<GlyphId> = match (&args.text, args.glyph_id) {
+pub fn run(options: &InfoOptions) -> Result<String, Error> {
+    let font = load_font(options.font.as_deref(), &options.variation)?;
+    let glyphs: Vec<GlyphId> = match (&options.text, options.glyph_id) {
         (Some(text), _) => {
             let mut ids = Vec::new();
             for shaped in shaping::shape(&font, text)? {

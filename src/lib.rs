@@ -21,6 +21,7 @@ pub mod motion;
 pub mod named_views;
 pub mod outline_overlay;
 pub mod reference;
+pub mod render;
 pub mod scene;
 pub mod shaping;
 pub mod stability;

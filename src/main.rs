@@ -22,7 +22,7 @@ fn main() -> ExitCode {
         Some(Command::Stability(args)) => glyphscope::cli::run_stability(args),
         Some(Command::Screenshots(args)) => run_screenshots(args).map(|()| true),
         Some(Command::Motion(args)) => glyphscope::cli::run_motion(args).map(|()| true),
-        Some(Command::Info(args)) => glyphscope::info::run(args).map(|()| true),
+        Some(Command::Info(args)) => glyphscope::cli::run_info(args).map(|()| true),
         None => run_app(cli.view.as_deref()).map(|()| true),
     };
     match result {

@@ -1052,11 +1052,11 @@ fn a_case_from_the_menu_reproduces_render_and_opens_on_its_worst_pixel() {
         let (ox, oy) = (offset[0] as i64, offset[1] as i64);
         let shown = app.pane_capture(0).expect("read back at rest");
 
-        let rendered = glyphscope::cli::render(&glyphscope::cli::RenderArgs {
+        let rendered = glyphscope::render::render(&glyphscope::render::RenderOptions {
             case: Some(name.into()),
             method: "sdf-cells".into(),
             error_image: Some(PathBuf::from("unused")),
-            ..glyphscope::cli::RenderArgs::of(glyphscope::view_args::ViewArgs::text("-", 1.0))
+            ..glyphscope::render::RenderOptions::of(glyphscope::view_args::ViewArgs::text("-", 1.0))
         })
         .unwrap_or_else(|e| panic!("{name}: {e}"));
         let (image, reference) = (&rendered.image, rendered.reference.as_ref().unwrap());

@@ -1,24 +1,11 @@
 //! `glyphscope render` as a user runs it: outputs for good input, one clear line and
 //! exit code 2 for bad input, never a panic, never an image.
 
+mod common;
+
 use std::path::PathBuf;
-use std::process::{Command, Output};
 
-fn bin() -> Command {
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_glyphscope"));
-    cmd.current_dir(env!("CARGO_MANIFEST_DIR"));
-    cmd
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("glyphscope-cli-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
-}
-
-fn run(args: &[&str]) -> Output {
-    bin().args(args).output().expect("the binary runs")
-}
+use common::binary::{bin, run, scratch};
 
 /// Runs `args` and checks the command succeeded, showing its stderr if not.
 fn run_ok(args: &[&str]) {

@@ -7,14 +7,14 @@
 
 mod common;
 
-use common::{cameras, gpu};
+use common::{cameras, gpu, render};
 use glam::DVec2;
 use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
 use glyphscope::geometry::{Contour, Outline, Segment};
 use glyphscope::gpu::{CoverageTarget, GpuContext};
 use glyphscope::methods::frame::{render_frame, time_frames};
-use glyphscope::methods::registry;
+use glyphscope::methods::{Method, registry};
 use glyphscope::scene::Scene;
 use glyphscope::{Error, reference};
 
@@ -85,13 +85,10 @@ fn wide_scene() -> Scene {
     Scene::from_outlines(2048.0, placed)
 }
 
-fn render(scene: &Scene, camera: &Camera) -> Result<CoverageImage, Error> {
-    let gpu = gpu();
-    let mut method = registry::create("bounds", &[])?;
-    method.prepare(gpu, scene)?;
-    let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
-    render_frame(gpu, method.as_mut(), &target, camera)?;
-    target.readback(gpu)
+/// The diagnostic that draws each glyph's dilated quad: the GPU path with no method's
+/// own work in it.
+fn bounds() -> Box<dyn Method> {
+    registry::create("bounds", &[]).unwrap()
 }
 
 fn max_abs_difference(a: &CoverageImage, b: &CoverageImage) -> f32 {
@@ -107,7 +104,7 @@ fn max_abs_difference(a: &CoverageImage, b: &CoverageImage) -> f32 {
 fn check_against_reference(scene: &Scene, base: Camera) {
     for (name, camera) in cameras(base) {
         let expected = reference::rasterize(scene, &camera).unwrap();
-        let actual = render(scene, &camera).unwrap();
+        let actual = render(bounds().as_mut(), scene, &camera);
         let error = max_abs_difference(&actual, &expected);
         let (sum, expected_sum) = (actual.sum(), expected.sum());
         let view = format!("{}x{}", camera.width, camera.height);
@@ -134,8 +131,8 @@ fn check_against_reference(scene: &Scene, base: Camera) {
         ..base
     };
     let shift = max_abs_difference(
-        &render(scene, &far).unwrap(),
-        &render(scene, &base).unwrap(),
+        &render(bounds().as_mut(), scene, &far),
+        &render(bounds().as_mut(), scene, &base),
     );
     eprintln!(
         "{}x{} far world offset vs none: max difference {shift:.2e}",
@@ -235,6 +232,6 @@ fn a_device_opened_elsewhere_renders_the_same() {
     let target = CoverageTarget::new(&outside, camera.width, camera.height).unwrap();
     render_frame(&outside, method.as_mut(), &target, &camera).unwrap();
     let image = target.readback(&outside).unwrap();
-    assert_eq!(image, render(&scene, &camera).unwrap());
+    assert_eq!(image, render(bounds().as_mut(), &scene, &camera));
     assert!(image.sum() > 10.0, "nothing drawn");
 }

@@ -4,9 +4,7 @@
 
 mod common;
 
-use std::path::PathBuf;
-use std::process::Command;
-
+use common::binary::{self, scratch};
 use common::{gpu, polygons, rect, single};
 use glam::DVec2;
 use glyphscope::camera::Camera;
@@ -122,24 +120,10 @@ fn the_atlas_snaps_as_worked_by_hand_and_the_reference_does_not() {
     check_against_hand(&pairs(1), 2.0 / 255.0, "atlas");
 }
 
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("glyphscope-motion-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
-}
-
-fn glyphscope(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_glyphscope"))
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
-
 #[test]
 fn the_motion_command_writes_its_report_and_animation() {
     let out = scratch("run");
-    let result = glyphscope(&[
+    let result = binary::run(&[
         "motion",
         "--text",
         "Wave",
@@ -212,7 +196,7 @@ fn the_motion_command_refuses_bad_input_in_one_line() {
             all.extend(["--frames", "3"]);
         }
         all.extend(["--out", out.to_str().unwrap()]);
-        let result = glyphscope(&all);
+        let result = binary::run(&all);
         let stderr = String::from_utf8_lossy(&result.stderr);
         assert_eq!(result.status.code(), Some(2), "{args:?}: {stderr}");
         // The first line says it (clap adds a usage hint under its own).

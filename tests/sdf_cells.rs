@@ -13,8 +13,6 @@ use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
 use glyphscope::font::{Font, GlyphId, SHIPPED_FONTS};
 use glyphscope::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Segment, project};
-use glyphscope::gpu::CoverageTarget;
-use glyphscope::methods::frame::render_frame;
 use glyphscope::methods::params::{Params, owned};
 use glyphscope::methods::sdf_cells::cells::Mode;
 use glyphscope::methods::sdf_cells::curves::CurveLayout;
@@ -35,13 +33,8 @@ fn render(
     camera: &Camera,
     pairs: &[(&str, &str)],
 ) -> (CoverageImage, image::RgbImage, SdfCells) {
-    let gpu = gpu();
     let mut method = SdfCells::new(&params(pairs));
-    method.prepare(gpu, scene).unwrap();
-    let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
-    render_frame(gpu, &mut method, &target, camera).unwrap();
-    let coverage = target.readback(gpu).unwrap();
-    let picture = target.readback_color(gpu).unwrap();
+    let (coverage, picture) = render_with_picture(&mut method, scene, camera);
     (coverage, picture, method)
 }
 
@@ -136,11 +129,7 @@ impl Renderer {
     }
 
     fn coverage(&mut self, scene: &Scene, camera: &Camera) -> CoverageImage {
-        let gpu = gpu();
-        self.method.prepare(gpu, scene).unwrap();
-        let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
-        render_frame(gpu, &mut self.method, &target, camera).unwrap();
-        target.readback(gpu).unwrap()
+        common::render(&mut self.method, scene, camera)
     }
 
     fn error(&mut self, scene: &Scene, camera: &Camera) -> ErrorStats {
@@ -812,7 +801,7 @@ fn overlapping_contours_crack_only_along_the_curves_inside_the_fill() {
 
 /// The estimate through the stability sweep's CI cameras on `case`: the outcome of its
 /// worst frame, artifact pixels (off by more than 0.5) summed over the frames.
-fn estimate_on_case(case: &str) -> glyphscope::stability::sweep::Outcome {
+fn estimate_on_case(case: &str) -> glyphscope::stability::outcome::Outcome {
     use glyphscope::stability::{self, sweep};
     let cases = stability::select_cases(Some(&[case.into()])).unwrap();
     let variants: Vec<_> = stability::select_variants(Some(&["sdf-cells".into()]))
@@ -821,7 +810,13 @@ fn estimate_on_case(case: &str) -> glyphscope::stability::sweep::Outcome {
         .filter(|v| v.params.is_empty())
         .collect();
     assert_eq!(variants.len(), 1, "the estimate is sdf-cells' default");
-    let outcomes = sweep::run(gpu(), &cases, &variants, &sweep::SweepSize::quick(), |_| {});
+    let outcomes = sweep::run(
+        gpu(),
+        &cases,
+        &variants,
+        &sweep::SweepSize::of(&glyphscope::effort::Effort::QUICK),
+        |_| {},
+    );
     let outcome = outcomes.unwrap().remove(0);
     assert!(outcome.failure.is_none(), "{:?}", outcome.failure);
     // One frame in full, whole frame and edge pixels (> 0.25 and > 0.5 counted), for
@@ -844,7 +839,7 @@ fn estimate_on_case(case: &str) -> glyphscope::stability::sweep::Outcome {
 }
 
 /// The outcome in one line: MAE, max, pixels over 0.5, where it was worst.
-fn summary(case: &str, o: &glyphscope::stability::sweep::Outcome) -> String {
+fn summary(case: &str, o: &glyphscope::stability::outcome::Outcome) -> String {
     format!(
         "{case}, estimate: MAE {:.2}/255, max {:.3}, {} pixels over 0.5, worst at {:?}",
         o.mae_255, o.max, o.artifact_pixels, o.worst

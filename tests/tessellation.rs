@@ -10,7 +10,6 @@ mod common;
 use common::*;
 use glam::DVec2;
 use glyphscope::camera::Camera;
-use glyphscope::cli::{RenderArgs, render};
 use glyphscope::coverage::CoverageImage;
 use glyphscope::font::{Font, SHIPPED_FONTS};
 use glyphscope::geometry::{Contour, Outline, Segment, project};
@@ -22,6 +21,7 @@ use glyphscope::methods::tessellation::subdivision::{
 };
 use glyphscope::methods::{MeshStats, Method, registry};
 use glyphscope::metrics::{ErrorStats, compare};
+use glyphscope::render::{RenderOptions, render};
 use glyphscope::scene::Scene;
 use glyphscope::view_args::ViewArgs;
 use glyphscope::{Error, reference};
@@ -37,19 +37,8 @@ fn tessellation(pairs: &[(&str, &str)]) -> Box<dyn Method> {
     registry::create("tessellation", &params(pairs)).unwrap()
 }
 
-/// Prepares `method` for `scene` and renders one frame.
-fn draw(method: &mut dyn Method, scene: &Scene, camera: &Camera) -> CoverageTarget {
-    let gpu = gpu();
-    method.prepare(gpu, scene).unwrap();
-    let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
-    render_frame(gpu, method, &target, camera).unwrap();
-    target
-}
-
 fn coverage(pairs: &[(&str, &str)], scene: &Scene, camera: &Camera) -> CoverageImage {
-    draw(tessellation(pairs).as_mut(), scene, camera)
-        .readback(gpu())
-        .unwrap()
+    common::render(tessellation(pairs).as_mut(), scene, camera)
 }
 
 /// Glyph's table (resource/adaptive-subdivision.dat): points and summed area error
@@ -408,9 +397,7 @@ fn a_page_of_repeated_glyphs_matches_the_reference() {
     camera.tilt_deg = 35.0;
     let expected = reference::rasterize(&scene, &camera).unwrap();
     let mut method = tessellation(&[]);
-    let actual = draw(method.as_mut(), &scene, &camera)
-        .readback(gpu())
-        .unwrap();
+    let actual = common::render(method.as_mut(), &scene, &camera);
     let e = compare(&actual, &expected).unwrap();
     eprintln!("page, tilted 35°: {e:?}");
     assert!(e.max <= 0.5 && e.mae_255 < 8.0, "{e:?}");
@@ -520,7 +507,6 @@ fn overlays_draw_over_unchanged_coverage() {
     let scene = Scene::from_text(&Font::default_font(), "g").unwrap();
     let camera = Camera::new(90, 110, 100.0, DVec2::new(8.0, 78.0));
     let plain = coverage(&[("subdivision", "asa")], &scene, &camera);
-    let gpu = gpu();
     type Colour = fn(&[u8; 3]) -> bool;
     let orange: Colour = |&[r, g, b]| r > 200 && (100..180).contains(&g) && b < 60;
     let yellow: Colour = |&[r, g, b]| r > 200 && g > 180 && b < 100;
@@ -532,13 +518,8 @@ fn overlays_draw_over_unchanged_coverage() {
         ("points", vec![yellow, magenta, blue]),
     ] {
         let mut method = tessellation(&[("subdivision", "asa"), ("overlay", overlay)]);
-        let target = draw(method.as_mut(), &scene, &camera);
-        assert_eq!(
-            target.readback(gpu).unwrap().data,
-            plain.data,
-            "{overlay} changed coverage"
-        );
-        let picture = target.readback_color(gpu).unwrap();
+        let (coverage, picture) = render_with_picture(method.as_mut(), &scene, &camera);
+        assert_eq!(coverage.data, plain.data, "{overlay} changed coverage");
         for (k, colour) in colours.into_iter().enumerate() {
             let count = picture.pixels().filter(|p| colour(&p.0)).count();
             assert!(count > 10, "{overlay}: {count} pixels of colour {k}");
@@ -548,13 +529,13 @@ fn overlays_draw_over_unchanged_coverage() {
 
 #[test]
 fn the_command_line_reports_points_triangles_and_area_error() {
-    let args = |pairs: &[&str]| RenderArgs {
+    let args = |pairs: &[&str]| RenderOptions {
         method: "tessellation".into(),
         params: pairs
             .chunks(2)
             .map(|kv| (kv[0].to_string(), kv[1].to_string()))
             .collect(),
-        ..RenderArgs::of(ViewArgs::text("gg", 24.0))
+        ..RenderOptions::of(ViewArgs::text("gg", 24.0))
     };
     // A mode's own parameter picks the mode.
     let asa = render(&args(&["threshold", "13"])).unwrap();

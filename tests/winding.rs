@@ -7,9 +7,8 @@ mod common;
 use common::*;
 use glam::DVec2;
 use glyphscope::camera::Camera;
-use glyphscope::coverage::CoverageImage;
 use glyphscope::font::{Font, SHIPPED_FONTS};
-use glyphscope::gpu::{self, GpuContext};
+use glyphscope::gpu::GpuContext;
 use glyphscope::methods::{Method, frame, registry};
 use glyphscope::metrics::{ErrorStats, compare};
 use glyphscope::reference;
@@ -26,14 +25,9 @@ fn winding(params: &[(&str, &str)]) -> Box<dyn Method> {
     registry::create("winding", &params).unwrap()
 }
 
-fn render(gpu: &GpuContext, method: &mut dyn Method, scene: &Scene, cam: &Camera) -> CoverageImage {
-    method.prepare(gpu, scene).unwrap();
-    frame::render_image(gpu, method, cam).unwrap()
-}
-
 /// Error of `winding` with `params` against the reference, for one frame.
-fn error(gpu: &GpuContext, params: &[(&str, &str)], scene: &Scene, cam: &Camera) -> ErrorStats {
-    let got = render(gpu, winding(params).as_mut(), scene, cam);
+fn error(params: &[(&str, &str)], scene: &Scene, cam: &Camera) -> ErrorStats {
+    let got = render(winding(params).as_mut(), scene, cam);
     compare(&got, &reference::rasterize(scene, cam).unwrap()).unwrap()
 }
 
@@ -122,8 +116,8 @@ fn real_glyphs_stay_within_half_a_level_everywhere() {
     assert!(worst <= 2.0, "worst mean error {worst}/255");
 }
 
-fn assert_within_half(gpu: &GpuContext, what: &str, scene: &Scene, cam: &Camera) -> ErrorStats {
-    let s = error(gpu, &[], scene, cam);
+fn assert_within_half(what: &str, scene: &Scene, cam: &Camera) -> ErrorStats {
+    let s = error(&[], scene, cam);
     println!("{what}: MAE {:.3}/255, max {:.3}", s.mae_255, s.max);
     assert_eq!(
         s.pixels_over_05, 0,
@@ -138,7 +132,6 @@ fn assert_within_half(gpu: &GpuContext, what: &str, scene: &Scene, cam: &Camera)
 /// alignments are exact.
 #[test]
 fn hard_cases_at_their_exact_alignment() {
-    let gpu = gpu();
     for (name, bound) in [
         // Horizontal edges along pixel-centre rows: an axis-aligned shape is exact.
         ("horizontal-on-sample-row", 0.02),
@@ -150,7 +143,7 @@ fn hard_cases_at_their_exact_alignment() {
     ] {
         let case = hard_cases::by_name(name).unwrap();
         let cam = case.camera(0.0, DVec2::ZERO).unwrap();
-        let s = assert_within_half(gpu, name, &case.scene, &cam);
+        let s = assert_within_half(name, &case.scene, &cam);
         assert!(s.max < bound, "{name}: {s:?}");
     }
 }
@@ -164,10 +157,9 @@ fn hard_cases_at_their_exact_alignment() {
 /// crossings alone, the rays read 0.20 here.
 #[test]
 fn a_ray_meeting_curves_along_itself_beside_a_vertex_does_not_outweigh_one_meeting_nothing() {
-    let gpu = gpu();
     let sun = hard_cases::by_name("sun-symbol").unwrap().scene;
     let cam = Camera::new(87, 106, 48.0, DVec2::new(24.0, 72.0));
-    let image = render(gpu, winding(&[]).as_mut(), &sun, &cam);
+    let image = render(winding(&[]).as_mut(), &sun, &cam);
     let covered = image.get(52, 57);
     println!("sun symbol, pixel (52, 57): {covered:.3}");
     assert!(
@@ -182,19 +174,18 @@ fn far_from_the_origin_nothing_changes() {
     let scene = Scene::from_text(&Font::default_font(), "Rg").unwrap();
     let mut cam = framed(&scene, 37.0, [0.9, 0.3, -0.2, 1.1], DVec2::new(0.25, 0.5));
     let mut method = winding(&[]);
-    let near = render(gpu, method.as_mut(), &scene, &cam);
+    let near = render(method.as_mut(), &scene, &cam);
     cam.world_offset = DVec2::new(1.0e5, -1.0e5);
     let far = frame::render_image(gpu, method.as_mut(), &cam).unwrap();
     assert!(
         compare(&far, &near).unwrap().max < 1e-3,
         "a 100 000 px world offset changed the image"
     );
-    assert_within_half(gpu, "100 000 px world offset", &scene, &cam);
+    assert_within_half("100 000 px world offset", &scene, &cam);
 }
 
 #[test]
 fn a_huge_glyph_viewed_on_its_edge() {
-    let gpu = gpu();
     let font = Font::default_font();
     let scene = Scene::from_glyph_id(&font, font.glyph_for_char('o').unwrap().into()).unwrap();
     for (name, matrix) in transforms() {
@@ -208,28 +199,22 @@ fn a_huge_glyph_viewed_on_its_edge() {
             edge,
         );
         cam.origin = DVec2::splat(32.3) - at;
-        let got = render(gpu, winding(&[]).as_mut(), &scene, &cam);
+        let got = render(winding(&[]).as_mut(), &scene, &cam);
         let covered = got.sum() / 4096.0;
         assert!(
             covered > 0.2 && covered < 0.8,
             "{name}: view not on the edge ({covered})"
         );
-        assert_within_half(
-            gpu,
-            &format!("20 000 px/em on an edge, {name}"),
-            &scene,
-            &cam,
-        );
+        assert_within_half(&format!("20 000 px/em on an edge, {name}"), &scene, &cam);
     }
 }
 
 #[test]
 fn perspective_tilt() {
-    let gpu = gpu();
     let scene = Scene::from_text(&Font::default_font(), "Tilted").unwrap();
     let mut cam = framed(&scene, 60.0, [1.0, 0.0, 0.0, 1.0], DVec2::new(0.3, 0.6));
     cam.tilt_deg = 40.0;
-    let s = assert_within_half(gpu, "40° perspective tilt", &scene, &cam);
+    let s = assert_within_half("40° perspective tilt", &scene, &cam);
     assert!(s.mae_255 < 2.0, "{s:?}");
 }
 
@@ -244,11 +229,11 @@ fn bands_change_the_cost_not_the_image() {
         DVec2::new(0.4, 0.1),
     );
     let mut brute = winding(&[("bands", "off")]);
-    let reference_image = render(gpu, brute.as_mut(), &scene, &cam);
+    let reference_image = render(brute.as_mut(), &scene, &cam);
     let brute_cost = brute.curves_per_pixel(gpu, &cam).unwrap().unwrap();
     for bands in ["auto", "1", "5", "64"] {
         let mut banded = winding(&[("bands", bands)]);
-        let got = render(gpu, banded.as_mut(), &scene, &cam);
+        let got = render(banded.as_mut(), &scene, &cam);
         let diff = compare(&got, &reference_image).unwrap();
         assert!(
             diff.max < 2e-3,
@@ -265,14 +250,13 @@ fn bands_change_the_cost_not_the_image() {
 
 #[test]
 fn settings_trade_accuracy_for_cost() {
-    let gpu = gpu();
     let scene = Scene::from_text(&Font::default_font(), "Hamburgefonstiv").unwrap();
     let (s, c) = 12f64.to_radians().sin_cos();
     let cam = framed(&scene, 13.0, [c, -s, s, c], DVec2::new(0.37, 0.21));
-    let one_ray = error(gpu, &[("rays", "1"), ("samples", "1")], &scene, &cam);
-    let two_rays = error(gpu, &[("samples", "1")], &scene, &cam);
-    let four_samples = error(gpu, &[("samples", "4")], &scene, &cam);
-    let auto = error(gpu, &[], &scene, &cam);
+    let one_ray = error(&[("rays", "1"), ("samples", "1")], &scene, &cam);
+    let two_rays = error(&[("samples", "1")], &scene, &cam);
+    let four_samples = error(&[("samples", "4")], &scene, &cam);
+    let auto = error(&[], &scene, &cam);
     assert_eq!(
         auto, four_samples,
         "13 px/em is small text: auto takes four samples"
@@ -287,7 +271,6 @@ fn settings_trade_accuracy_for_cost() {
 /// and the star's centre; even-odd leaves them empty.
 #[test]
 fn fill_rules_on_overlaps_and_self_intersections() {
-    let gpu = gpu();
     let squares = hard_cases::by_name("overlapping-same-direction")
         .unwrap()
         .scene;
@@ -299,8 +282,8 @@ fn fill_rules_on_overlaps_and_self_intersections() {
     // square / one star point only.
     let probes = [(&squares, (11, 11), (4, 18)), (&star, (11, 11), (10, 6))];
     for (scene, shared, single_cover) in probes {
-        let nonzero = render(gpu, winding(&[]).as_mut(), scene, &cam);
-        let even_odd = render(gpu, winding(&[("fill", "evenodd")]).as_mut(), scene, &cam);
+        let nonzero = render(winding(&[]).as_mut(), scene, &cam);
+        let even_odd = render(winding(&[("fill", "evenodd")]).as_mut(), scene, &cam);
         assert_eq!(nonzero.get(shared.0, shared.1), 1.0);
         assert_eq!(even_odd.get(shared.0, shared.1), 0.0);
         assert_eq!(nonzero.get(single_cover.0, single_cover.1), 1.0);
@@ -313,18 +296,11 @@ fn fill_rules_on_overlaps_and_self_intersections() {
 
 #[test]
 fn overlays_draw_classes_and_cost() {
-    let gpu = gpu();
     let scene = Scene::from_text(&Font::default_font(), "Sg").unwrap();
     let cam = framed(&scene, 80.0, [1.0, 0.0, 0.0, 1.0], DVec2::new(0.5, 0.5));
     let picture = |params: &[(&str, &str)]| {
-        let mut method = winding(params);
-        method.prepare(gpu, &scene).unwrap();
-        let target = gpu::CoverageTarget::new(gpu, cam.width, cam.height).unwrap();
-        frame::render_frame(gpu, method.as_mut(), &target, &cam).unwrap();
-        (
-            target.readback_color(gpu).unwrap(),
-            target.readback(gpu).unwrap(),
-        )
+        let (coverage, picture) = render_with_picture(winding(params).as_mut(), &scene, &cam);
+        (picture, coverage)
     };
     let (classes, coverage) = picture(&[("overlay", "classes")]);
     // Every pixel shows either grey coverage or one of the legend's colours, and near
@@ -342,7 +318,7 @@ fn overlays_draw_classes_and_cost() {
         "only {tinted} pixels tinted by a counting class"
     );
     // The overlay does not change coverage.
-    let plain = render(gpu, winding(&[]).as_mut(), &scene, &cam);
+    let plain = render(winding(&[]).as_mut(), &scene, &cam);
     assert!(compare(&coverage, &plain).unwrap().max < 1e-3);
     let (cost, _) = picture(&[("overlay", "cost")]);
     let (cost_brute, _) = picture(&[("overlay", "cost"), ("bands", "off")]);
@@ -368,7 +344,6 @@ fn overlays_draw_classes_and_cost() {
 /// `aa=area` must give the exact values, so the probes tell the two apart.
 #[test]
 fn slug_combine_on_hand_worked_pixels() {
-    let gpu = gpu();
     let square = single(polygons(&[&[
         (4.25, 4.25),
         (30.0, 4.25),
@@ -383,10 +358,10 @@ fn slug_combine_on_hand_worked_pixels() {
         ("45° edge", &triangle, (9, 22), 0.75, 0.71875),
     ];
     for (what, scene, (i, j), slug, exact) in probes {
-        let by_slug = render(gpu, winding(&[("rays", "slug")]).as_mut(), scene, &cam);
+        let by_slug = render(winding(&[("rays", "slug")]).as_mut(), scene, &cam);
         let area_params = [("aa".to_string(), "area".to_string())];
         let mut area = registry::create("winding", &area_params).unwrap();
-        let by_area = render(gpu, area.as_mut(), scene, &cam);
+        let by_area = render(area.as_mut(), scene, &cam);
         // Half floats hold ¾ and 9/16 exactly and 0.71875 within 2.5e-4.
         let (got_slug, got_area) = (by_slug.get(i, j), by_area.get(i, j));
         assert!(
@@ -449,9 +424,8 @@ fn a_glyph_flat_across_a_ray_reads_its_own_bands() {
     // through pixel centres.
     let cam = Camera::new(560, 380, 1000.0, DVec2::new(10.5, 20.5));
     let expected = reference::rasterize(&scene, &cam).unwrap();
-    let gpu = gpu();
     for params in [&[][..], &[("samples", "4")], &[("rays", "1")]] {
-        let got = render(gpu, winding(params).as_mut(), &scene, &cam);
+        let got = render(winding(params).as_mut(), &scene, &cam);
         let s = compare(&got, &expected).unwrap();
         assert_eq!(s.invalid_pixels, 0, "{params:?}: {s:?}");
         // The rays' claim, anywhere in the frame.

@@ -15,7 +15,6 @@ mod common;
 use common::*;
 use glam::{DMat2, DVec2};
 use glyphscope::camera::Camera;
-use glyphscope::coverage::CoverageImage;
 use glyphscope::font::{Font, SHIPPED_FONTS};
 use glyphscope::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Outline, Quad, Segment};
 use glyphscope::methods::winding::area;
@@ -34,11 +33,6 @@ fn area_method(params: &[(&str, &str)]) -> Box<dyn Method> {
         .map(|(k, v)| (k.to_string(), v.to_string()))
         .collect();
     registry::create("winding", &params).unwrap()
-}
-
-fn render(method: &mut dyn Method, scene: &Scene, cam: &Camera) -> CoverageImage {
-    method.prepare(gpu(), scene).unwrap();
-    frame::render_image(gpu(), method, cam).unwrap()
 }
 
 fn error(params: &[(&str, &str)], scene: &Scene, cam: &Camera) -> ErrorStats {
@@ -369,14 +363,8 @@ fn overlays_keep_working() {
     let cam = framed(&scene, 80.0, [1.0, 0.0, 0.0, 1.0], DVec2::new(0.5, 0.5));
     let plain = render(area_method(&[]).as_mut(), &scene, &cam);
     let picture = |params: &[(&str, &str)]| {
-        let mut method = area_method(params);
-        method.prepare(gpu(), &scene).unwrap();
-        let target = glyphscope::gpu::CoverageTarget::new(gpu(), cam.width, cam.height).unwrap();
-        frame::render_frame(gpu(), method.as_mut(), &target, &cam).unwrap();
-        (
-            target.readback_color(gpu()).unwrap(),
-            target.readback(gpu()).unwrap(),
-        )
+        let (coverage, picture) = render_with_picture(area_method(params).as_mut(), &scene, &cam);
+        (picture, coverage)
     };
     for overlay in ["classes", "cost"] {
         let (colour, coverage) = picture(&[("overlay", overlay)]);

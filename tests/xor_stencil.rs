@@ -37,16 +37,8 @@ fn settings(fill: FillRule, samples: u32, passes: u32) -> Settings {
     }
 }
 
-fn render_with(method: &mut dyn Method, scene: &Scene, camera: &Camera) -> CoverageImage {
-    let gpu = gpu();
-    method.prepare(gpu, scene).unwrap();
-    let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
-    render_frame(gpu, method, &target, camera).unwrap();
-    target.readback(gpu).unwrap()
-}
-
 fn render(scene: &Scene, camera: &Camera, settings: Settings) -> CoverageImage {
-    render_with(&mut XorStencil::with_settings(settings), scene, camera)
+    common::render(&mut XorStencil::with_settings(settings), scene, camera)
 }
 
 /// Where the frame samples each pixel, relative to its corner: the Vulkan / D3D
@@ -400,14 +392,10 @@ fn default_settings_beat_skia_1x() {
 fn wireframe_overlay_draws_both_kinds_and_keeps_coverage() {
     let scene = Scene::from_text(&Font::shipped(0), "g@").unwrap();
     let camera = framed(&scene, 60.0, UPRIGHT, DVec2::new(0.5, 0.25));
-    let gpu = gpu();
     let params = [("overlay".to_string(), "wireframe".to_string())];
     let mut method = registry::create("xor-stencil", &params).unwrap();
     assert_eq!(method.overlays(), &[Overlay::TriangleWireframe]);
-    let with_overlay = render_with(method.as_mut(), &scene, &camera);
-    let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
-    render_frame(gpu, method.as_mut(), &target, &camera).unwrap();
-    let picture = target.readback_color(gpu).unwrap();
+    let (with_overlay, picture) = render_with_picture(method.as_mut(), &scene, &camera);
     let plain = render(&scene, &camera, Settings::default());
     assert_eq!(with_overlay, plain, "the overlay changed coverage");
     // Fan lines are blue, curve-triangle lines orange; coverage shows in grey.

@@ -12,8 +12,7 @@ use web_time::Instant;
 
 use eframe::egui;
 
-use super::Explorer;
-use super::gpu_view::{self, ReferenceTexture, lock};
+use super::gpu_view::ReferenceTexture;
 use super::settings::CameraSettings;
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
@@ -201,65 +200,6 @@ pub struct ReferenceState {
     pub made_for: Option<(u64, Camera)>,
     pub cpu_ms: Option<f64>,
     pub problem: Option<String>,
-}
-
-impl Explorer {
-    /// Takes in an answer of the worker: the reference, and each pane's numbers.
-    pub(super) fn take_analysis(&mut self, outcome: Outcome) {
-        // Results for a pane whose method was remade meanwhile belong to the old one.
-        let current = |pane: usize| {
-            lock(&self.panes[pane].surface).generation == outcome.pane_generations[pane]
-        };
-        let errors: Vec<_> = outcome
-            .errors
-            .into_iter()
-            .filter(|(p, _)| current(*p))
-            .collect();
-        let curves: Vec<_> = outcome
-            .curves
-            .into_iter()
-            .filter(|(p, _)| current(*p))
-            .collect();
-        let temporal: Vec<_> = outcome
-            .temporal
-            .iter()
-            .copied()
-            .filter(|(p, _)| current(*p))
-            .collect();
-        let mut frame_errors = Vec::new();
-        for (pane, result) in errors {
-            match result {
-                Ok(stats) => {
-                    self.panes[pane].error = Some((outcome.camera, stats));
-                    frame_errors.push((pane, stats));
-                }
-                Err(e) => self.panes[pane].problem = Some(e),
-            }
-        }
-        for (pane, result) in curves {
-            match result {
-                Ok(cost) => self.panes[pane].curves = cost.map(|c| (outcome.camera, c)),
-                Err(e) => self.panes[pane].problem = Some(e),
-            }
-        }
-        if let Some(ms) = outcome.reference_ms {
-            self.reference.cpu_ms = Some(ms);
-        }
-        match outcome.reference {
-            Ok(image) => {
-                self.reference.problem = None;
-                if let Some((gpu, _)) = &self.gpu {
-                    gpu_view::upload_reference(gpu, &self.reference.texture, &image);
-                }
-                self.reference.image = Some(image);
-                self.reference.made_for = Some((outcome.scene_generation, outcome.camera));
-                if let Some(frame) = outcome.motion_frame {
-                    self.record_motion_frame(frame, &frame_errors, &temporal);
-                }
-            }
-            Err(e) => self.reference.problem = Some(e),
-        }
-    }
 }
 
 fn analyse(request: &Request, last: &mut Option<(u64, Camera, Arc<CoverageImage>)>) -> Outcome {

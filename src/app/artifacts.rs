@@ -5,10 +5,11 @@
 
 use eframe::egui;
 
-use super::Explorer;
+use super::explorer::Explorer;
 use super::gpu_view::lock;
 use super::panes::{REFERENCE, pane_letter};
-use super::settings::{CameraSettings, PaneSource, SceneSettings};
+use super::settings::PaneSource;
+use super::state::{ArtifactSearch, Artifacts, Then, WorstPixelRequest};
 use crate::camera::Camera;
 use crate::gpu::{CoverageTarget, PendingReadback};
 use crate::methods::frame;
@@ -21,51 +22,6 @@ pub const ARTIFACT_THRESHOLD: f64 = 0.25;
 
 /// The magnification the worst pixel is shown at when the view is not magnified yet.
 const ARTIFACT_MAGNIFY: u32 = 16;
-
-/// The view a worst-pixel request was made for.
-pub struct WorstPixelRequest {
-    camera: CameraSettings,
-    scene: SceneSettings,
-}
-
-/// A search for a pane's artifacts under way: its method drawn into a frame of its own,
-/// read back without waiting (`PendingReadback`), then compared with the reference on
-/// a later frame; and what to do with the answer.
-pub struct ArtifactSearch {
-    pane: usize,
-    camera: Camera,
-    then: Then,
-    /// What it was started for: an answer for a view changed since is dropped.
-    source: PaneSource,
-    scene_generation: u64,
-    settings_camera: CameraSettings,
-    readback: PendingReadback,
-}
-
-/// What a search is for.
-#[derive(Clone, Copy)]
-enum Then {
-    /// A case's frame larger than the pane: move the pane's window onto the frame's
-    /// worst pixel, then go to the worst pixel as `Step(None)` does.
-    BringCaseWorst,
-    /// Go to the worst pixel (None) or step on from the one `shown` (Some(forward)).
-    Step(Option<bool>, Option<(u32, u32)>),
-}
-
-/// One pane's pixels over the threshold, and the one shown.
-pub struct Artifacts {
-    pane: usize,
-    /// What they were worked out for: the pane's source, the scene, the ×1 camera.
-    source: PaneSource,
-    scene_generation: u64,
-    camera: Camera,
-    pixels: Vec<PixelError>,
-    /// The worst pixel, over the threshold or not.
-    worst: PixelError,
-    current: usize,
-    /// Worked out anew with the pixel shown before still among them, at `current`.
-    found_again: bool,
-}
 
 impl Explorer {
     /// Centres the magnifier on the worst pixel of the hovered pane (else pane A).

@@ -7,7 +7,7 @@ use std::time::Duration;
 
 use eframe::egui;
 
-use super::Explorer;
+use super::explorer::Explorer;
 use super::gpu_view::Source;
 use super::panes::{REFERENCE, pane_letter};
 use super::settings::PaneSource;
@@ -17,13 +17,6 @@ const AUTO_FLIPS_PER_S: f64 = 3.0;
 
 /// The pane that blinks.
 pub const BLINKING_PANE: usize = 0;
-
-/// Whether pane A shows the other rendering now, and whether it flips on its own.
-#[derive(Default)]
-pub struct Blink {
-    flipped: bool,
-    auto: bool,
-}
 
 impl Explorer {
     /// Flips pane A to the other rendering or back (and stops blinking on its own).

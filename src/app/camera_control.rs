@@ -4,18 +4,13 @@
 
 use glam::{DMat2, DVec2};
 
-use super::settings::{CameraSettings, CaseFrame};
-use crate::camera::{Camera, Crop};
+use super::settings::{CameraSettings, CaseFrame, MIN_SIZE_PX_PER_EM};
+use crate::camera::{Camera, Crop, MAX_SIZE_PX_PER_EM};
 use crate::geometry::project;
 use crate::magnify::{MAX_FACTOR, Window};
 use crate::motion::MotionPath;
 use crate::scene::Scene;
 
-/// The zoom range the explorer offers, px/em.
-pub const MIN_SIZE_PX_PER_EM: f64 = 0.1;
-pub const MAX_SIZE_PX_PER_EM: f64 = 100_000.0;
-/// Tilt beyond this puts most scenes partly behind the eye.
-pub const MAX_TILT_DEG: f64 = 75.0;
 /// Space left around the text when the view is fitted to it, pixels.
 const FIT_MARGIN_PX: f64 = 16.0;
 

@@ -8,17 +8,18 @@ use std::sync::Arc;
 use eframe::egui;
 use glam::DVec2;
 
-use super::Explorer;
 use super::analysis::Request;
 use super::blink::BLINKING_PANE;
 use super::display::{CoverageAdjust, DisplayMode};
+use super::explorer::Explorer;
 use super::gpu_view::{CompositeMode, PanePaint, Source, lock};
 use super::outline_painter::{self, Style};
 use super::panes::{REFERENCE, pane_letter, subtrahend_label};
-use super::settings::{Layout, PaneOverlay, PaneSource};
+use super::settings::{PaneOverlay, PaneSource};
+use super::state::{CanvasKey, Reading};
 use crate::camera::Camera;
 use crate::gpu::shaders::COST_SCALE_CURVES;
-use crate::magnify::{VALUES_FROM, Window, block_labels};
+use crate::magnify::{VALUES_FROM, block_labels};
 use crate::methods::params::assignments;
 use crate::methods::{Overlay, registry};
 
@@ -29,61 +30,9 @@ const WHEEL_ZOOM_PER_POINT: f64 = 0.004;
 /// Seconds the view must stay still before the reference and the errors are worked out.
 const REST_SECONDS: f64 = 0.25;
 
-/// When the view fits the text to the panes by itself: when the layout or the text
-/// changes — the text once its field is left, not at each key — and on a first start,
-/// which opens on small text magnified on an artifact instead (see [`OPENING`]).
-#[derive(Default)]
-pub struct AutoFit {
-    pub pending: bool,
-    /// The first start's opening view is still to be placed.
-    pub opening: bool,
-    layout: Option<Layout>,
-    text: Option<String>,
-}
-
 /// The first start's view: the text at a size where methods differ visibly
 /// (px/em), its top-left at the margin, magnified (×N) on pane A's worst pixel.
 pub const OPENING: (f64, u32) = (12.0, 8);
-
-/// What the view shows; when it stops changing, the view is at rest.
-#[derive(Clone, Debug, PartialEq)]
-pub struct CanvasKey {
-    camera: Camera,
-    scene: u64,
-    panes: Vec<(u64, bool)>,
-}
-
-/// The read-backs of a view at rest, one per pane drawing a method.
-struct Reading {
-    key: CanvasKey,
-    pending: Vec<(usize, crate::gpu::PendingReadback)>,
-}
-
-/// The pane layout and hover of the last frame.
-#[derive(Default)]
-pub struct CanvasState {
-    /// The camera every pane shares this frame (its size: one pane, in pixels, or the
-    /// magnifier's window of it).
-    pub camera: Option<Camera>,
-    /// The pixels of the ×1 pane that camera draws, and their magnification.
-    pub window: Option<Window>,
-    /// One pane's size in pixels, unmagnified.
-    pub pane_size: Option<(u32, u32)>,
-    /// The wheel's scroll action began with Alt: what egui still smooths out of it is
-    /// the magnifier's, not a zoom.
-    magnifying_scroll: bool,
-    pub key: Option<CanvasKey>,
-    changed_at: f64,
-    pub analysed: Option<CanvasKey>,
-    /// The panes' read-backs under way for a view at rest.
-    reading: Option<Reading>,
-    /// Pane index and pixel under the pointer.
-    pub hovered: Option<(usize, u32, u32)>,
-    /// Notes to show, per pane.
-    notes: Vec<String>,
-    /// Where the visible panes are, in points.
-    pub rects: Vec<egui::Rect>,
-}
 
 impl Explorer {
     pub(super) fn show_canvas(&mut self, ui: &mut egui::Ui) {

@@ -6,24 +6,12 @@
 
 use eframe::egui;
 
-use super::Explorer;
-use super::settings::{CameraSettings, PANES, SceneSettings};
-use crate::named_views::{self, NamedView, Source};
+use super::explorer::Explorer;
+use super::settings::CameraSettings;
+use crate::named_views::{self, Source};
 
 /// A loaded case's magnification: the first at which each pixel's value is written.
 pub const VALUES_MAGNIFY: u32 = crate::magnify::VALUES_FROM;
-
-/// The menu's list, and what a loaded case is waiting for.
-#[derive(Default)]
-pub struct CasesMenu {
-    /// Listed on the menu's first opening (building every case's scene takes a moment).
-    views: Option<Vec<NamedView>>,
-    /// The scene settings a case was loaded over: changing the font, text or glyph
-    /// leaves the case.
-    loaded_over: Option<SceneSettings>,
-    /// Each pane's outline switch before a case turned them on, restored on leaving.
-    outlines_before: Option<[bool; PANES]>,
-}
 
 impl Explorer {
     /// The menu button and its list, hard cases first.

@@ -3,16 +3,28 @@
 
 use eframe::egui;
 
-use super::Explorer;
-use super::camera_control::{MAX_SIZE_PX_PER_EM, MAX_TILT_DEG, MIN_SIZE_PX_PER_EM};
 use super::display::{Darkening, DisplayMode};
+use super::explorer::Explorer;
 use super::panes::{REFERENCE, pane_controls, pane_letter};
-use super::settings::{FontChoice, Layout, PaneSource};
+use super::settings::{FontChoice, Layout, MAX_TILT_DEG, MIN_SIZE_PX_PER_EM, PaneSource};
 use super::shortcuts::{Action, SHORTCUTS, key_name};
+use crate::camera::MAX_SIZE_PX_PER_EM;
 use crate::font::SHIPPED_FONTS;
 use crate::magnify::MAX_FACTOR;
 
 impl Explorer {
+    /// "Open font…": the dialog on the desktop, the browser's file picker on the page.
+    pub(super) fn ask_for_font(&mut self) {
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            self.font_dialog.open = true;
+        }
+        #[cfg(target_arch = "wasm32")]
+        if let Err(e) = super::web::pick_font() {
+            self.set_status(e);
+        }
+    }
+
     pub(super) fn controls(&mut self, ui: &mut egui::Ui) {
         ui.horizontal(|ui| {
             ui.heading("Scene");

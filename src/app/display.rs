@@ -4,8 +4,16 @@
 
 use serde::{Deserialize, Serialize};
 
-/// The compositor's WGSL, whose `display_color` a test runs against this module's.
-pub use super::gpu_view::composite_wgsl;
+/// The compositor's WGSL (`composite.wgsl`, the shared heat scale first), whose
+/// `display_color` a test runs against this module's.
+pub fn composite_wgsl() -> String {
+    crate::gpu::shaders::Shader {
+        file: "composite.wgsl",
+        files: &["composite.wgsl"],
+        body: include_str!("composite.wgsl"),
+    }
+    .source()
+}
 
 /// How coverage weights the text colour over the background.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]

@@ -8,9 +8,6 @@ use std::path::{Path, PathBuf};
 
 use eframe::egui;
 
-use super::Explorer;
-use super::settings::{FontBytes, FontChoice};
-
 pub struct FontDialog {
     pub open: bool,
     /// The path typed or picked: a font file, or a folder to list.
@@ -23,57 +20,6 @@ impl Default for FontDialog {
         FontDialog {
             open: false,
             path: start.display().to_string(),
-        }
-    }
-}
-
-impl Explorer {
-    /// Opens a font file, as the font dialog and a file drop do.
-    pub fn open_font(&mut self, path: PathBuf) {
-        self.settings.scene.font = FontChoice::File(path);
-        self.settings.scene.variations.clear();
-    }
-
-    /// Opens a font given as bytes (the web page's file picker, a file dropped on the
-    /// page), named `name`.
-    pub fn open_font_bytes(&mut self, name: String, bytes: std::sync::Arc<[u8]>) {
-        if !is_font_file(Path::new(&name)) {
-            self.set_status(format!("'{name}' is not a .ttf/.otf font"));
-            return;
-        }
-        self.settings.scene.font = FontChoice::Opened {
-            name,
-            bytes: FontBytes(bytes),
-        };
-        self.settings.scene.variations.clear();
-    }
-
-    /// "Open font…": the dialog on the desktop, the browser's file picker on the page.
-    pub(super) fn ask_for_font(&mut self) {
-        #[cfg(not(target_arch = "wasm32"))]
-        {
-            self.font_dialog.open = true;
-        }
-        #[cfg(target_arch = "wasm32")]
-        if let Err(e) = super::web::pick_font() {
-            self.set_status(e);
-        }
-    }
-
-    /// A file dropped on the desktop window. (On the web page the page itself reads a
-    /// dropped file, which egui would hand over only as a future, and passes its bytes
-    /// to `open_font_bytes`.)
-    pub(super) fn take_dropped_files(&mut self, ctx: &egui::Context) {
-        if cfg!(target_arch = "wasm32") {
-            return;
-        }
-        let dropped = ctx.input(|i| i.raw.dropped_files.first().map(|f| f.path().to_path_buf()));
-        if let Some(path) = dropped {
-            if is_font_file(&path) {
-                self.open_font(path);
-            } else {
-                self.set_status(format!("'{}' is not a .ttf/.otf font", path.display()));
-            }
         }
     }
 }

@@ -11,7 +11,7 @@ use std::sync::{Arc, Mutex, MutexGuard};
 use eframe::egui;
 use egui_wgpu::wgpu;
 
-use super::display::{CoverageAdjust, DisplayMode};
+use super::display::{CoverageAdjust, DisplayMode, composite_wgsl};
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
 use crate::gpu::timing::{Timestamps, intervals_ms};
@@ -59,16 +59,6 @@ pub struct Compositor {
     /// Bound where a mode reads no second texture.
     blank: wgpu::TextureView,
     srgb_target: bool,
-}
-
-/// The compositor's source: the shared heat scale first, then the pane shader.
-pub fn composite_wgsl() -> String {
-    crate::gpu::shaders::Shader {
-        file: "composite.wgsl",
-        files: &["composite.wgsl"],
-        body: include_str!("composite.wgsl"),
-    }
-    .source()
 }
 
 impl Compositor {

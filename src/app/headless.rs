@@ -8,7 +8,7 @@ use web_time::Instant;
 use eframe::egui;
 use egui_wgpu::wgpu;
 
-use super::Explorer;
+use super::explorer::Explorer;
 use super::settings::Settings;
 use crate::Error;
 use crate::gpu::GpuContext;

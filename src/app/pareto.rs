@@ -10,7 +10,6 @@ use std::sync::mpsc::{Receiver, channel};
 use eframe::egui;
 use egui_plot::{Legend, Line, MarkerShape, Plot, PlotPoints, Points};
 
-use super::Explorer;
 use super::panes::Catalog;
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
@@ -25,32 +24,6 @@ use crate::scene::Scene;
 /// Frames timed per combination, after untimed warm-up frames (shaders compile lazily).
 const WARMUP_FRAMES: usize = 3;
 const TIMED_FRAMES: usize = 9;
-
-impl Explorer {
-    pub fn sweep_points(&self) -> &[ParetoPoint] {
-        &self.sweep.points
-    }
-
-    pub fn sweep_running(&self) -> bool {
-        self.sweep.running()
-    }
-
-    /// The combinations the last sweep could not measure, each with its reason.
-    pub fn sweep_problems(&self) -> &[String] {
-        &self.sweep.problems
-    }
-
-    /// Starts the speed-vs-error sweep on the current scene and view and opens its window.
-    pub fn start_sweep(&mut self, ctx: &egui::Context) {
-        self.sweep.open = true;
-        if let (Some((gpu, _)), Some(scene), Some(camera)) =
-            (&self.gpu, self.scene.scene(), self.canvas.camera)
-        {
-            self.sweep
-                .start(ctx, gpu, &self.catalog, scene.clone(), camera);
-        }
-    }
-}
 
 /// One measured combination.
 #[derive(Clone, Debug)]

@@ -11,11 +11,12 @@ use std::collections::BTreeMap;
 use eframe::egui;
 use egui_plot::{Legend, Line, Plot, PlotPoints};
 
-use super::Explorer;
 use super::analysis::MotionKey;
+use super::explorer::Explorer;
 use super::panes::pane_letter;
-use super::settings::{PaneSettings, PaneSource};
+use super::settings::PaneSource;
 use super::shortcuts::{Action, key_name};
+use super::state::{ChartKey, FramePoint, PixelHistory, PixelSample};
 use crate::camera::Camera;
 use crate::magnify::Window;
 use crate::metrics::{ErrorStats, TemporalError};
@@ -33,90 +34,6 @@ const PRESETS: &[(&str, &str)] = &[
     ("sway the tilt ±20°", "sway:20,64"),
     ("drift and turn", "drift:0.0625,0+rotate:0.1"),
 ];
-
-/// A pane's figures in one frame.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct FramePoint {
-    /// Against the reference's frame, 1/255.
-    pub mae_255: f64,
-    /// Against the frame before (none for the first frame analysed, or after a jump).
-    pub temporal: Option<TemporalError>,
-}
-
-/// The inspected pixel in one frame: each visible pane's coverage (none for a pane
-/// without a capture) and the reference's.
-#[derive(Clone, Debug, PartialEq)]
-pub struct PixelSample {
-    pub panes: Vec<Option<f32>>,
-    pub reference: f32,
-}
-
-/// The inspected pixel (in the panes' drawn pixels) and its samples by frame.
-pub type PixelHistory = ((u32, u32), Vec<(i64, PixelSample)>);
-
-/// What the charts are of: a change of any of it starts them afresh.
-#[derive(Clone, Debug, PartialEq)]
-struct ChartKey {
-    scene: u64,
-    motion: Option<MotionKey>,
-    panes: Vec<PaneSettings>,
-}
-
-#[derive(Default)]
-pub struct Playback {
-    /// The frame shown; 0 is the camera the controls set.
-    pub frame: i64,
-    pub playing: bool,
-    /// The frame was changed by the transport: analyse it at once, not after the view
-    /// has rested.
-    pub stepped: bool,
-    /// The charts' window is open.
-    pub charts_open: bool,
-    history: Vec<BTreeMap<i64, FramePoint>>,
-    /// The inspected pixel (in the panes' drawn pixels) and its samples.
-    pixel: Option<((u32, u32), BTreeMap<i64, PixelSample>)>,
-    chart_key: Option<ChartKey>,
-    /// Why playback stopped by itself.
-    pub stopped: Option<String>,
-}
-
-impl Playback {
-    /// The path of `text` and the frame, when the text is a path that moves.
-    pub fn motion(&self, text: &str) -> Option<(MotionPath, i64)> {
-        MotionPath::parse(text)
-            .ok()
-            .filter(|p| !p.is_still())
-            .map(|p| (p, self.frame))
-    }
-
-    /// Pane `index`'s points, by frame.
-    pub fn history(&self, index: usize) -> Vec<(i64, FramePoint)> {
-        self.history
-            .get(index)
-            .map(|h| h.iter().map(|(&n, &p)| (n, p)).collect())
-            .unwrap_or_default()
-    }
-
-    /// The inspected pixel and its samples, by frame.
-    pub fn pixel_history(&self) -> Option<PixelHistory> {
-        let (pixel, samples) = self.pixel.as_ref()?;
-        Some((
-            *pixel,
-            samples.iter().map(|(&n, s)| (n, s.clone())).collect(),
-        ))
-    }
-
-    fn step(&mut self, by: i64) {
-        self.frame += by;
-        self.stepped = true;
-        self.stopped = None;
-    }
-
-    fn clear(&mut self) {
-        self.history.clear();
-        self.pixel = None;
-    }
-}
 
 /// "A atlas": a pane's letter and its method; none for a difference pane, which has no
 /// coverage of its own to chart.

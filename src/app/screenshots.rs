@@ -9,14 +9,14 @@ use web_time::Instant;
 
 use eframe::egui;
 
-use super::Explorer;
+use super::explorer::Explorer;
 use super::headless::Headless;
 use super::panes::{Catalog, REFERENCE};
 use super::settings::{Layout, PaneOverlay, PaneSettings, PaneSource, Settings};
 use crate::Error;
 use crate::methods::info::Role;
 use crate::methods::registry;
-use crate::methods::{Overlay, sdf_cells};
+use crate::methods::{Overlay, sdf_cells, winding};
 
 /// Screen size of every screenshot, pixels.
 const WIDTH: u32 = 1400;
@@ -119,7 +119,9 @@ pub enum Then {
 const MICROSCOPE_CASE: &str = "tip-on-arc";
 
 /// sdf-cells beside its own error against the reference, for a loaded case: coverage
-/// and error written in each magnified pixel, the exact outline over both.
+/// and error written in each magnified pixel, the exact outline over both. Its caption
+/// in README and docs/explorer.md says what sdf-cells gets wrong on this case, so
+/// sdf-cells is picked by its row, not by a role.
 fn microscope() -> Settings {
     let mut settings = Settings::default();
     settings.panes[0] = PaneSettings::method(sdf_cells::INFO.name);
@@ -166,8 +168,10 @@ fn methods_side_by_side(catalog: &Catalog) -> Settings {
     settings
 }
 
-/// The atlas beside winding, magnified ×16 on small text drifting 1/16 px a frame: the
-/// atlas's phases against an exact method, with the charts of both.
+/// The baseline (the atlas) beside winding, magnified ×16 on small text drifting 1/16
+/// px a frame: the atlas's phases against an exact method, with the charts of both. Its
+/// captions in docs/motion.md and docs/explorer.md name winding, so winding is picked
+/// by its row, not by a role.
 fn atlas_beside_winding_in_motion() -> Settings {
     let mut settings = Settings {
         layout: Layout::SideBySide,
@@ -175,8 +179,8 @@ fn atlas_beside_winding_in_motion() -> Settings {
         ..Settings::default()
     };
     settings.scene.text = "Hamburgefonstiv".into();
-    settings.panes[0] = PaneSettings::method(crate::methods::atlas::NAME);
-    settings.panes[1] = PaneSettings::method(crate::methods::winding::INFO.name);
+    settings.panes[0] = PaneSettings::method(registry::baseline().name);
+    settings.panes[1] = PaneSettings::method(winding::INFO.name);
     settings.camera.size_px_per_em = 12.0;
     // Near the pane's top edge, so that the magnified window starts there and the text
     // stays clear of the Motion window below it.

@@ -7,8 +7,8 @@ use std::sync::Arc;
 
 use serde::{Deserialize, Serialize};
 
-use super::camera_control::{MAX_SIZE_PX_PER_EM, MAX_TILT_DEG, MIN_SIZE_PX_PER_EM};
 use super::display::{Darkening, DisplayMode};
+use crate::camera::MAX_SIZE_PX_PER_EM;
 use crate::font::SHIPPED_FONTS;
 use crate::methods::{registry, sdf_cells, winding};
 
@@ -26,6 +26,12 @@ pub const DEFAULT_MOTION_PATH: &str = crate::motion::DRIFT_X;
 
 /// Panes there are room for; the layout shows the first 1, 2 or 4.
 pub const PANES: usize = 4;
+
+/// The smallest size the explorer zooms out to, px/em; it zooms in as far as the render
+/// core accepts ([`MAX_SIZE_PX_PER_EM`]).
+pub const MIN_SIZE_PX_PER_EM: f64 = 0.1;
+/// Tilt beyond this puts most scenes partly behind the eye.
+pub const MAX_TILT_DEG: f64 = 75.0;
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
@@ -58,7 +64,9 @@ impl Default for Settings {
             layout: Layout::SideBySide,
             // Pane A is a method with visible artifacts at small sizes (the first start
             // opens on one), beside the reference; then the near-exact winding, and A's
-            // signed difference from the reference.
+            // signed difference from the reference. No row says "shows artifacts" or
+            // "near-exact", so the two are picked by their rows (`INFO.name`, never a
+            // string): removing either method stops the build here.
             panes: [
                 PaneSettings::method(sdf_cells::INFO.name),
                 PaneSettings::method(registry::REFERENCE.name),

@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use eframe::egui::{self, Key, KeyboardShortcut, Modifiers};
 use glam::DVec2;
 
-use super::Explorer;
+use super::explorer::Explorer;
 use super::panes::REFERENCE;
 use super::settings::{Layout, PaneOverlay, PaneSource};
 

@@ -17,9 +17,10 @@ use std::sync::Arc;
 use eframe::egui;
 use wasm_bindgen::prelude::*;
 
-use super::Explorer;
+use super::explorer::Explorer;
 use super::panes::pane_letter;
 use super::settings::PaneSource;
+use super::state::CanvasKey;
 use crate::gpu::GpuContext;
 
 /// The page's handle on the explorer.
@@ -143,87 +144,90 @@ struct Shown {
     link: Option<String>,
     status: String,
     /// The view at rest and the link `data-view` was written for.
-    view: Option<(super::canvas::CanvasKey, Option<String>)>,
+    view: Option<(CanvasKey, Option<String>)>,
 }
 
 thread_local! {
     static SHOWN: RefCell<Shown> = RefCell::new(Shown::default());
 }
 
-/// After each frame: the title ends in `· ready` once every pane drawing a method has
-/// drawn the view (what a driver waits for); the fragment follows the view; the body's
-/// `data-status` and `data-view` follow the status line and the view at rest.
-pub(super) fn after_frame(app: &Explorer) {
-    let Some(window) = web_sys::window() else {
-        return;
-    };
-    let (Some(document), Some(body)) =
-        (window.document(), window.document().and_then(|d| d.body()))
-    else {
-        return;
-    };
-    SHOWN.with_borrow_mut(|shown| {
-        if !shown.ready && app.panes_drawn() {
-            shown.ready = true;
-            document.set_title("glyphscope · ready");
-        }
-        let status = app.status_text();
-        if status != shown.status {
-            body.set_attribute("data-status", &status).ok();
-            shown.status = status;
-        }
-        if !app.settled() {
+impl Explorer {
+    /// After each frame: the title ends in `· ready` once every pane drawing a method has
+    /// drawn the view (what a driver waits for); the fragment follows the view; the body's
+    /// `data-status` and `data-view` follow the status line and the view at rest.
+    pub(super) fn after_frame_on_the_page(&self) {
+        let app = self;
+        let Some(window) = web_sys::window() else {
             return;
-        }
-        // The address follows the view once it rests: during a drag, a zoom or a play
-        // the link changes every frame, and browsers throttle history updates that
-        // often. A view that cannot travel in a link (a font from this computer) leaves
-        // the address without a fragment rather than with a stale one.
-        let link = app.link().ok();
-        if link != shown.link {
-            let address = link
-                .clone()
-                .unwrap_or_else(|| window.location().pathname().unwrap_or_else(|_| "/".into()));
-            if let Ok(history) = window.history() {
-                history
-                    .replace_state_with_url(&JsValue::NULL, "", Some(&address))
-                    .ok();
-            }
-            shown.link = link;
-        }
-        // Written again when the view at rest changes, or only its link does (an
-        // outline switched on changes no pixel a pane reads back).
-        let rested = app
-            .canvas
-            .analysed
-            .clone()
-            .map(|key| (key, shown.link.clone()));
-        if rested == shown.view {
-            return;
-        }
-        let visible = app.settings.layout.panes();
-        let captures: Vec<_> = (0..visible)
-            .filter_map(|i| app.pane_capture(i).map(|c| (i, c)))
-            .collect();
-        let numbers = ViewNumbers {
-            link: shown.link.clone().unwrap_or_default(),
-            window: app.magnified_window(),
-            panes: captures
-                .iter()
-                .filter_map(|(i, image)| match &app.settings.panes[*i].source {
-                    PaneSource::Method { name, .. } => Some((
-                        pane_letter(*i).to_string(),
-                        name.clone(),
-                        image.data.clone(),
-                    )),
-                    _ => None,
-                })
-                .collect(),
-            reference: app.reference_image().map(|r| r.data.clone()),
         };
-        if let Ok(json) = serde_json::to_string(&numbers) {
-            body.set_attribute("data-view", &json).ok();
-            shown.view = rested;
-        }
-    });
+        let (Some(document), Some(body)) =
+            (window.document(), window.document().and_then(|d| d.body()))
+        else {
+            return;
+        };
+        SHOWN.with_borrow_mut(|shown| {
+            if !shown.ready && app.panes_drawn() {
+                shown.ready = true;
+                document.set_title("glyphscope · ready");
+            }
+            let status = app.status_text();
+            if status != shown.status {
+                body.set_attribute("data-status", &status).ok();
+                shown.status = status;
+            }
+            if !app.settled() {
+                return;
+            }
+            // The address follows the view once it rests: during a drag, a zoom or a play
+            // the link changes every frame, and browsers throttle history updates that
+            // often. A view that cannot travel in a link (a font from this computer) leaves
+            // the address without a fragment rather than with a stale one.
+            let link = app.link().ok();
+            if link != shown.link {
+                let address = link
+                    .clone()
+                    .unwrap_or_else(|| window.location().pathname().unwrap_or_else(|_| "/".into()));
+                if let Ok(history) = window.history() {
+                    history
+                        .replace_state_with_url(&JsValue::NULL, "", Some(&address))
+                        .ok();
+                }
+                shown.link = link;
+            }
+            // Written again when the view at rest changes, or only its link does (an
+            // outline switched on changes no pixel a pane reads back).
+            let rested = app
+                .canvas
+                .analysed
+                .clone()
+                .map(|key| (key, shown.link.clone()));
+            if rested == shown.view {
+                return;
+            }
+            let visible = app.settings.layout.panes();
+            let captures: Vec<_> = (0..visible)
+                .filter_map(|i| app.pane_capture(i).map(|c| (i, c)))
+                .collect();
+            let numbers = ViewNumbers {
+                link: shown.link.clone().unwrap_or_default(),
+                window: app.magnified_window(),
+                panes: captures
+                    .iter()
+                    .filter_map(|(i, image)| match &app.settings.panes[*i].source {
+                        PaneSource::Method { name, .. } => Some((
+                            pane_letter(*i).to_string(),
+                            name.clone(),
+                            image.data.clone(),
+                        )),
+                        _ => None,
+                    })
+                    .collect(),
+                reference: app.reference_image().map(|r| r.data.clone()),
+            };
+            if let Ok(json) = serde_json::to_string(&numbers) {
+                body.set_attribute("data-view", &json).ok();
+                shown.view = rested;
+            }
+        });
+    }
 }

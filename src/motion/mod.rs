@@ -22,6 +22,7 @@ pub const DRIFT_30: &str = "drift:0.05412658773652741,-0.03125";
 /// A quarter of a degree a frame about the image's centre.
 pub const TURN: &str = "rotate:0.25";
 
+pub mod command;
 pub mod report;
 pub mod run;
 

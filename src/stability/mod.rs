@@ -4,7 +4,9 @@
 //! and writes.
 
 pub mod claims;
+pub mod command;
 pub mod hard_cases;
+pub mod outcome;
 pub mod sweep;
 pub mod temporal;
 pub mod worst_cameras;
@@ -17,7 +19,7 @@ use crate::methods::info::MARGIN;
 use crate::metrics;
 use claims::Variant;
 use hard_cases::HardCase;
-use sweep::Outcome;
+use outcome::Outcome;
 
 /// The cases called `names` (all when None), or an input error naming the unknown one.
 pub fn select_cases(names: Option<&[String]>) -> Result<Vec<HardCase>, Error> {
@@ -304,7 +306,7 @@ pub fn write_report(
 mod tests {
     use super::*;
     use crate::methods::info::within;
-    use sweep::Worst;
+    use outcome::Worst;
 
     fn outcome(max: f64, bound: Option<f64>) -> Outcome {
         Outcome {

@@ -18,9 +18,6 @@ use crate::motion::run::{self, MethodSpec};
 
 /// 1/16 px a frame along 30°: between every sub-pixel phase, across rows and columns.
 pub const PATH: &str = crate::motion::DRIFT_30;
-/// Frames per case: 16, 8 with `--quick`.
-pub const FRAMES: usize = 16;
-pub const QUICK_FRAMES: usize = 8;
 
 /// One variant's temporal error on one case.
 #[derive(Clone, Debug, Serialize)]

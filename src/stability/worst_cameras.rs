@@ -10,7 +10,7 @@
 use std::fmt::Write as _;
 use std::sync::OnceLock;
 
-use super::sweep::Outcome;
+use super::outcome::Outcome;
 
 /// The shipped file, as the full sweep last wrote it.
 const SHIPPED_CSV: &str = include_str!("../../data/worst-cameras.csv");

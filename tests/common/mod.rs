@@ -1,13 +1,18 @@
 //! Helpers shared by the integration tests: synthetic outlines and scenes laid out so
-//! that one font unit is one pixel, cameras that frame a scene, the GPU.
+//! that one font unit is one pixel, cameras that frame a scene, the GPU, a method's
+//! frame drawn on it, and the binary as a user runs it (`binary`).
 #![allow(dead_code, unused_imports)] // each test binary uses its own subset
+
+pub mod binary;
 
 use std::sync::OnceLock;
 
 use glam::DVec2;
 use glyphscope::camera::Camera;
+use glyphscope::coverage::CoverageImage;
 use glyphscope::geometry::Outline;
-use glyphscope::gpu::GpuContext;
+use glyphscope::gpu::{CoverageTarget, GpuContext};
+use glyphscope::methods::{Method, frame};
 use glyphscope::scene::Scene;
 /// A scene holding an outline once at the origin, where 1 font unit = 1 px.
 pub use glyphscope::stability::hard_cases::synthetic_scene as single;
@@ -19,6 +24,29 @@ pub use glyphscope::stability::hard_cases::{polygon, rect};
 pub fn gpu() -> &'static GpuContext {
     static GPU: OnceLock<GpuContext> = OnceLock::new();
     GPU.get_or_init(|| GpuContext::new().unwrap_or_else(|e| panic!("{e}")))
+}
+
+/// `method` prepared for `scene` and drawn through `camera` on the shared GPU: its
+/// coverage, read back.
+pub fn render(method: &mut dyn Method, scene: &Scene, camera: &Camera) -> CoverageImage {
+    method.prepare(gpu(), scene).unwrap();
+    frame::render_image(gpu(), method, camera).unwrap()
+}
+
+/// As [`render`], with the frame's overlay picture (rgb) read back beside the coverage.
+pub fn render_with_picture(
+    method: &mut dyn Method,
+    scene: &Scene,
+    camera: &Camera,
+) -> (CoverageImage, image::RgbImage) {
+    let gpu = gpu();
+    method.prepare(gpu, scene).unwrap();
+    let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
+    frame::render_frame(gpu, method, &target, camera).unwrap();
+    (
+        target.readback(gpu).unwrap(),
+        target.readback_color(gpu).unwrap(),
+    )
 }
 
 /// An outline of several polygons.
