@@ -142,6 +142,14 @@ fn absolute(module: &[String], path: &[String]) -> Option<Vec<String>> {
     }
 }
 
+/// The tree of a `use` statement (`pub` or not), None for any other statement.
+fn use_tree(statement: &str) -> Option<&str> {
+    statement
+        .strip_prefix("pub use ")
+        .or_else(|| statement.strip_prefix("pub(crate) use "))
+        .or_else(|| statement.strip_prefix("use "))
+}
+
 /// The crate paths the code of `source` uses, as absolute module paths seen from the
 /// module `module` (`["methods", "winding"]` for `methods/winding/mod.rs`): every `use`
 /// statement's tree, nested groups and line breaks included, and every `crate::…`
@@ -151,11 +159,7 @@ fn used_paths(module: &[String], source: &str) -> BTreeSet<Vec<String>> {
     let mut trees = Vec::new();
     for statement in code.split(';') {
         let statement = statement.trim();
-        let tree = statement
-            .strip_prefix("pub use ")
-            .or_else(|| statement.strip_prefix("pub(crate) use "))
-            .or_else(|| statement.strip_prefix("use "));
-        match tree {
+        match use_tree(statement) {
             Some(tree) => expand_tree(&[], tree, &mut trees),
             None => {
                 for part in statement.split("crate::").skip(1) {
@@ -207,11 +211,7 @@ fn relative_paths(source: &str) -> Vec<Vec<String>> {
     let mut trees = Vec::new();
     for statement in code.split(';') {
         let statement = statement.trim();
-        let tree = statement
-            .strip_prefix("pub use ")
-            .or_else(|| statement.strip_prefix("pub(crate) use "))
-            .or_else(|| statement.strip_prefix("use "));
-        match tree {
+        match use_tree(statement) {
             Some(tree) => expand_tree(&[], tree, &mut trees),
             None => {
                 let bytes = statement.as_bytes();
