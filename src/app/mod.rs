@@ -55,8 +55,6 @@ pub mod web;
 
 use std::sync::Arc;
 
-use eframe::egui;
-
 pub use self::explorer::Explorer;
 use crate::gpu::GpuContext;
 
@@ -68,7 +66,7 @@ pub fn run(view: Option<&str>) -> Result<(), crate::Error> {
     let view = view.map(str::to_owned);
     let options = eframe::NativeOptions {
         renderer: eframe::Renderer::Wgpu,
-        viewport: egui::ViewportBuilder::default()
+        viewport: eframe::egui::ViewportBuilder::default()
             .with_inner_size([1400.0, 860.0])
             .with_title("glyphscope")
             .with_drag_and_drop(true),
