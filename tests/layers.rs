@@ -152,8 +152,8 @@ fn use_tree(statement: &str) -> Option<&str> {
 
 /// The crate paths the code of `source` uses, as absolute module paths seen from the
 /// module `module` (`["methods", "winding"]` for `methods/winding/mod.rs`): every `use`
-/// statement's tree, nested groups and line breaks included, and every `crate::…`
-/// written in the code.
+/// statement's tree, nested groups and line breaks included, and every `crate::…`,
+/// `super::…` and `self::…` path written in the code.
 fn used_paths(module: &[String], source: &str) -> BTreeSet<Vec<String>> {
     let code = code_of(source);
     let mut trees = Vec::new();
