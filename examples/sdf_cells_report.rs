@@ -12,7 +12,7 @@ use glam::DVec2;
 use glyphscope::camera::Camera;
 use glyphscope::font::{Font, GlyphId, SHIPPED_FONTS};
 use glyphscope::geometry::DEFAULT_QUAD_TOLERANCE_EM;
-use glyphscope::gpu::{CoverageTarget, GpuContext};
+use glyphscope::gpu::{Channels, CoverageTarget, GpuContext};
 use glyphscope::methods::frame::{FrameTime, render_frame, time_frames};
 use glyphscope::methods::{Method, registry};
 
@@ -68,7 +68,8 @@ fn frame(scene: &Scene, size: f64, matrix: [f64; 4], shift: DVec2) -> Camera {
 
 fn error_of(gpu: &GpuContext, method: &mut SdfCells, scene: &Scene, camera: &Camera) -> ErrorStats {
     method.prepare(gpu, scene).expect("prepares");
-    let target = CoverageTarget::new(gpu, camera.width, camera.height).expect("target");
+    let target =
+        CoverageTarget::new(gpu, camera.width, camera.height, Channels::Coverage).expect("target");
     render_frame(gpu, method, &target, camera).expect("renders");
     let image = target.readback(gpu).expect("reads back");
     compare(
@@ -194,7 +195,7 @@ fn page_report(gpu: &GpuContext) {
     let scene = Scene::from_text(&font, glyphscope::bench::scenes::PAGE_TEXT).unwrap();
     let camera = Camera::new(1920, 1080, 16.0, DVec2::new(24.0, 40.0));
     let expected = reference::rasterize(&scene, &camera).unwrap();
-    let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
+    let target = CoverageTarget::new(gpu, camera.width, camera.height, Channels::Coverage).unwrap();
     println!("\n## The standard page (DejaVu Sans, 16 px/em, 1920×1080)\n");
     // `bounds` (one quad per glyph, exact box coverage) runs beside the modes as a
     // yardstick: its time moves with the machine's load, not with sdf-cells.

@@ -11,7 +11,7 @@
 use glam::DVec2;
 use glyphscope::camera::Camera;
 use glyphscope::font::Font;
-use glyphscope::gpu::{CoverageTarget, GpuContext};
+use glyphscope::gpu::{Channels, CoverageTarget, GpuContext};
 use glyphscope::methods::frame::{render_frame, time_frames};
 use glyphscope::methods::{Method, registry};
 use glyphscope::metrics::{self, compare};
@@ -47,7 +47,8 @@ fn main() {
     let scene = Scene::from_text(&Font::default_font(), text).unwrap();
     let camera = Camera::new(1920, 1080, 16.0, DVec2::new(24.0, 40.0));
     let gpu = GpuContext::new().unwrap();
-    let target = CoverageTarget::new(&gpu, camera.width, camera.height).unwrap();
+    let target =
+        CoverageTarget::new(&gpu, camera.width, camera.height, Channels::Coverage).unwrap();
     let expected = reference::rasterize(&scene, &camera).unwrap();
     println!(
         "{} instances, {} distinct glyphs, {}",

@@ -33,6 +33,11 @@ fn translation(shift: vec2<f32>) -> mat3x3<f32> {
 
 @vertex
 fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u32) -> GlyphQuad {
+    return atlas_quad(vertex, index);
+}
+
+// Strip vertex `vertex` of instance `index`'s quad.
+fn atlas_quad(vertex: u32, index: u32) -> GlyphQuad {
     var inst = instances[index];
     // One bitmap per glyph when nothing snaps (PHASES = 0).
     let phases = max(PHASES, 1u);
@@ -49,21 +54,64 @@ fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u
         inst.to_local = inst.to_local * translation(pen - snapped);
     }
     let e = entries[entry];
-    var quad = glyph_quad(inst, e.quad.xy, e.quad.zw, vertex, frame.size);
+    // No pixel footprint: a pixel centre outside the bitmap's rectangle reads its zero
+    // border (see `sampled_coverage`), so no pixel beyond it can add anything.
+    var quad = glyph_quad(inst, e.quad.xy, e.quad.zw, vertex, frame.size, false);
     // Here the quad's `glyph` names the bitmap: the glyph at its phase.
     quad.glyph = entry;
     return quad;
 }
 
+// How much of the fragment runs: all of it (3) but in the harness breakdown of
+// docs/methods/atlas.md, which times the frame cut short after each step: 1 writes
+// coverage 1 at once (the quads, the target and its blend), 2 also maps the pixel centre
+// to local coordinates.
+override STAGE: u32 = 3u;
+
 @fragment
 fn fs_main(in: GlyphQuad) -> @location(0) vec4<f32> {
-    let e = entries[in.glyph];
+    if STAGE == 1u {
+        return vec4<f32>(1.0);
+    }
     let local = quad_local(in);
+    if STAGE == 2u {
+        // Depends on the position, so that the map is not optimized away.
+        return vec4<f32>(f32(local.x != 1e30));
+    }
+    return vec4<f32>(sampled_coverage(entries[in.glyph], local));
+}
+
+// The bitmap's coverage at a local point.
+fn sampled_coverage(e: Entry, local: vec2<f32>) -> f32 {
     let texel = e.origin + vec2<f32>(local.x, -local.y) * e.texels_per_unit;
     // Kept on the bitmap's own texels (its zero border included): pixels of the quad's
     // dilation beyond it read that border, never a neighbour's bitmap.
     let inside = clamp(texel, e.texels.xy + 0.5, e.texels.zw - 0.5);
     let size = vec2<f32>(textureDimensions(atlas));
-    let coverage = textureSampleLevel(atlas, atlas_sampler, inside / size, 0.0).r;
-    return vec4<f32>(coverage);
+    return textureSampleLevel(atlas, atlas_sampler, inside / size, 0.0).r;
+}
+
+// The harness breakdown's other way to find a fragment's local position: interpolated
+// from the quad's corners, as text renderers do (glyphon interpolates its texture
+// coordinates), instead of mapping each pixel centre (`quad_local`, which common.wgsl
+// says why every method does). Exact for the bench's affine views, not under a tilt.
+struct InterpolatedQuad {
+    @builtin(position) position: vec4<f32>,
+    @location(0) local: vec2<f32>,
+    @location(1) @interpolate(flat) entry: u32,
+}
+
+@vertex
+fn vs_interpolated(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u32) -> InterpolatedQuad {
+    let quad = atlas_quad(vertex, index);
+    let to_local = mat3x3<f32>(quad.to_local_0, quad.to_local_1, quad.to_local_2);
+    // The corner's image point, back from clip space.
+    let w = quad.position.w;
+    let image = vec2<f32>(quad.position.x + w, w - quad.position.y) * 0.5 * frame.size / w;
+    return InterpolatedQuad(quad.position, project(to_local, image), quad.glyph);
+}
+
+@fragment
+fn fs_interpolated(in: InterpolatedQuad) -> @location(0) vec4<f32> {
+    return vec4<f32>(sampled_coverage(entries[in.entry], in.local));
 }

@@ -21,9 +21,6 @@ struct Varyings {
     @location(2) @interpolate(flat) corners23: vec4<f32>,
 }
 
-// Premultiplied by coverage on output: a tint that shows the boxes over other layers.
-const OVERLAY = vec3<f32>(1.0, 0.55, 0.1);
-
 // A convex polygon clipped by four half-planes gains at most one vertex per plane.
 const MAX_VERTICES = 8u;
 
@@ -115,5 +112,5 @@ fn fs_main(in: Varyings) -> @location(0) vec4<f32> {
         in.corners23.zw - pixel,
     );
     let coverage = unit_square_area_inside(quad);
-    return vec4<f32>(OVERLAY * coverage, coverage);
+    return vec4<f32>(coverage);
 }

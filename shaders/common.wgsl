@@ -2,6 +2,11 @@
 // one line it writes from Rust: `const COST_SCALE: f32`, the curves per pixel at the top
 // of the cost heat map's scale, which the app's legend reads from the same constant).
 //
+// What a fragment writes: coverage in alpha and an overlay's premultiplied colour in
+// rgb. A fragment that draws no overlay writes its coverage in every channel, because a
+// coverage-only target (`gpu::Channels::Coverage`, what every frame without an overlay
+// draws into) keeps one channel: the first.
+//
 // Conventions: a glyph's local coordinates are its font units, y up, origin at its pen
 // position. Image coordinates are pixels, y down, pixel (i, j) covering [i, i+1) × [j, j+1).
 // `to_image` maps local → image as a homography (column vectors, w in the last row); it is
@@ -41,12 +46,14 @@ fn rect_corner(rect_min: vec2<f32>, rect_max: vec2<f32>, k: u32) -> vec2<f32> {
 }
 
 // Corner `k` of the local rectangle, moved so that the image of the rectangle grows by
-// exactly what a pixel can reach: each edge moves out by the support distance of the
-// pixel square along its normal, ½(|nx| + |ny|) — ½ px for an axis-aligned edge, ½√2 at
-// 45° — plus `margin` pixels. Every pixel whose square touches the rectangle then has its
-// centre inside the grown quad, under any rotation, skew or perspective, with no fixed
-// em margin wasting fill. Returns the moved corner in local coordinates.
-fn dilated_corner(inst: GlyphInstance, rect_min: vec2<f32>, rect_max: vec2<f32>, k: u32, margin: f32) -> vec2<f32> {
+// exactly what a pixel can reach (with `footprint`): each edge moves out by the support
+// distance of the pixel square along its normal, ½(|nx| + |ny|) — ½ px for an
+// axis-aligned edge, ½√2 at 45° — plus `margin` pixels. Every pixel whose square touches
+// the rectangle then has its centre inside the grown quad, under any rotation, skew or
+// perspective, with no fixed em margin wasting fill. Without `footprint`, only the
+// margin: for a rectangle that already holds everything a pixel centre can see (a
+// bitmap with its zero border). Returns the moved corner in local coordinates.
+fn dilated_corner(inst: GlyphInstance, rect_min: vec2<f32>, rect_max: vec2<f32>, k: u32, footprint: bool, margin: f32) -> vec2<f32> {
     let previous = project(inst.to_image, rect_corner(rect_min, rect_max, (k + 3u) % 4u));
     let here = project(inst.to_image, rect_corner(rect_min, rect_max, k));
     let next = project(inst.to_image, rect_corner(rect_min, rect_max, (k + 1u) % 4u));
@@ -56,8 +63,9 @@ fn dilated_corner(inst: GlyphInstance, rect_min: vec2<f32>, rect_max: vec2<f32>,
     let turn = sign(cross2(here - previous, next - here) + cross2(opposite - next, previous - opposite));
     let n_in = outward_normal(here - previous, turn);
     let n_out = outward_normal(next - here, turn);
-    let d_in = margin + 0.5 * (abs(n_in.x) + abs(n_in.y));
-    let d_out = margin + 0.5 * (abs(n_out.x) + abs(n_out.y));
+    let reach = select(0.0, 0.5, footprint);
+    let d_in = margin + reach * (abs(n_in.x) + abs(n_in.y));
+    let d_out = margin + reach * (abs(n_out.x) + abs(n_out.y));
     // Move the corner to where both shifted edges meet: n_in·Δ = d_in, n_out·Δ = d_out.
     let det = cross2(n_in, n_out);
     var delta = n_in * d_in + n_out * d_out;
@@ -87,10 +95,11 @@ struct GlyphQuad {
 const SNAP_MARGIN: f32 = 0.0625;
 
 // Strip vertex `vertex` (0–3) of the quad covering the local rectangle of instance
-// `inst`, grown by the pixel footprint: strip vertices 0, 1, 2, 3 take corners 0, 1,
-// 3, 2 (a Gray code), two triangles.
-fn glyph_quad(inst: GlyphInstance, rect_min: vec2<f32>, rect_max: vec2<f32>, vertex: u32, size: vec2<f32>) -> GlyphQuad {
-    let local = dilated_corner(inst, rect_min, rect_max, vertex ^ (vertex >> 1u), SNAP_MARGIN);
+// `inst`, grown by the pixel footprint where `footprint` (see `dilated_corner`) and by
+// the snap margin: strip vertices 0, 1, 2, 3 take corners 0, 1, 3, 2 (a Gray code), two
+// triangles.
+fn glyph_quad(inst: GlyphInstance, rect_min: vec2<f32>, rect_max: vec2<f32>, vertex: u32, size: vec2<f32>, footprint: bool) -> GlyphQuad {
+    let local = dilated_corner(inst, rect_min, rect_max, vertex ^ (vertex >> 1u), footprint, SNAP_MARGIN);
     var out: GlyphQuad;
     out.position = image_to_clip(inst.to_image * vec3<f32>(local, 1.0), size);
     out.to_local_0 = inst.to_local[0];

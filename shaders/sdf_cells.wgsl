@@ -55,7 +55,7 @@ fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u
     let inst = instances[index];
     let g = glyphs[inst.glyph];
     let grid_max = g.grid_min + g.cell_size * vec2<f32>(f32(g.cols), f32(g.rows));
-    return glyph_quad(inst, g.grid_min, grid_max, vertex, frame.size);
+    return glyph_quad(inst, g.grid_min, grid_max, vertex, frame.size, true);
 }
 
 // ---- Cells -------------------------------------------------------------------------
@@ -638,7 +638,10 @@ fn fs_main(in: GlyphQuad) -> @location(0) vec4<f32> {
         case OUTPUT_COST_COUNT: {
             color = vec3<f32>(f32(field.cost), 0.0, 0.0);
         }
-        default: {}
+        default: {
+            // No overlay: coverage in every channel, as `common.wgsl` asks.
+            color = vec3<f32>(alpha);
+        }
     }
     return vec4<f32>(color, alpha);
 }

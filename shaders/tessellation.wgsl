@@ -28,9 +28,16 @@ fn vs_mesh(@location(0) local: vec2<f32>, @builtin(instance_index) instance: u32
     return image_to_clip(instances[instance].to_image * vec3<f32>(local, 1.0), frame.size);
 }
 
+// Whether an overlay is drawn: the fill is then its grey backdrop; else coverage, in
+// every channel (see common.wgsl).
+override OVERLAY: bool = false;
+
 @fragment
 fn fs_fill() -> @location(0) vec4<f32> {
-    return vec4<f32>(FILL, 1.0);
+    if OVERLAY {
+        return vec4<f32>(FILL, 1.0);
+    }
+    return vec4<f32>(1.0);
 }
 
 // Drawn as a line list over the fill, into rgb only: coverage stays the fill's.

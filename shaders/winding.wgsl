@@ -107,7 +107,7 @@ struct WindingQuad {
 fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u32) -> WindingQuad {
     let inst = instances[index];
     let g = glyphs[inst.glyph];
-    let q = glyph_quad(inst, g.bounds.xy, g.bounds.zw, vertex, frame.size);
+    let q = glyph_quad(inst, g.bounds.xy, g.bounds.zw, vertex, frame.size, true);
     let counts = vec3<u32>(g.band_count_h, g.band_count_v, g.first_band);
     return WindingQuad(q.position, q.to_local_0, q.to_local_1, q.to_local_2, g.bounds, counts, g.units_per_em);
 }

@@ -27,9 +27,12 @@ struct Jitter {
     offset: vec2<f32>,
     // Coverage one covered sample adds in this pass: 1 / passes.
     weight: f32,
-    // Grey level of coverage in the overlay picture (1 without an overlay).
-    tint: f32,
+    _pad: f32,
 }
+
+// Grey level of coverage in the overlay picture: 1 without an overlay, so that the cover
+// writes coverage in every channel (see common.wgsl).
+override TINT: f32 = 1.0;
 
 // A local point of `inst` in clip space, shifted by this pass's jitter. The shift is
 // applied to the homogeneous image point (x·w, y·w, w) so perspective stays exact.
@@ -96,7 +99,7 @@ fn vs_cover(@builtin(vertex_index) vertex: u32, @builtin(instance_index) instanc
     let bounds = glyph_bounds[inst.glyph];
     // Strip order 0, 1, 3, 2 goes round the rectangle's corners 0, 1, 2, 3.
     let corner = array<u32, 4>(0u, 1u, 3u, 2u)[vertex];
-    let local = dilated_corner(inst, bounds.xy, bounds.zw, corner, 0.0);
+    let local = dilated_corner(inst, bounds.xy, bounds.zw, corner, true, 0.0);
     return Position(to_clip(inst, local));
 }
 
@@ -104,7 +107,7 @@ fn vs_cover(@builtin(vertex_index) vertex: u32, @builtin(instance_index) instanc
 // lets each sample through once a pass; the pass then clears it).
 @fragment
 fn fs_cover() -> @location(0) vec4<f32> {
-    return vec4<f32>(vec3<f32>(jitter.tint * jitter.weight), jitter.weight);
+    return vec4<f32>(vec3<f32>(TINT * jitter.weight), jitter.weight);
 }
 
 struct WireVaryings {

@@ -124,11 +124,21 @@ pub struct BenchArgs {
     /// Folder for bench.md, bench.csv, bench.json, scaling.csv and the SVG plots.
     #[arg(long, default_value = "bench-out")]
     pub out: PathBuf,
+    /// Only where the atlas's frame goes, step by step, against glyphon's (harness.md;
+    /// scenes page and tiny unless --scenes names others; no --methods).
+    #[arg(long, conflicts_with_all = ["methods", "scaling_points"])]
+    pub harness: bool,
 }
 
 /// `glyphscope bench`: runs the bench and writes its outputs; the path of the report on
 /// stdout.
 pub fn run_bench(args: &BenchArgs) -> Result<(), Error> {
+    if args.harness {
+        let report =
+            crate::bench::harness::run_to(&args.scenes, args.quick, args.frames, &args.out)?;
+        println!("{}", report.display());
+        return Ok(());
+    }
     let options = crate::bench::BenchOptions {
         quick: args.quick,
         scenes: args.scenes.clone(),

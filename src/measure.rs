@@ -9,7 +9,7 @@ use serde::Serialize;
 use crate::Error;
 use crate::camera::Camera;
 use crate::coverage::{CoverageImage, ValueRange};
-use crate::gpu::{CoverageTarget, GpuContext};
+use crate::gpu::{Channels, CoverageTarget, GpuContext};
 use crate::methods;
 use crate::methods::frame::{self, FrameTime, ms_since};
 use crate::methods::info::MethodInfo;
@@ -146,7 +146,9 @@ pub fn measure(
         let mut method = info.create(params)?;
         let gpu = gpu.ok_or_else(|| Error::Gpu("a GPU method needs a GPU context".into()))?;
         stats.adapter = gpu.adapter_name();
-        let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
+        let overlay_drawn = checked.word("overlay").is_some_and(|o| o != "none");
+        let channels = Channels::for_overlay(overlay_drawn);
+        let target = CoverageTarget::new(gpu, camera.width, camera.height, channels)?;
         let start = Instant::now();
         method.prepare(gpu, scene)?;
         stats.cpu_prepare_ms = ms_since(start);
@@ -154,7 +156,7 @@ pub fn measure(
         let raw = target.readback(gpu)?;
         stats.coverage_range = Some(raw.range());
         let image = raw.clamp_to_union();
-        if checked.word("overlay").is_some_and(|o| o != "none") {
+        if overlay_drawn {
             overlay = Some(target.readback_color(gpu)?);
         }
         stats.curves_per_pixel = method.curves_per_pixel(gpu, camera)?;

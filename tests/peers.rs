@@ -10,7 +10,7 @@ use glam::DVec2;
 use glyphscope::Error;
 use glyphscope::camera::Camera;
 use glyphscope::font::Font;
-use glyphscope::gpu::CoverageTarget;
+use glyphscope::gpu::{Channels, CoverageTarget};
 use glyphscope::measure::{self, FrameTiming};
 use glyphscope::methods::{frame, peers, registry};
 use glyphscope::metrics;
@@ -213,7 +213,7 @@ fn vellos_own_submissions_are_timed_within_the_frames_wall_time() {
     let (scene, camera) = ViewArgs::text("Hamburgefonstiv", 32.0).build().unwrap();
     let mut method = registry::create(peers::vello::NAME, &[]).unwrap();
     method.prepare(gpu, &scene).unwrap();
-    let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
+    let target = CoverageTarget::new(gpu, camera.width, camera.height, Channels::Coverage).unwrap();
     // Shaders compile on the first frame.
     frame::render_frame(gpu, method.as_mut(), &target, &camera).unwrap();
     method.peer_gpu_time(gpu).unwrap();

@@ -13,7 +13,7 @@ use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
 use glyphscope::font::{Font, SHIPPED_FONTS};
 use glyphscope::geometry::{Contour, Outline, Segment, project};
-use glyphscope::gpu::CoverageTarget;
+use glyphscope::gpu::{Channels, CoverageTarget};
 use glyphscope::methods::frame::render_frame;
 use glyphscope::methods::tessellation::mesh::GlyphMesh;
 use glyphscope::methods::tessellation::subdivision::{
@@ -468,7 +468,7 @@ fn screen_space_meshes_are_rebuilt_only_across_scale_buckets() {
         0,
         "nothing is known of the scale yet"
     );
-    let target = CoverageTarget::new(gpu, 200, 60).unwrap();
+    let target = CoverageTarget::new(gpu, 200, 60, Channels::Coverage).unwrap();
     let mut frame = |size: f64| -> MeshStats {
         let camera = Camera::new(200, 60, size, DVec2::new(2.0, 45.0));
         render_frame(gpu, method.as_mut(), &target, &camera).unwrap();

@@ -18,7 +18,7 @@ use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
 use glyphscope::font::{Font, SHIPPED_FONTS};
 use glyphscope::geometry::{Contour, Outline, Segment, project};
-use glyphscope::gpu::CoverageTarget;
+use glyphscope::gpu::{Channels, CoverageTarget};
 use glyphscope::methods::frame::render_frame;
 use glyphscope::methods::xor_stencil::{self, FillRule, Settings, XorStencil, jitter_offsets};
 use glyphscope::methods::{Method, Overlay, registry};
@@ -461,7 +461,7 @@ fn frames_start_clear_and_culled_scenes_draw_nothing() {
     let gpu = gpu();
     let scene = Scene::from_text(&Font::shipped(0), "ab").unwrap();
     let camera = framed(&scene, 20.0, UPRIGHT, DVec2::ZERO);
-    let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
+    let target = CoverageTarget::new(gpu, camera.width, camera.height, Channels::Coverage).unwrap();
     for fill in [FillRule::NonZero, FillRule::EvenOdd] {
         let mut method = XorStencil::with_settings(settings(fill, 4, 2));
         method.prepare(gpu, &scene).unwrap();

@@ -11,7 +11,7 @@ use super::panes::{REFERENCE, pane_letter};
 use super::settings::PaneSource;
 use super::state::{ArtifactSearch, Artifacts, Then, WorstPixelRequest};
 use crate::camera::Camera;
-use crate::gpu::{CoverageTarget, PendingReadback};
+use crate::gpu::{Channels, CoverageTarget, PendingReadback};
 use crate::methods::frame;
 use crate::metrics::{self, PixelError};
 use crate::reference;
@@ -210,8 +210,8 @@ impl Explorer {
             .method
             .as_mut()
             .ok_or("the pane's method is not ready")?;
-        let target =
-            CoverageTarget::new(gpu, camera.width, camera.height).map_err(|e| e.to_string())?;
+        let target = CoverageTarget::new(gpu, camera.width, camera.height, Channels::Coverage)
+            .map_err(|e| e.to_string())?;
         frame::submit_frame(gpu, method.as_mut(), &target, camera).map_err(|e| e.to_string())?;
         // The target may go: wgpu keeps what submitted work reads until it is done.
         target.start_readback(gpu).map_err(|e| e.to_string())

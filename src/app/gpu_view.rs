@@ -15,7 +15,7 @@ use super::display::{CoverageAdjust, DisplayMode, composite_wgsl};
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
 use crate::gpu::timing::{Timestamps, intervals_ms};
-use crate::gpu::{CoverageTarget, GpuContext};
+use crate::gpu::{Channels, CoverageTarget, GpuContext};
 use crate::magnify::GRID_FROM;
 use crate::methods::Method;
 use crate::methods::frame::ms_since;
@@ -136,7 +136,7 @@ impl Compositor {
                 mip_level_count: 1,
                 sample_count: 1,
                 dimension: wgpu::TextureDimension::D2,
-                format: CoverageTarget::FORMAT,
+                format: Channels::Picture.format(),
                 usage: wgpu::TextureUsages::TEXTURE_BINDING,
                 view_formats: &[],
             })
@@ -229,7 +229,7 @@ impl PaneSurface {
             .is_some_and(|t| (t.width, t.height) == (camera.width, camera.height));
         if !fits {
             self.target = None;
-            match CoverageTarget::new(gpu, camera.width, camera.height) {
+            match CoverageTarget::new(gpu, camera.width, camera.height, Channels::Picture) {
                 Ok(t) => self.target = Some(t),
                 Err(e) => {
                     self.draw_error = Some(e.to_string());
@@ -539,7 +539,7 @@ pub fn upload_reference(gpu: &GpuContext, texture: &ReferenceTexture, image: &Co
             mip_level_count: 1,
             sample_count: 1,
             dimension: wgpu::TextureDimension::D2,
-            format: CoverageTarget::FORMAT,
+            format: Channels::Picture.format(),
             usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
             view_formats: &[],
         }));

@@ -11,6 +11,8 @@
 //!   [`scaling`] (how each method's cost grows with the glyphs and with the size),
 //!   [`winding_cost`] (where `winding`'s default spends a frame, stage by stage),
 //!   [`motion`] (every method's temporal error as text drifts and turns: page, tiny);
+//! - [`harness`]: `bench --harness` alone, the atlas's frame step by step against
+//!   glyphon's (it names both: it breaks the baseline's frame down);
 //! - [`run`]: measuring the standard scenes through the same function as
 //!   `render --stats`, and each section where it applies, with the numbers of
 //!   [`crate::effort::Effort`] that `--quick` picks;
@@ -26,6 +28,7 @@
 //! outline-points plot is named for `tessellation`, the one method that reports
 //! outline points.
 
+pub mod harness;
 pub mod method_settings;
 pub mod motion;
 pub mod numbers;

@@ -9,7 +9,7 @@ use std::fmt::Write as _;
 use super::result::{BenchResult, Rounds, SceneCamera, WindingCost};
 use crate::Error;
 use crate::camera::Camera;
-use crate::gpu::{CoverageTarget, GpuContext};
+use crate::gpu::{Channels, CoverageTarget, GpuContext};
 use crate::methods::info::MethodInfo;
 use crate::methods::winding::{self, Settings, Stage, Winding};
 use crate::methods::{Method, frame};
@@ -34,7 +34,7 @@ pub fn measure(
     let mut whole = Winding::staged(Settings::default(), Stage::Full);
     whole.prepare(gpu, scene)?;
     let counts = whole.cost_counts(gpu, camera)?;
-    let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
+    let target = CoverageTarget::new(gpu, camera.width, camera.height, Channels::Coverage)?;
     let mut medians: [Vec<f64>; 5] = Default::default();
     for _ in 0..timing.rounds {
         for (stage, medians) in Stage::ALL.into_iter().zip(&mut medians) {

@@ -3,7 +3,11 @@
 //! `Frame` uniform and the `GlyphInstance` array of `common.wgsl`), one render pipeline
 //! builder, and the curves-per-pixel tally.
 
-use super::{context::GpuContext, msaa::STENCIL_FORMAT, target::CoverageTarget};
+use super::{
+    context::GpuContext,
+    msaa::STENCIL_FORMAT,
+    target::{Channels, CoverageTarget},
+};
 use crate::Error;
 
 /// A binding of a layout built by [`layout`], at its position in the list.
@@ -107,7 +111,8 @@ pub fn pipeline_layout(
 pub enum ColorOut {
     /// Adds to rgba: where quads overlap, disjoint glyphs sum to their union's coverage.
     Add,
-    /// Writes the channels of the mask, replacing what was there.
+    /// Writes the channels of the mask (a picture's: alpha is coverage), replacing what
+    /// was there.
     Replace(wgpu::ColorWrites),
 }
 
@@ -189,17 +194,19 @@ impl<'a> PipelineBuilder<'a> {
         self
     }
 
-    pub fn build(&self, device: &wgpu::Device) -> wgpu::RenderPipeline {
+    /// The pipeline, for targets of `channels` (a frame's target decides: see
+    /// [`PerTarget`]).
+    pub fn build(&self, device: &wgpu::Device, channels: Channels) -> wgpu::RenderPipeline {
         let options = wgpu::PipelineCompilationOptions {
             constants: self.constants,
             ..Default::default()
         };
         let target = match self.color {
-            ColorOut::Add => CoverageTarget::ADDITIVE,
-            ColorOut::Replace(write_mask) => wgpu::ColorTargetState {
-                format: CoverageTarget::FORMAT,
+            ColorOut::Add => channels.additive(),
+            ColorOut::Replace(mask) => wgpu::ColorTargetState {
+                format: channels.format(),
                 blend: None,
-                write_mask,
+                write_mask: channels.write_mask(mask),
             },
         };
         device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
@@ -239,8 +246,31 @@ impl<'a> PipelineBuilder<'a> {
     }
 }
 
+/// Something a method builds for each kind of target it is given (its pipelines),
+/// built on the first frame into such a target and kept: the target's [`Channels`]
+/// decide, so that one method draws a lean coverage-only frame for the bench and a
+/// picture for the explorer without being told.
+pub struct PerTarget<T>([Option<T>; 2]);
+
+impl<T> Default for PerTarget<T> {
+    fn default() -> Self {
+        PerTarget([None, None])
+    }
+}
+
+impl<T> PerTarget<T> {
+    /// The one for targets of `channels`, built with `build` the first time.
+    pub fn get(&mut self, channels: Channels, build: impl FnOnce(Channels) -> T) -> &T {
+        let slot = &mut self.0[match channels {
+            Channels::Coverage => 0,
+            Channels::Picture => 1,
+        }];
+        slot.get_or_insert_with(|| build(channels))
+    }
+}
+
 /// Curves evaluated per pixel with nonzero coverage, for methods that count them: `draw`
-/// records a frame into a fresh target the camera's size that writes each pixel's count
+/// records a frame into a fresh picture target the camera's size that writes each pixel's count
 /// to red and its coverage to alpha (the method's counting output).
 pub fn count_curves(
     gpu: &GpuContext,
@@ -261,7 +291,7 @@ pub fn counting_pass(
     (width, height): (u32, u32),
     draw: impl FnOnce(&mut wgpu::CommandEncoder, &CoverageTarget) -> Result<(), Error>,
 ) -> Result<Vec<[f32; 4]>, Error> {
-    let target = CoverageTarget::new(gpu, width, height)?;
+    let target = CoverageTarget::new(gpu, width, height, Channels::Picture)?;
     gpu.catching_errors("counting per pixel", || {
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         draw(&mut encoder, &target)?;
@@ -272,7 +302,7 @@ pub fn counting_pass(
 }
 
 /// The largest count the counting passes hold exactly: their target is
-/// [`CoverageTarget::FORMAT`], half floats, which hold every integer up to 2¹¹ and only
+/// a [`Channels::Picture`] target's, half floats, which hold every integer up to 2¹¹ and only
 /// every other one past it (then every fourth, …, and nothing past 65 504).
 pub const EXACT_COUNT_LIMIT: f32 = 2048.0;
 

@@ -11,4 +11,4 @@ mod target;
 pub mod timing;
 
 pub use context::GpuContext;
-pub use target::{CoverageTarget, PendingReadback, clearing_pass};
+pub use target::{Channels, CoverageTarget, PendingReadback, clearing_pass};

@@ -1,18 +1,23 @@
 //! Intermediate attachments a method keeps beside the coverage target: a multisampled
 //! colour buffer (resolved into the target at the end of a pass) and a stencil buffer.
 
-use super::{context::GpuContext, target::CoverageTarget};
+use super::{
+    context::GpuContext,
+    target::{Channels, CoverageTarget},
+};
 
 /// Stencil format every method uses: lavapipe and every desktop GPU have it.
 pub const STENCIL_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Stencil8;
 
-/// Multisampled colour and/or stencil attachments matching a coverage target's size.
+/// Multisampled colour and/or stencil attachments matching a coverage target's size
+/// and channels.
 /// With one sample and no stencil there is nothing to keep: passes draw straight into
 /// the target.
 pub struct Attachments {
     width: u32,
     height: u32,
     samples: u32,
+    channels: Channels,
     color: Option<wgpu::TextureView>,
     stencil: Option<wgpu::TextureView>,
 }
@@ -28,8 +33,19 @@ impl Attachments {
         stencil: bool,
     ) -> Attachments {
         if let Some(a) = current
-            && (a.width, a.height, a.samples, a.stencil.is_some())
-                == (target.width, target.height, samples, stencil)
+            && (
+                a.width,
+                a.height,
+                a.samples,
+                a.channels,
+                a.stencil.is_some(),
+            ) == (
+                target.width,
+                target.height,
+                samples,
+                target.channels,
+                stencil,
+            )
         {
             return a;
         }
@@ -55,7 +71,9 @@ impl Attachments {
             width: target.width,
             height: target.height,
             samples,
-            color: (samples > 1).then(|| texture("multisampled coverage", CoverageTarget::FORMAT)),
+            channels: target.channels,
+            color: (samples > 1)
+                .then(|| texture("multisampled coverage", target.channels.format())),
             stencil: stencil.then(|| texture("stencil", STENCIL_FORMAT)),
         }
     }
@@ -107,7 +125,11 @@ impl Attachments {
     /// GPU memory held, bytes (the target itself not counted).
     pub fn bytes(&self) -> u64 {
         let pixels = u64::from(self.width) * u64::from(self.height) * u64::from(self.samples);
-        let color = if self.color.is_some() { pixels * 8 } else { 0 };
+        let color = if self.color.is_some() {
+            pixels * u64::from(self.channels.texel_bytes())
+        } else {
+            0
+        };
         let stencil = if self.stencil.is_some() { pixels } else { 0 };
         color + stencil
     }

@@ -6,41 +6,103 @@ use super::context::GpuContext;
 use crate::Error;
 use crate::coverage::CoverageImage;
 
-/// A coverage target: coverage in alpha, premultiplied overlay colour in rgb.
-pub struct CoverageTarget {
-    pub texture: wgpu::Texture,
-    pub view: wgpu::TextureView,
-    pub width: u32,
-    pub height: u32,
+/// What a coverage target holds besides coverage, chosen by whoever makes the target
+/// for what it will read back.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Channels {
+    /// Coverage alone, one half float a pixel (`R16Float`): every frame that draws no
+    /// overlay. Each fragment's blend reads and writes 2 bytes, not 8 — the difference
+    /// that made the harness, not the methods, most of the atlas's time (docs/methods/
+    /// atlas.md, "Where the atlas's time goes").
+    Coverage,
+    /// Coverage in alpha and an overlay's premultiplied colour in rgb (`Rgba16Float`):
+    /// frames that draw an overlay, the counting passes (a count in red), and the
+    /// explorer's panes, which switch overlays on and off.
+    Picture,
 }
 
-impl CoverageTarget {
-    /// Half floats: blendable everywhere, exact for 0 and 1, and about 3 decimal digits
-    /// in between — finer than the 8 bits an image is saved with.
-    pub const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
+impl Channels {
+    /// The channels a frame needs: a picture where it draws an overlay.
+    pub fn for_overlay(overlay: bool) -> Channels {
+        if overlay {
+            Channels::Picture
+        } else {
+            Channels::Coverage
+        }
+    }
+
+    /// The overlay a frame into a target of these channels draws: none into a
+    /// coverage-only target, which has nowhere to put its colour (the frame draws the
+    /// coverage alone, exactly as with no overlay).
+    pub fn shown<T>(self, overlay: Option<T>) -> Option<T> {
+        overlay.filter(|_| self == Channels::Picture)
+    }
+
+    /// Half floats either way: blendable everywhere, exact for 0 and 1, and about 3
+    /// decimal digits in between — finer than the 8 bits an image is saved with. Both
+    /// formats round a blend's sum the same way, so a method's coverage is the same bits
+    /// in either.
+    pub fn format(self) -> wgpu::TextureFormat {
+        match self {
+            Channels::Coverage => wgpu::TextureFormat::R16Float,
+            Channels::Picture => wgpu::TextureFormat::Rgba16Float,
+        }
+    }
+
+    /// Bytes of one texel of [`Channels::format`].
+    pub fn texel_bytes(self) -> u32 {
+        match self {
+            Channels::Coverage => 2,
+            Channels::Picture => 8,
+        }
+    }
 
     /// The colour state of pipelines that add their coverage up: where instances'
     /// quads overlap, disjoint glyphs sum to the union's coverage, as in the reference.
-    pub const ADDITIVE: wgpu::ColorTargetState = {
+    pub fn additive(self) -> wgpu::ColorTargetState {
         let add = wgpu::BlendComponent {
             src_factor: wgpu::BlendFactor::One,
             dst_factor: wgpu::BlendFactor::One,
             operation: wgpu::BlendOperation::Add,
         };
         wgpu::ColorTargetState {
-            format: Self::FORMAT,
+            format: self.format(),
             blend: Some(wgpu::BlendState {
                 color: add,
                 alpha: add,
             }),
             write_mask: wgpu::ColorWrites::ALL,
         }
-    };
+    }
 
-    /// Bytes of one texel of [`Self::FORMAT`].
-    const TEXEL_BYTES: u32 = 8;
+    /// The channels of this target a pipeline writing `mask` of a picture's channels
+    /// writes: a coverage target's one channel (red) stands for a picture's alpha, and
+    /// an overlay's rgb has nowhere to go.
+    pub fn write_mask(self, mask: wgpu::ColorWrites) -> wgpu::ColorWrites {
+        match self {
+            Channels::Picture => mask,
+            Channels::Coverage if mask.contains(wgpu::ColorWrites::ALPHA) => wgpu::ColorWrites::RED,
+            Channels::Coverage => wgpu::ColorWrites::empty(),
+        }
+    }
+}
 
-    pub fn new(gpu: &GpuContext, width: u32, height: u32) -> Result<CoverageTarget, Error> {
+/// A coverage target: coverage, and with [`Channels::Picture`] an overlay's colour.
+pub struct CoverageTarget {
+    pub texture: wgpu::Texture,
+    pub view: wgpu::TextureView,
+    pub width: u32,
+    pub height: u32,
+    pub channels: Channels,
+}
+
+impl CoverageTarget {
+    pub fn new(
+        gpu: &GpuContext,
+        width: u32,
+        height: u32,
+        channels: Channels,
+    ) -> Result<CoverageTarget, Error> {
         let max = gpu.max_texture_side();
         if width == 0 || height == 0 || width > max || height > max {
             return Err(Error::Input(format!(
@@ -59,7 +121,7 @@ impl CoverageTarget {
                 mip_level_count: 1,
                 sample_count: 1,
                 dimension: wgpu::TextureDimension::D2,
-                format: Self::FORMAT,
+                format: channels.format(),
                 usage: wgpu::TextureUsages::RENDER_ATTACHMENT
                     | wgpu::TextureUsages::TEXTURE_BINDING
                     | wgpu::TextureUsages::COPY_SRC,
@@ -71,6 +133,7 @@ impl CoverageTarget {
                 view,
                 width,
                 height,
+                channels,
             })
         })
     }
@@ -98,8 +161,13 @@ impl CoverageTarget {
     }
 
     /// Copies the overlay picture (rgb, premultiplied, over black) back as 8-bit sRGB-less
-    /// RGB, clamped.
+    /// RGB, clamped. Only a [`Channels::Picture`] target has one.
     pub fn readback_color(&self, gpu: &GpuContext) -> Result<image::RgbImage, Error> {
+        if self.channels != Channels::Picture {
+            return Err(Error::Gpu(
+                "a coverage-only target holds no overlay picture to read back".into(),
+            ));
+        }
         let texels = self.read_texels(gpu)?;
         let bytes = texels
             .iter()
@@ -109,13 +177,18 @@ impl CoverageTarget {
         Ok(image::RgbImage::from_raw(self.width, self.height, bytes).expect("size matches"))
     }
 
-    /// Every texel as f32 rgba, row-major.
+    /// Every texel as f32 rgba, row-major; a coverage-only target's as (0, 0, 0, coverage).
     pub(crate) fn read_texels(&self, gpu: &GpuContext) -> Result<Vec<[f32; 4]>, Error> {
         let bytes = gpu.catching_errors("reading the coverage target back", || {
             let buffer = self.copy_to_buffer(gpu);
             gpu.read_buffer(&buffer)
         })?;
-        Ok(texels_of(&bytes, self.width, self.padded_row_bytes()))
+        Ok(texels_of(
+            &bytes,
+            self.width,
+            self.padded_row_bytes(),
+            self.channels,
+        ))
     }
 
     /// Starts reading the coverage back without waiting for it: the copy is submitted
@@ -137,12 +210,14 @@ impl CoverageTarget {
             width: self.width,
             height: self.height,
             padded_row_bytes: self.padded_row_bytes(),
+            channels: self.channels,
         })
     }
 
     fn padded_row_bytes(&self) -> u32 {
         // Buffer rows of a texture copy must start on 256-byte boundaries.
-        (self.width * Self::TEXEL_BYTES).next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT)
+        (self.width * self.channels.texel_bytes())
+            .next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT)
     }
 
     /// A mappable buffer holding a copy of the target, the copy submitted.
@@ -180,17 +255,19 @@ impl CoverageTarget {
     }
 }
 
-/// Half-float rgba rows, each padded to `padded_row_bytes`, as f32 texels.
-fn texels_of(bytes: &[u8], width: u32, padded_row_bytes: u32) -> Vec<[f32; 4]> {
-    let row_bytes = (width * CoverageTarget::TEXEL_BYTES) as usize;
+/// Half-float rows of `channels`, each padded to `padded_row_bytes`, as f32 rgba texels.
+fn texels_of(bytes: &[u8], width: u32, padded_row_bytes: u32, channels: Channels) -> Vec<[f32; 4]> {
+    let texel_bytes = channels.texel_bytes() as usize;
+    let row_bytes = width as usize * texel_bytes;
+    let half = |t: &[u8], i: usize| half::f16::from_le_bytes([t[i], t[i + 1]]).to_f32();
     let mut texels = Vec::new();
     for row in bytes.chunks_exact(padded_row_bytes as usize) {
-        // rgba, two bytes each, little-endian.
-        texels.extend(
-            row[..row_bytes]
-                .chunks_exact(CoverageTarget::TEXEL_BYTES as usize)
-                .map(|t| [0, 2, 4, 6].map(|i| half::f16::from_le_bytes([t[i], t[i + 1]]).to_f32())),
-        );
+        // Two bytes a channel, little-endian.
+        let texel = row[..row_bytes].chunks_exact(texel_bytes);
+        match channels {
+            Channels::Coverage => texels.extend(texel.map(|t| [0.0, 0.0, 0.0, half(t, 0)])),
+            Channels::Picture => texels.extend(texel.map(|t| [0, 2, 4, 6].map(|i| half(t, i)))),
+        }
     }
     texels
 }
@@ -211,6 +288,7 @@ pub struct PendingReadback {
     width: u32,
     height: u32,
     padded_row_bytes: u32,
+    channels: Channels,
 }
 
 impl PendingReadback {
@@ -243,7 +321,7 @@ impl PendingReadback {
             .map_err(|e| unreadable(&e))?
             .to_vec();
         self.buffer.unmap();
-        let texels = texels_of(&bytes, self.width, self.padded_row_bytes);
+        let texels = texels_of(&bytes, self.width, self.padded_row_bytes, self.channels);
         Ok(coverage_of(self.width, self.height, &texels))
     }
 }

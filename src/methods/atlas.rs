@@ -22,7 +22,7 @@ use super::instances::Instances;
 use super::params::{Numbers, ParamSpec, Params};
 use crate::Error;
 use crate::camera::Camera;
-use crate::gpu::kit::{self, PipelineBuilder, Slot};
+use crate::gpu::kit::{self, PerTarget, PipelineBuilder, Slot};
 use crate::gpu::shaders::Shader;
 use crate::gpu::{CoverageTarget, GpuContext};
 use crate::reference;
@@ -110,15 +110,48 @@ pub fn auto_cache_size(px_per_em: f64) -> f64 {
     px_per_em.min(AUTO_CACHE_MAX_PX_PER_EM)
 }
 
+/// How much of a frame the atlas draws: all of it but in the bench's harness breakdown
+/// ([`crate::bench::harness`]), which times each step on its own.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stage {
+    /// The target cleared, nothing drawn.
+    Cleared,
+    /// The quads, each fragment writing coverage 1: rasterizing, the target and its blend.
+    Quads,
+    /// Each fragment also maps its pixel centre to local coordinates.
+    Mapped,
+    /// The whole frame: the bitmap sampled there.
+    Full,
+    /// The whole frame, but each fragment's local position interpolated from the quad's
+    /// corners instead of mapped.
+    Interpolated,
+}
+
+impl Stage {
+    /// `STAGE` in atlas.wgsl (its fragment cut short), and the entry points.
+    fn shader(self) -> (f64, (&'static str, &'static str)) {
+        let main = ("vs_main", "fs_main");
+        match self {
+            Stage::Cleared | Stage::Full => (3.0, main),
+            Stage::Quads => (1.0, main),
+            Stage::Mapped => (2.0, main),
+            Stage::Interpolated => (3.0, ("vs_interpolated", "fs_interpolated")),
+        }
+    }
+}
+
 pub struct Atlas {
     settings: Settings,
+    stage: Stage,
     pipeline: Option<Pipeline>,
     prepared: Option<Prepared>,
 }
 
 struct Pipeline {
     layout: wgpu::BindGroupLayout,
-    pipeline: wgpu::RenderPipeline,
+    pipeline_layout: wgpu::PipelineLayout,
+    module: wgpu::ShaderModule,
+    pipelines: PerTarget<wgpu::RenderPipeline>,
     sampler: wgpu::Sampler,
 }
 
@@ -161,8 +194,14 @@ struct Bitmap {
 
 impl Atlas {
     pub fn new(params: &Params) -> Atlas {
+        Atlas::staged(params, Stage::Full)
+    }
+
+    /// An atlas that draws `stage` of a frame.
+    pub fn staged(params: &Params, stage: Stage) -> Atlas {
         Atlas {
             settings: Settings::from_params(params),
+            stage,
             pipeline: None,
             prepared: None,
         }
@@ -177,17 +216,12 @@ impl Atlas {
     }
 
     fn pipeline(&mut self, gpu: &GpuContext) -> &Pipeline {
-        let phases = self.settings.phases;
         self.pipeline.get_or_insert_with(|| {
             let device = &gpu.device;
             // entries, the atlas, its sampler (`@group(1)` of atlas.wgsl).
             let layout = kit::layout(gpu, NAME, &[Slot::Storage, Slot::Texture, Slot::Sampler]);
             let pipeline_layout = kit::pipeline_layout(gpu, NAME, Some(&layout));
             let module = SHADER.module(device);
-            let constants = [("PHASES", f64::from(phases))];
-            let pipeline = PipelineBuilder::new(NAME, &pipeline_layout, &module)
-                .constants(&constants)
-                .build(device);
             let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
                 label: Some(NAME),
                 mag_filter: wgpu::FilterMode::Linear,
@@ -196,7 +230,9 @@ impl Atlas {
             });
             Pipeline {
                 layout,
-                pipeline,
+                pipeline_layout,
+                module,
+                pipelines: PerTarget::default(),
                 sampler,
             }
         })
@@ -472,15 +508,24 @@ impl Method for Atlas {
         if prepared.cache.is_none() {
             self.build_cache(gpu, auto_cache_size(camera.size_px_per_em))?;
         }
-        let (Some(pipeline), Some(prepared)) = (&self.pipeline, &mut self.prepared) else {
+        let phases = self.settings.phases;
+        let (stage, entry_points) = self.stage.shader();
+        let (Some(pipeline), Some(prepared)) = (&mut self.pipeline, &mut self.prepared) else {
             return Err(super::not_prepared(NAME));
         };
+        let draw = pipeline.pipelines.get(target.channels, |channels| {
+            let constants = [("PHASES", f64::from(phases)), ("STAGE", stage)];
+            PipelineBuilder::new(NAME, &pipeline.pipeline_layout, &pipeline.module)
+                .entry_points(entry_points.0, entry_points.1)
+                .constants(&constants)
+                .build(&gpu.device, channels)
+        });
         // A pixel of margin: snapping moves a glyph by up to half a pixel.
         let visible = prepared.instances.update(gpu, camera, 1.0)?;
         let cache = prepared.cache.as_ref().expect("built above");
         let mut pass = target.clearing_pass(encoder, NAME);
-        if visible > 0 {
-            pass.set_pipeline(&pipeline.pipeline);
+        if visible > 0 && self.stage != Stage::Cleared {
+            pass.set_pipeline(draw);
             pass.set_bind_group(0, prepared.instances.bind_group(), &[]);
             pass.set_bind_group(1, &cache.bind_group, &[]);
             pass.draw(0..4, 0..visible);

@@ -17,7 +17,7 @@ use super::info::{MethodInfo, Role};
 use crate::Error;
 use crate::camera::Camera;
 use crate::geometry::{Rect, project};
-use crate::gpu::kit::{self, PipelineBuilder, Slot};
+use crate::gpu::kit::{self, PerTarget, PipelineBuilder, Slot};
 use crate::gpu::shaders::Shader;
 use crate::gpu::{CoverageTarget, GpuContext};
 use crate::scene::Scene;
@@ -48,7 +48,9 @@ pub struct Bounds {
 }
 
 struct QuadPipeline {
-    pipeline: wgpu::RenderPipeline,
+    layout: wgpu::PipelineLayout,
+    shader: wgpu::ShaderModule,
+    pipelines: PerTarget<wgpu::RenderPipeline>,
     /// The target size, for the vertex shader's pixel → clip-space step.
     view_buffer: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
@@ -90,15 +92,6 @@ impl QuadPipeline {
             bind_group_layouts: &[Some(&bind_group_layout)],
             immediate_size: 0,
         });
-        let quads = wgpu::VertexBufferLayout {
-            array_stride: size_of::<QuadInstance>() as wgpu::BufferAddress,
-            step_mode: wgpu::VertexStepMode::Instance,
-            attributes: &QUAD_ATTRIBUTES,
-        };
-        let buffers = [Some(quads)];
-        let pipeline = PipelineBuilder::new(NAME, &layout, &shader)
-            .vertex_buffers(&buffers)
-            .build(device);
         let view_buffer = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("bounds view"),
             size: size_of::<[f32; 2]>() as wgpu::BufferAddress,
@@ -112,7 +105,9 @@ impl QuadPipeline {
             &[view_buffer.as_entire_binding()],
         );
         QuadPipeline {
-            pipeline,
+            layout,
+            shader,
+            pipelines: PerTarget::default(),
             view_buffer,
             bind_group,
         }
@@ -157,7 +152,7 @@ impl Method for Bounds {
         target: &CoverageTarget,
         camera: &Camera,
     ) -> Result<(), Error> {
-        let (Some(pipeline), Some(scene)) = (&self.pipeline, &mut self.prepared) else {
+        let (Some(pipeline), Some(scene)) = (&mut self.pipeline, &mut self.prepared) else {
             return Err(super::not_prepared(NAME));
         };
         let view = Rect {
@@ -192,9 +187,19 @@ impl Method for Bounds {
                 .write_buffer(&scene.quad_buffer, 0, bytemuck::cast_slice(&scene.quads));
         }
 
+        let draw = pipeline.pipelines.get(target.channels, |channels| {
+            let quads = wgpu::VertexBufferLayout {
+                array_stride: size_of::<QuadInstance>() as wgpu::BufferAddress,
+                step_mode: wgpu::VertexStepMode::Instance,
+                attributes: &QUAD_ATTRIBUTES,
+            };
+            PipelineBuilder::new(NAME, &pipeline.layout, &pipeline.shader)
+                .vertex_buffers(&[Some(quads)])
+                .build(&gpu.device, channels)
+        });
         let mut pass = target.clearing_pass(encoder, NAME);
         if !scene.quads.is_empty() {
-            pass.set_pipeline(&pipeline.pipeline);
+            pass.set_pipeline(draw);
             pass.set_bind_group(0, &pipeline.bind_group, &[]);
             pass.set_vertex_buffer(0, scene.quad_buffer.slice(..));
             pass.draw(0..4, 0..scene.quads.len() as u32);

@@ -10,7 +10,7 @@ use crate::Error;
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
 use crate::gpu::timing::Timestamps;
-use crate::gpu::{CoverageTarget, GpuContext};
+use crate::gpu::{Channels, CoverageTarget, GpuContext};
 
 /// Encodes one frame of `method` into `target`, submits it and waits for the GPU.
 pub fn render_frame(
@@ -53,14 +53,14 @@ fn encode_frame(
     })
 }
 
-/// Renders one frame of a prepared `method` into a new target the camera's size and
-/// reads its coverage back as the method wrote it (nothing clamped).
+/// Renders one frame of a prepared `method` into a new coverage-only target the camera's
+/// size and reads its coverage back as the method wrote it (nothing clamped).
 pub fn render_image(
     gpu: &GpuContext,
     method: &mut dyn Method,
     camera: &Camera,
 ) -> Result<CoverageImage, Error> {
-    let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
+    let target = CoverageTarget::new(gpu, camera.width, camera.height, Channels::Coverage)?;
     render_frame(gpu, method, &target, camera)?;
     target.readback(gpu)
 }

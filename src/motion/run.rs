@@ -10,7 +10,7 @@ use super::MotionPath;
 use crate::Error;
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
-use crate::gpu::{CoverageTarget, GpuContext};
+use crate::gpu::{Channels, CoverageTarget, GpuContext};
 use crate::measure::{self, FrameTiming};
 use crate::methods::frame::{ms_since, render_frame};
 use crate::methods::params::settings_text;
@@ -251,7 +251,7 @@ fn start<'g>(
     }
     let mut method = info.create(&spec.params)?;
     let gpu = gpu.ok_or_else(|| Error::Gpu("a GPU method needs a GPU context".into()))?;
-    let target = CoverageTarget::new(gpu, first.width, first.height)?;
+    let target = CoverageTarget::new(gpu, first.width, first.height, Channels::Coverage)?;
     let warm = method.prepare(gpu, scene).and_then(|()| {
         (0..WARMUP).try_for_each(|_| render_frame(gpu, method.as_mut(), &target, first))
     });

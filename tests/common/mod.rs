@@ -11,7 +11,7 @@ use glam::DVec2;
 use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
 use glyphscope::geometry::Outline;
-use glyphscope::gpu::{CoverageTarget, GpuContext};
+use glyphscope::gpu::{Channels, CoverageTarget, GpuContext};
 use glyphscope::methods::{Method, frame};
 use glyphscope::scene::Scene;
 /// A scene holding an outline once at the origin, where 1 font unit = 1 px.
@@ -41,7 +41,7 @@ pub fn render_with_picture(
 ) -> (CoverageImage, image::RgbImage) {
     let gpu = gpu();
     method.prepare(gpu, scene).unwrap();
-    let target = CoverageTarget::new(gpu, camera.width, camera.height).unwrap();
+    let target = CoverageTarget::new(gpu, camera.width, camera.height, Channels::Picture).unwrap();
     frame::render_frame(gpu, method, &target, camera).unwrap();
     (
         target.readback(gpu).unwrap(),

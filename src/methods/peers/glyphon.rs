@@ -349,7 +349,7 @@ impl Method for Glyphon {
                     gpu.max_texture_side()
                 )),
             })?;
-        let image = PeerImage::sized(self.image.take(), gpu, NAME, target.width, target.height);
+        let mut image = PeerImage::sized(self.image.take(), gpu, NAME, target.width, target.height);
         {
             let mut pass = image.clearing_pass(encoder, NAME);
             prepared
@@ -360,7 +360,7 @@ impl Method for Glyphon {
         // As glyphon's own examples do after each frame: glyphs not drawn in it may be
         // evicted, so the atlas does not fill up with every size and bin ever drawn.
         prepared.atlas.trim();
-        image.copy_into(encoder, target);
+        image.copy_into(gpu, encoder, target);
         self.image = Some(image);
         self.last_frame = Some((exact, area, *camera));
         Ok(())

@@ -19,7 +19,7 @@ use glam::{DMat2, DVec2};
 use super::info::{Claim, ClaimedSetting};
 use crate::Error;
 use crate::camera::Camera;
-use crate::gpu::kit::{self, ColorOut, PipelineBuilder, Slot};
+use crate::gpu::kit::{self, ColorOut, PerTarget, PipelineBuilder, Slot};
 use crate::gpu::shaders::Shader;
 
 use crate::gpu::timing::Timestamps;
@@ -64,7 +64,9 @@ pub struct PeerImage {
 pub const PEER_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 
 struct CopyPass {
-    pipeline: wgpu::RenderPipeline,
+    layout: wgpu::PipelineLayout,
+    module: wgpu::ShaderModule,
+    pipelines: PerTarget<wgpu::RenderPipeline>,
     bind_group: wgpu::BindGroup,
 }
 
@@ -118,10 +120,22 @@ impl PeerImage {
     }
 
     /// Records the copy of this texture's alpha into `target`, which it overwrites.
-    pub fn copy_into(&self, encoder: &mut wgpu::CommandEncoder, target: &CoverageTarget) {
+    pub fn copy_into(
+        &mut self,
+        gpu: &GpuContext,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &CoverageTarget,
+    ) {
+        let copy = &mut self.copy;
+        let pipeline = copy.pipelines.get(target.channels, |channels| {
+            PipelineBuilder::new("peer coverage", &copy.layout, &copy.module)
+                .topology(wgpu::PrimitiveTopology::TriangleList)
+                .color(ColorOut::Replace(wgpu::ColorWrites::ALL))
+                .build(&gpu.device, channels)
+        });
         let timestamps = self.copy_timestamps.as_ref().map(|t| t.pass_writes(0));
         let mut pass = clearing_pass(encoder, &target.view, "peer coverage", timestamps);
-        pass.set_pipeline(&self.copy.pipeline);
+        pass.set_pipeline(pipeline);
         pass.set_bind_group(1, &self.copy.bind_group, &[]);
         pass.draw(0..3, 0..1);
     }
@@ -171,10 +185,6 @@ impl CopyPass {
                 bind_group_layouts: &[None, Some(&group)],
                 immediate_size: 0,
             });
-        let pipeline = PipelineBuilder::new(label, &layout, &module)
-            .topology(wgpu::PrimitiveTopology::TriangleList)
-            .color(ColorOut::Replace(wgpu::ColorWrites::ALL))
-            .build(&gpu.device);
         let bind_group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some(label),
             layout: &group,
@@ -184,7 +194,9 @@ impl CopyPass {
             }],
         });
         CopyPass {
-            pipeline,
+            layout,
+            module,
+            pipelines: PerTarget::default(),
             bind_group,
         }
     }

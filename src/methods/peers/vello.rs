@@ -161,7 +161,7 @@ impl Method for Vello {
         camera: &Camera,
     ) -> Result<(), Error> {
         let vello_scene = self.encode_scene(camera)?;
-        let image = PeerImage::sized(self.image.take(), gpu, NAME, target.width, target.height);
+        let mut image = PeerImage::sized(self.image.take(), gpu, NAME, target.width, target.height);
         let params = RenderParams {
             base_color: Color::TRANSPARENT,
             width: target.width,
@@ -184,7 +184,7 @@ impl Method for Vello {
             .render_to_texture(&gpu.device, &gpu.queue, &vello_scene, &image.view, &params)
             .map_err(|e| Error::Gpu(format!("vello failed: {e}")))?;
         stamp(1);
-        image.copy_into(encoder, target);
+        image.copy_into(gpu, encoder, target);
         self.image = Some(image);
         Ok(())
     }

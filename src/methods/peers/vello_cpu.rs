@@ -163,7 +163,7 @@ impl Method for VelloCpu {
             _ => Pixmap::new(width, height),
         };
         self.rasterize(camera, &mut pixmap)?;
-        let image = PeerImage::sized(self.image.take(), gpu, NAME, target.width, target.height);
+        let mut image = PeerImage::sized(self.image.take(), gpu, NAME, target.width, target.height);
         gpu.queue.write_texture(
             wgpu::TexelCopyTextureInfo {
                 texture: &image.texture,
@@ -183,7 +183,7 @@ impl Method for VelloCpu {
                 depth_or_array_layers: 1,
             },
         );
-        image.copy_into(encoder, target);
+        image.copy_into(gpu, encoder, target);
         self.image = Some(image);
         self.pixmap = Some(pixmap);
         Ok(())

@@ -35,7 +35,7 @@ use super::params::Params;
 use super::{CurveCost, Method, Overlay};
 use crate::Error;
 use crate::camera::Camera;
-use crate::gpu::kit::{self, PipelineBuilder, Slot};
+use crate::gpu::kit::{self, PerTarget, PipelineBuilder, Slot};
 use crate::gpu::shaders::Shader;
 use crate::gpu::{CoverageTarget, GpuContext};
 use crate::scene::Scene;
@@ -161,7 +161,9 @@ struct GpuSettings {
 }
 
 struct Pipeline {
-    pipeline: wgpu::RenderPipeline,
+    layout: wgpu::PipelineLayout,
+    shader: wgpu::ShaderModule,
+    pipelines: PerTarget<wgpu::RenderPipeline>,
     bind_group_layout: wgpu::BindGroupLayout,
 }
 
@@ -239,7 +241,7 @@ impl SdfCells {
             .as_ref()
             .map(|s| self.gpu_settings(s.units_per_em, output));
         let (Some(pipeline), Some(scene), Some(settings)) =
-            (&self.pipeline, &mut self.prepared, settings)
+            (&mut self.pipeline, &mut self.prepared, settings)
         else {
             return Err(Error::Gpu(
                 "method 'sdf-cells' was asked to draw before `prepare`".into(),
@@ -248,9 +250,15 @@ impl SdfCells {
         let count = scene.instances.update(gpu, camera, reach_px)?;
         gpu.queue
             .write_buffer(&scene.settings, 0, bytemuck::bytes_of(&settings));
+        // Coverage adds up where quads overlap, and so does the cost the cost pass
+        // counts.
+        let draw = pipeline.pipelines.get(target.channels, |channels| {
+            PipelineBuilder::new(params::NAME, &pipeline.layout, &pipeline.shader)
+                .build(&gpu.device, channels)
+        });
         let mut pass = target.clearing_pass(encoder, params::NAME);
         if count > 0 {
-            pass.set_pipeline(&pipeline.pipeline);
+            pass.set_pipeline(draw);
             pass.set_bind_group(0, scene.instances.bind_group(), &[]);
             pass.set_bind_group(1, &scene.bind_group, &[]);
             pass.draw(0..4, 0..count);
@@ -276,11 +284,10 @@ impl Pipeline {
         let slots = [Slot::Storage, Slot::Storage, Slot::Storage, Slot::Uniform];
         let bind_group_layout = kit::layout(gpu, params::NAME, &slots);
         let layout = kit::pipeline_layout(gpu, params::NAME, Some(&bind_group_layout));
-        // Coverage adds up where quads overlap, and so does the cost the cost pass
-        // counts.
-        let pipeline = PipelineBuilder::new(params::NAME, &layout, &shader).build(&gpu.device);
         Pipeline {
-            pipeline,
+            layout,
+            shader,
+            pipelines: PerTarget::default(),
             bind_group_layout,
         }
     }
@@ -408,7 +415,7 @@ impl Method for SdfCells {
         target: &CoverageTarget,
         camera: &Camera,
     ) -> Result<(), Error> {
-        let output = Output::of(self.settings.overlay);
+        let output = Output::of(target.channels.shown(self.settings.overlay));
         self.draw(gpu, encoder, target, camera, output)
     }
 

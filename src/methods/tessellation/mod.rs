@@ -36,10 +36,10 @@ use crate::Error;
 use crate::camera::Camera;
 use crate::font::GlyphId;
 use crate::geometry::{Rect, project};
-use crate::gpu::kit::{self, ColorOut, PipelineBuilder, Slot};
+use crate::gpu::kit::{self, ColorOut, PerTarget, PipelineBuilder, Slot};
 use crate::gpu::msaa::Attachments;
 use crate::gpu::shaders::Shader;
-use crate::gpu::{CoverageTarget, GpuContext};
+use crate::gpu::{Channels, CoverageTarget, GpuContext};
 use crate::scene::Scene;
 
 /// `tessellation`'s row in the registry.
@@ -114,7 +114,8 @@ pub struct Tessellation {
     setting: Setting,
     samples: u32,
     overlay: Option<Overlay>,
-    /// Built on the first `prepare`; depends on the device and the sample count only.
+    /// Built on the first `prepare`; depends on the device, the sample count and whether
+    /// an overlay is drawn.
     pipelines: Option<Pipelines>,
     scene: Option<PreparedScene>,
     attachments: Option<Attachments>,
@@ -122,6 +123,15 @@ pub struct Tessellation {
 
 struct Pipelines {
     layout: wgpu::BindGroupLayout,
+    pipeline_layout: wgpu::PipelineLayout,
+    shader: wgpu::ShaderModule,
+    samples: u32,
+    overlay: Option<Overlay>,
+    draws: PerTarget<Draws>,
+}
+
+/// The pipelines of a frame into one kind of target.
+struct Draws {
     fill: wgpu::RenderPipeline,
     edges: wgpu::RenderPipeline,
     markers: wgpu::RenderPipeline,
@@ -376,55 +386,77 @@ impl PreparedScene {
 }
 
 impl Pipelines {
-    fn new(gpu: &GpuContext, samples: u32) -> Pipelines {
-        let device = &gpu.device;
-        let shader = SHADER.module(device);
+    fn new(gpu: &GpuContext, samples: u32, overlay: Option<Overlay>) -> Pipelines {
+        let shader = SHADER.module(&gpu.device);
         // The markers (`@group(1)` of tessellation.wgsl).
         let layout = kit::layout(gpu, NAME, &[Slot::Storage]);
         let pipeline_layout = kit::pipeline_layout(gpu, NAME, Some(&layout));
-        let positions = [Some(wgpu::VertexBufferLayout {
-            array_stride: size_of::<[f32; 2]>() as wgpu::BufferAddress,
-            step_mode: wgpu::VertexStepMode::Vertex,
-            attributes: &wgpu::vertex_attr_array![0 => Float32x2],
-        })];
-        // No blending: a sample is covered or not (see the shader).
-        let pipeline = |label, vertex_entry, buffers, topology, fragment_entry, write_mask| {
-            PipelineBuilder::new(label, &pipeline_layout, &shader)
-                .entry_points(vertex_entry, fragment_entry)
-                .vertex_buffers(buffers)
-                .topology(topology)
-                .samples(samples)
-                .color(ColorOut::Replace(write_mask))
-                .build(device)
-        };
-        use wgpu::{ColorWrites, PrimitiveTopology};
         Pipelines {
-            fill: pipeline(
-                "tessellation fill",
-                "vs_mesh",
-                &positions,
-                PrimitiveTopology::TriangleList,
-                "fs_fill",
-                ColorWrites::ALL,
-            ),
-            edges: pipeline(
-                "tessellation edges",
-                "vs_mesh",
-                &positions,
-                PrimitiveTopology::LineList,
-                "fs_edge",
-                ColorWrites::COLOR,
-            ),
-            markers: pipeline(
-                "tessellation points",
-                "vs_marker",
-                &[],
-                PrimitiveTopology::TriangleList,
-                "fs_marker",
-                ColorWrites::COLOR,
-            ),
             layout,
+            pipeline_layout,
+            shader,
+            samples,
+            overlay,
+            draws: PerTarget::default(),
         }
+    }
+
+    /// The pipelines drawing into targets of `channels`.
+    fn draws(&mut self, gpu: &GpuContext, channels: Channels) -> &Draws {
+        let Pipelines {
+            pipeline_layout,
+            shader,
+            samples,
+            overlay,
+            ..
+        } = self;
+        self.draws.get(channels, |channels| {
+            let positions = [Some(wgpu::VertexBufferLayout {
+                array_stride: size_of::<[f32; 2]>() as wgpu::BufferAddress,
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: &wgpu::vertex_attr_array![0 => Float32x2],
+            })];
+            let shown = channels.shown(*overlay).is_some();
+            let constants = [("OVERLAY", f64::from(u8::from(shown)))];
+            // No blending: a sample is covered or not (see the shader).
+            let pipeline = |label, vertex_entry, buffers, topology, fragment_entry, write_mask| {
+                PipelineBuilder::new(label, pipeline_layout, shader)
+                    .entry_points(vertex_entry, fragment_entry)
+                    .constants(&constants)
+                    .vertex_buffers(buffers)
+                    .topology(topology)
+                    .samples(*samples)
+                    .color(ColorOut::Replace(write_mask))
+                    .build(&gpu.device, channels)
+            };
+            use wgpu::{ColorWrites, PrimitiveTopology};
+            Draws {
+                fill: pipeline(
+                    "tessellation fill",
+                    "vs_mesh",
+                    &positions,
+                    PrimitiveTopology::TriangleList,
+                    "fs_fill",
+                    ColorWrites::ALL,
+                ),
+                edges: pipeline(
+                    "tessellation edges",
+                    "vs_mesh",
+                    &positions,
+                    PrimitiveTopology::LineList,
+                    "fs_edge",
+                    ColorWrites::COLOR,
+                ),
+                markers: pipeline(
+                    "tessellation points",
+                    "vs_marker",
+                    &[],
+                    PrimitiveTopology::TriangleList,
+                    "fs_marker",
+                    ColorWrites::COLOR,
+                ),
+            }
+        })
     }
 }
 
@@ -437,7 +469,7 @@ impl Method for Tessellation {
         gpu.catching_errors("preparing 'tessellation'", || {
             let pipelines = self
                 .pipelines
-                .get_or_insert_with(|| Pipelines::new(gpu, self.samples));
+                .get_or_insert_with(|| Pipelines::new(gpu, self.samples, self.overlay));
             let glyphs = scene
                 .glyphs
                 .iter()
@@ -481,7 +513,7 @@ impl Method for Tessellation {
         target: &CoverageTarget,
         camera: &Camera,
     ) -> Result<(), Error> {
-        let (Some(pipelines), Some(scene)) = (&self.pipelines, &mut self.scene) else {
+        let (Some(pipelines), Some(scene)) = (&mut self.pipelines, &mut self.scene) else {
             return Err(super::not_prepared(NAME));
         };
         scene.frame += 1;
@@ -503,6 +535,7 @@ impl Method for Tessellation {
         }
         scene.pack(gpu, &pipelines.layout);
 
+        let draws = pipelines.draws(gpu, target.channels);
         let attachments =
             Attachments::fit(self.attachments.take(), gpu, target, self.samples, false);
         let attachments = self.attachments.insert(attachments);
@@ -523,7 +556,7 @@ impl Method for Tessellation {
         pass.set_bind_group(0, scene.instances.bind_group(), &[]);
         pass.set_bind_group(1, scene.bind_group.as_ref(), &[]);
         pass.set_vertex_buffer(0, packed.vertices.slice(..));
-        pass.set_pipeline(&pipelines.fill);
+        pass.set_pipeline(&draws.fill);
         pass.set_index_buffer(packed.triangles.slice(..), wgpu::IndexFormat::Uint32);
         for (key, instances) in &groups {
             let ranges = scene.meshes.ranges(key).expect("built above");
@@ -533,9 +566,9 @@ impl Method for Tessellation {
                 instances.clone(),
             );
         }
-        match self.overlay {
+        match target.channels.shown(self.overlay) {
             Some(Overlay::TriangleWireframe) => {
-                pass.set_pipeline(&pipelines.edges);
+                pass.set_pipeline(&draws.edges);
                 pass.set_index_buffer(packed.edges.slice(..), wgpu::IndexFormat::Uint32);
                 for (key, instances) in &groups {
                     let ranges = scene.meshes.ranges(key).expect("built above");
@@ -543,7 +576,7 @@ impl Method for Tessellation {
                 }
             }
             Some(Overlay::SubdivisionPoints) => {
-                pass.set_pipeline(&pipelines.markers);
+                pass.set_pipeline(&draws.markers);
                 for (key, instances) in &groups {
                     let markers = &scene.meshes.ranges(key).expect("built above").markers;
                     pass.draw(6 * markers.start..6 * markers.end, instances.clone());

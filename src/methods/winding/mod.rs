@@ -39,7 +39,7 @@ use crate::camera::Camera;
 use crate::geometry::{Rect, keeps_axes, steps_lean_apart};
 use crate::gpu::kit::{self, PipelineBuilder, Slot};
 use crate::gpu::shaders::Shader;
-use crate::gpu::{CoverageTarget, GpuContext};
+use crate::gpu::{Channels, CoverageTarget, GpuContext};
 use crate::scene::Scene;
 
 /// `winding`'s row in the registry.
@@ -422,8 +422,8 @@ pub struct Winding {
     stage: Stage,
     layout: Option<(wgpu::BindGroupLayout, wgpu::PipelineLayout)>,
     /// The pipelines made so far: drawing, and counting once `curves_per_pixel` or the
-    /// cost breakdown asks, per variant drawn.
-    pipelines: Vec<((Output, Variant), wgpu::RenderPipeline)>,
+    /// cost breakdown asks, per variant drawn and kind of target drawn into.
+    pipelines: Vec<((Output, Variant, Channels), wgpu::RenderPipeline)>,
     prepared: Option<Prepared>,
 }
 
@@ -459,8 +459,10 @@ impl Winding {
         gpu: &GpuContext,
         output: Output,
         variant: Variant,
+        channels: Channels,
     ) -> wgpu::RenderPipeline {
-        if let Some((_, pipeline)) = self.pipelines.iter().find(|(k, _)| *k == (output, variant)) {
+        let key = (output, variant, channels);
+        if let Some((_, pipeline)) = self.pipelines.iter().find(|(k, _)| *k == key) {
             return pipeline.clone();
         }
         let s = self.settings;
@@ -481,8 +483,8 @@ impl Winding {
         let layout = &self.layout(gpu).1;
         let pipeline = PipelineBuilder::new(NAME, layout, &module)
             .constants(&constants)
-            .build(&gpu.device);
-        self.pipelines.push(((output, variant), pipeline.clone()));
+            .build(&gpu.device, channels);
+        self.pipelines.push((key, pipeline.clone()));
         pipeline
     }
 
@@ -512,7 +514,7 @@ impl Winding {
             })?;
         let draws: Vec<_> = groups
             .into_iter()
-            .map(|(variant, range)| (self.pipeline(gpu, output, variant), range))
+            .map(|(variant, range)| (self.pipeline(gpu, output, variant, target.channels), range))
             .collect();
         let prepared = self.prepared.as_ref().expect("checked above");
         let mut pass = target.clearing_pass(encoder, NAME);
@@ -579,9 +581,9 @@ impl Method for Winding {
         target: &CoverageTarget,
         camera: &Camera,
     ) -> Result<(), Error> {
-        let output = self
-            .settings
-            .overlay
+        let output = target
+            .channels
+            .shown(self.settings.overlay)
             .map_or(Output::Coverage, Output::Overlay);
         self.draw(gpu, encoder, target, camera, output).map(drop)
     }

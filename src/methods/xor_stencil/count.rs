@@ -29,6 +29,8 @@ pub(super) fn curve_cost(
                 layout: &pipelines.pipeline_layout,
                 shader: &pipelines.shader,
                 samples,
+                channels: target.channels,
+                constants: &[],
             };
             pipelines.count = Some(builder.build(
                 "xor-stencil count",

@@ -62,7 +62,7 @@ use super::{CurveCost, Method, Overlay};
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::msaa::Attachments;
-use crate::gpu::{CoverageTarget, GpuContext};
+use crate::gpu::{Channels, CoverageTarget, GpuContext};
 use crate::scene::Scene;
 use params::OVERLAYS;
 use pipelines::{Pipelines, SHADER};
@@ -149,9 +149,10 @@ impl Method for XorStencil {
         target: &CoverageTarget,
         camera: &Camera,
     ) -> Result<(), Error> {
-        let (Some(pipelines), Some(prepared)) = (&self.pipelines, &mut self.prepared) else {
+        let (Some(pipelines), Some(prepared)) = (&mut self.pipelines, &mut self.prepared) else {
             return Err(super::not_prepared(NAME));
         };
+        let draws = pipelines.draws(gpu, target.channels);
         prepared.update(gpu, pipelines, camera)?;
         let attachments = Attachments::fit(
             self.attachments.take(),
@@ -172,8 +173,8 @@ impl Method for XorStencil {
                 multiview_mask: None,
             });
             if prepared.visible > 0 {
-                record_passes(&mut pass, pipelines, prepared, self.settings.passes);
-                if let Some(lines) = &pipelines.wireframe {
+                record_passes(&mut pass, pipelines, &draws, prepared, self.settings.passes);
+                if let Some(lines) = &draws.wireframe {
                     record_wireframe(&mut pass, lines, pipelines, prepared, self.settings.passes);
                 }
             }
@@ -201,7 +202,7 @@ impl Method for XorStencil {
         gpu: &GpuContext,
         camera: &Camera,
     ) -> Result<Option<CurveCost>, Error> {
-        let target = CoverageTarget::new(gpu, camera.width, camera.height)?;
+        let target = CoverageTarget::new(gpu, camera.width, camera.height, Channels::Picture)?;
         super::frame::render_frame(gpu, self, &target, camera)?;
         let coverage = target.readback(gpu)?;
         let (Some(pipelines), Some(prepared)) = (&mut self.pipelines, &self.prepared) else {

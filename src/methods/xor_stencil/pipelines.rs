@@ -7,9 +7,9 @@ use glam::DVec2;
 
 use super::jitter::jitter_offsets;
 use super::params::{FillRule, NAME, Settings};
-use crate::gpu::GpuContext;
-use crate::gpu::kit::{self, ColorOut, PipelineBuilder, Slot};
+use crate::gpu::kit::{self, ColorOut, PerTarget, PipelineBuilder, Slot};
 use crate::gpu::shaders::Shader;
+use crate::gpu::{Channels, GpuContext};
 use crate::methods::Overlay;
 
 pub(super) const SHADER: Shader = crate::method_shader!("xor_stencil.wgsl");
@@ -17,25 +17,32 @@ pub(super) const SHADER: Shader = crate::method_shader!("xor_stencil.wgsl");
 /// Stencil bit that marks, under even-odd, samples some earlier layer covered.
 pub(super) const COVERED_BIT: u32 = 0x80;
 
-/// Every pipeline of the method, built once per device and settings, and the jitter
-/// uniforms of its passes.
+/// Every pipeline of the method, built once per device, settings and kind of target, and
+/// the jitter uniforms of its passes.
 pub(super) struct Pipelines {
     pub(super) layout: wgpu::BindGroupLayout,
-    /// For the counting pipeline, built later.
     pub(super) pipeline_layout: wgpu::PipelineLayout,
     pub(super) shader: wgpu::ShaderModule,
-    pub(super) fan: wgpu::RenderPipeline,
-    pub(super) curve: wgpu::RenderPipeline,
-    /// Even-odd only: a layer's odd samples → `COVERED_BIT`.
-    pub(super) fold_layer: Option<wgpu::RenderPipeline>,
-    pub(super) cover: wgpu::RenderPipeline,
-    pub(super) wireframe: Option<[wgpu::RenderPipeline; 2]>,
+    settings: Settings,
+    draws: PerTarget<Draws>,
     /// For `curves_per_pixel`, built when first asked.
     pub(super) count: Option<wgpu::RenderPipeline>,
     /// One `Jitter` per pass, and an unshifted one for the overlay, `jitter_stride`
     /// bytes apart.
     pub(super) jitter: wgpu::Buffer,
     pub(super) jitter_stride: u64,
+}
+
+/// The pipelines of a frame into one kind of target (wgpu's handles: a clone shares
+/// them).
+#[derive(Clone)]
+pub(super) struct Draws {
+    pub(super) fan: wgpu::RenderPipeline,
+    pub(super) curve: wgpu::RenderPipeline,
+    /// Even-odd only: a layer's odd samples → `COVERED_BIT`.
+    pub(super) fold_layer: Option<wgpu::RenderPipeline>,
+    pub(super) cover: wgpu::RenderPipeline,
+    pub(super) wireframe: Option<[wgpu::RenderPipeline; 2]>,
 }
 
 /// Stencil state for both faces alike.
@@ -79,12 +86,16 @@ fn wireframe_pipelines(builder: &Builder) -> [wgpu::RenderPipeline; 2] {
     })
 }
 
-/// Compiles one pipeline of the method: its shader, layout and sample count.
+/// Compiles one pipeline of the method: its shader, layout, sample count and kind of
+/// target.
 pub(super) struct Builder<'a> {
     pub(super) device: &'a wgpu::Device,
     pub(super) layout: &'a wgpu::PipelineLayout,
     pub(super) shader: &'a wgpu::ShaderModule,
     pub(super) samples: u32,
+    pub(super) channels: Channels,
+    /// Values of the shader's `override` constants.
+    pub(super) constants: &'a [(&'a str, f64)],
 }
 
 impl Builder<'_> {
@@ -101,6 +112,7 @@ impl Builder<'_> {
     ) -> wgpu::RenderPipeline {
         let builder = PipelineBuilder::new(label, self.layout, self.shader)
             .entry_points(vertex, fragment)
+            .constants(self.constants)
             .topology(topology)
             .samples(self.samples)
             .color(color);
@@ -108,7 +120,7 @@ impl Builder<'_> {
             Some(stencil) => builder.stencil(stencil),
             None => builder,
         }
-        .build(self.device)
+        .build(self.device, self.channels)
     }
 }
 
@@ -125,14 +137,45 @@ impl Pipelines {
         ];
         let layout = kit::layout(gpu, NAME, &slots);
         let pipeline_layout = kit::pipeline_layout(gpu, NAME, Some(&layout));
-        let shader = SHADER.module(device);
-        let builder = Builder {
-            device,
-            layout: &pipeline_layout,
-            shader: &shader,
-            samples: settings.samples,
-        };
+        let jitter_stride = jitter_stride(device);
+        Pipelines {
+            jitter: jitter_buffer(gpu, settings, jitter_stride as usize),
+            jitter_stride,
+            layout,
+            pipeline_layout,
+            shader: SHADER.module(device),
+            settings: *settings,
+            draws: PerTarget::default(),
+            count: None,
+        }
+    }
 
+    /// The pipelines of a frame into targets of `channels`.
+    pub(super) fn draws(&mut self, gpu: &GpuContext, channels: Channels) -> Draws {
+        let overlay = channels.shown(self.settings.overlay);
+        let tint = if overlay.is_some() { OVERLAY_TINT } else { 1.0 };
+        let builder = Builder {
+            device: &gpu.device,
+            layout: &self.pipeline_layout,
+            shader: &self.shader,
+            samples: self.settings.samples,
+            channels,
+            constants: &[("TINT", tint)],
+        };
+        self.draws
+            .get(channels, |_| Draws::new(&builder, &self.settings, overlay))
+            .clone()
+    }
+
+    /// Dynamic offset of pass `k`'s `Jitter` (pass `passes`: the unshifted one).
+    pub(super) fn jitter_offset(&self, k: u32) -> u32 {
+        (u64::from(k) * self.jitter_stride) as u32
+    }
+}
+
+impl Draws {
+    /// The pipelines of `settings`, drawing `overlay` (none into a coverage-only target).
+    fn new(builder: &Builder, settings: &Settings, overlay: Option<Overlay>) -> Draws {
         use wgpu::CompareFunction::{Always, NotEqual};
         use wgpu::PrimitiveTopology::{TriangleList, TriangleStrip};
         use wgpu::StencilOperation::{DecrementWrap, IncrementWrap, Invert, Keep, Replace, Zero};
@@ -185,32 +228,20 @@ impl Pipelines {
             Some(stencil(face(NotEqual, Keep, Zero), cover_mask, 0xff)),
             ColorOut::Add,
         );
-        let wireframe = (settings.overlay == Some(Overlay::TriangleWireframe))
-            .then(|| wireframe_pipelines(&builder));
-        let jitter_stride = jitter_stride(device);
-        Pipelines {
-            jitter: jitter_buffer(gpu, settings, jitter_stride as usize),
-            jitter_stride,
-            layout,
-            pipeline_layout,
-            shader,
+        let wireframe =
+            (overlay == Some(Overlay::TriangleWireframe)).then(|| wireframe_pipelines(builder));
+        Draws {
             fan,
             curve,
             fold_layer,
             cover,
             wireframe,
-            count: None,
         }
-    }
-
-    /// Dynamic offset of pass `k`'s `Jitter` (pass `passes`: the unshifted one).
-    pub(super) fn jitter_offset(&self, k: u32) -> u32 {
-        (u64::from(k) * self.jitter_stride) as u32
     }
 }
 
 /// Grey level of coverage under the wireframe, so that the lines stand out.
-const OVERLAY_TINT: f32 = 0.45;
+const OVERLAY_TINT: f64 = 0.45;
 
 /// The `Jitter` uniform of `xor_stencil.wgsl`, one per pass at the device's uniform
 /// offset alignment.
@@ -219,7 +250,7 @@ const OVERLAY_TINT: f32 = 0.45;
 pub(super) struct Jitter {
     offset: [f32; 2],
     weight: f32,
-    tint: f32,
+    _pad: f32,
 }
 
 /// Bytes between two passes' `Jitter`s: the device's uniform offset alignment.
@@ -230,18 +261,13 @@ fn jitter_stride(device: &wgpu::Device) -> u64 {
 /// The `Jitter` entries of every pass of `settings`, and an unshifted one last.
 fn jitter_buffer(gpu: &GpuContext, settings: &Settings, stride: usize) -> wgpu::Buffer {
     let offsets = jitter_offsets(settings.passes, settings.samples);
-    let tint = if settings.overlay.is_some() {
-        OVERLAY_TINT
-    } else {
-        1.0
-    };
     let weight = 1.0 / settings.passes as f32;
     let mut bytes = vec![0u8; stride * (offsets.len() + 1)];
     for (k, offset) in offsets.iter().chain([&DVec2::ZERO]).enumerate() {
         let entry = Jitter {
             offset: offset.as_vec2().to_array(),
             weight,
-            tint,
+            _pad: 0.0,
         };
         bytes[k * stride..][..size_of::<Jitter>()].copy_from_slice(bytemuck::bytes_of(&entry));
     }

@@ -10,7 +10,7 @@ use std::ops::Range;
 use super::geometry::{Geometry, tolerance_halvings};
 use super::layers::disjoint_layers;
 use super::params::{FillRule, NAME};
-use super::pipelines::{COVERED_BIT, Jitter, Pipelines};
+use super::pipelines::{COVERED_BIT, Draws, Jitter, Pipelines};
 use crate::Error;
 use crate::camera::Camera;
 use crate::geometry::{Segment, jacobian_bound};
@@ -164,6 +164,7 @@ impl Prepared {
 pub(super) fn record_passes(
     pass: &mut wgpu::RenderPass<'_>,
     pipelines: &Pipelines,
+    draws: &Draws,
     prepared: &Prepared,
     passes: u32,
 ) {
@@ -172,13 +173,13 @@ pub(super) fn record_passes(
         pass.set_bind_group(1, &prepared.bind_group, &[pipelines.jitter_offset(k)]);
         for layer in prepared.runs.chunk_by(|a, b| a.layer == b.layer) {
             for (pipeline, ranges) in [
-                (&pipelines.fan, &prepared.geometry.fan_ranges),
-                (&pipelines.curve, &prepared.geometry.curve_ranges),
+                (&draws.fan, &prepared.geometry.fan_ranges),
+                (&draws.curve, &prepared.geometry.curve_ranges),
             ] {
                 pass.set_pipeline(pipeline);
                 draw_runs(pass, layer, ranges, 1);
             }
-            if let Some(fold) = &pipelines.fold_layer {
+            if let Some(fold) = &draws.fold_layer {
                 pass.set_pipeline(fold);
                 pass.set_stencil_reference(COVERED_BIT);
                 let first = layer[0].instances.start;
@@ -186,7 +187,7 @@ pub(super) fn record_passes(
                 pass.draw(0..4, first..last);
             }
         }
-        pass.set_pipeline(&pipelines.cover);
+        pass.set_pipeline(&draws.cover);
         pass.set_stencil_reference(0);
         pass.draw(0..4, 0..prepared.visible);
     }
