@@ -5,17 +5,25 @@
 //! The bench finds methods through the registry: every benched row, the baseline by its
 //! role. Two of its choices are one method's business and are named here alone: the
 //! baseline's glyph cache, pinned at each scene's own size (what "after caching"
-//! means: `atlas`' `cache_px_per_em`), and [`CONTRAST`], the method `--quick` keeps
-//! after caching and the report sets against the peers.
+//! means: `atlas`' `cache_px_per_em`), [`CONTRAST`], the method `--quick` keeps
+//! after caching and the report sets against the peers, and [`SHIPPED`], the peer every
+//! time is also divided by.
 
 use crate::methods::info::MethodInfo;
 use crate::methods::params;
+use crate::methods::peers::glyphon;
 use crate::methods::{atlas, winding};
 
 /// glyphscope's own method that the bench sets beside the baseline and the peers:
 /// `--quick` keeps its default after caching, and the report's peers table compares
 /// each peer with it.
 pub const CONTRAST: &MethodInfo = &winding::INFO;
+
+/// The renderer people ship, the report's second yardstick: every time is also quoted
+/// over this peer's default in the same view ("× glyphon"), where it can draw the view.
+/// The atlas is the floor of glyphscope's own harness; this is the floor of what is
+/// used.
+pub const SHIPPED: &MethodInfo = &glyphon::INFO;
 
 /// The baseline's parameter that pins the size its glyphs are cached at.
 const BASELINE_CACHE_KEY: &str = "cache_px_per_em";

@@ -3,7 +3,7 @@
 
 use std::fmt::Write;
 
-use super::method_settings::{CONTRAST, setting_name};
+use super::method_settings::{CONTRAST, SHIPPED, setting_name};
 use super::numbers::{kb_or_mb, sig};
 use super::result::{BenchResult, Measurement, Refusal, SceneCamera, SceneInfo};
 use super::{motion, scaling, scenes, winding_cost};
@@ -20,6 +20,29 @@ pub fn ratio_to_baseline(result: &BenchResult, case: &Measurement) -> Option<f64
     }
     let baseline = result.baseline_in(&case.scene, case.scene_camera)?;
     Some(case.frame_ms? / baseline.frame_ms?)
+}
+
+/// A case's time per frame (GPU + CPU) over [`SHIPPED`]'s default (glyphon) in the same
+/// scene and view, where glyphon drew it.
+pub fn ratio_to_shipped(result: &BenchResult, case: &Measurement) -> Option<f64> {
+    if case.is_reference() {
+        return None;
+    }
+    let shipped = result.default_case_in(SHIPPED.name, &case.scene, case.scene_camera)?;
+    Some(case.frame_ms? / shipped.frame_ms?)
+}
+
+/// [`ratio_to_shipped`] as a cell: `n/a` where glyphon cannot draw the view (the peers'
+/// table says why), `—` where it was not run.
+pub fn shipped_cell(result: &BenchResult, case: &Measurement) -> String {
+    let refused = result
+        .refusal_in(SHIPPED.name, &case.scene, case.scene_camera)
+        .is_some();
+    match ratio_to_shipped(result, case) {
+        Some(r) => format!("{r:.2}"),
+        None if refused => "n/a".into(),
+        None => "—".into(),
+    }
 }
 
 /// The fastest GPU case of `cases` (by GPU + CPU time per frame) whose mean error is at
@@ -129,9 +152,9 @@ fn scene_sections(result: &BenchResult, clock: &str, md: &mut String) {
             info.atlas_cache_px_per_em
         );
         md.push_str(
-            "| method | settings | GPU ms | CPU/frame ms | × atlas | CPU prep ms | GPU mem | \
-             curves/px | points | MAE /255 | edge MAE /255 | p99 /255 | max | > 0.5 |\n\
-             |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+            "| method | settings | GPU ms | CPU/frame ms | × atlas | × glyphon | CPU prep ms | \
+             GPU mem | curves/px | points | MAE /255 | edge MAE /255 | p99 /255 | max | > 0.5 |\n\
+             |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
         );
         for case in &cases {
             let time = match (case.gpu_ms, case.gpu_ms_range) {
@@ -141,12 +164,13 @@ fn scene_sections(result: &BenchResult, clock: &str, md: &mut String) {
             };
             let _ = writeln!(
                 md,
-                "| {} | {} | {time} | {} | {} | {} | {} | {} | {} | {:.2} | {:.2} | {:.1} | {:.3} \
-                 | {} |",
+                "| {} | {} | {time} | {} | {} | {} | {} | {} | {} | {} | {:.2} | {:.2} | {:.1} \
+                 | {:.3} | {} |",
                 case.method,
                 case.settings(),
                 case.cpu_frame_ms.map_or("—".into(), sig),
                 ratio_to_baseline(result, case).map_or("—".into(), |r| format!("{r:.2}")),
+                shipped_cell(result, case),
                 case.cpu_render_ms
                     .map_or_else(|| sig(case.cpu_prepare_ms), sig),
                 kb_or_mb(case.gpu_bytes),
@@ -166,7 +190,7 @@ fn scene_sections(result: &BenchResult, clock: &str, md: &mut String) {
         for refusal in refusals_of(result, info) {
             let _ = writeln!(
                 md,
-                "| {} | {} | n/a — {} | | | | | | | | | | | |",
+                "| {} | {} | n/a — {} | | | | | | | | | | | | |",
                 refusal.method,
                 setting_name(&refusal.params),
                 refusal.reason
@@ -191,23 +215,24 @@ fn scene_sections(result: &BenchResult, clock: &str, md: &mut String) {
         }
         md.push_str(
             "\nFastest at each error level (no pixel off by more than 0.5):\n\n\
-             | MAE ≤ /255 | fastest | settings | GPU + CPU ms | × atlas |\n\
-             |---:|---|---|---:|---:|\n",
+             | MAE ≤ /255 | fastest | settings | GPU + CPU ms | × atlas | × glyphon |\n\
+             |---:|---|---|---:|---:|---:|\n",
         );
         for &level in ERROR_LEVELS {
             match fastest_within(&cases, level) {
                 Some(c) => {
                     let _ = writeln!(
                         md,
-                        "| {level} | {} | {} | {} | {} |",
+                        "| {level} | {} | {} | {} | {} | {} |",
                         c.method,
                         c.settings(),
                         c.frame_ms.map_or("—".into(), sig),
-                        ratio_to_baseline(result, c).map_or("—".into(), |r| format!("{r:.2}"))
+                        ratio_to_baseline(result, c).map_or("—".into(), |r| format!("{r:.2}")),
+                        shipped_cell(result, c),
                     );
                 }
                 None => {
-                    let _ = writeln!(md, "| {level} | none | | | |");
+                    let _ = writeln!(md, "| {level} | none | | | | |");
                 }
             }
         }
@@ -223,7 +248,8 @@ fn summary(result: &BenchResult, md: &mut String) {
         "## Summary\n\nPer scene and view (*moved*: after caching, zoomed and turned): the \
          atlas baseline's error, the most accurate GPU case, and the fastest case within a \
          mean error of 0.5/255 and 1/255 with no pixel off by more than 0.5, with its GPU + \
-         CPU time per frame over the atlas's.\n\n\
+         CPU time per frame over the atlas's and over glyphon's (`n/a` where glyphon cannot \
+         draw the view).\n\n\
          | scene | view | atlas MAE /255 (max) | most accurate | fastest, MAE ≤ 0.5 | fastest, MAE ≤ 1 |\n\
          |---|---|---:|---|---|---|\n",
     );
@@ -254,7 +280,11 @@ fn summary(result: &BenchResult, md: &mut String) {
             fastest_within(&cases, level).map_or("none".into(), |c| {
                 let ratio =
                     ratio_to_baseline(result, c).map_or("—".into(), |r| format!("{r:.2}"));
-                format!("{} ({ratio}×)", named(c))
+                format!(
+                    "{} ({ratio}× atlas, {}× glyphon)",
+                    named(c),
+                    shipped_cell(result, c)
+                )
             })
         });
         let view = info.scene_camera.name();
@@ -287,7 +317,7 @@ fn peers_summary(result: &BenchResult, md: &mut String) {
     let _ = write!(
         md,
         "## {} against the peers\n\nEach at its default: × atlas (GPU + CPU per frame \
-         over the atlas's, this run) · MAE /255 · edge MAE /255 · max · pixels > 0.5, or \
+         over the atlas's, this run) · × glyphon (over glyphon's) · MAE /255 · edge MAE /255 · max · pixels > 0.5, or \
          why the peer cannot draw the view. The peers draw into 8-bit textures: up to \
          1/510 per edge pixel is their floor.\n\n| scene | view | {ours} |",
         capitalized(ours)
@@ -305,8 +335,9 @@ fn peers_summary(result: &BenchResult, md: &mut String) {
                 .find(|c| c.method == method && c.settings() == "default")
             {
                 format!(
-                    "{} · {:.2} · {:.2} · {:.3} · {}",
+                    "{} · {}× · {:.2} · {:.2} · {:.3} · {}",
                     ratio_to_baseline(result, c).map_or("—".into(), |r| format!("{r:.2}×")),
+                    shipped_cell(result, c),
                     c.error.mae_255,
                     c.error.edge.mae_255,
                     c.error.max,
@@ -336,7 +367,7 @@ fn peers_summary(result: &BenchResult, md: &mut String) {
 pub fn csv(result: &BenchResult) -> String {
     let mut out = String::from(
         "scene,view,method,settings,gpu_ms,gpu_ms_min,gpu_ms_max,cpu_frame_ms,frame_ms,\
-         ratio_to_atlas,cpu_prepare_ms,cpu_render_ms,mesh_build_ms,gpu_bytes,\
+         ratio_to_atlas,ratio_to_glyphon,cpu_prepare_ms,cpu_render_ms,mesh_build_ms,gpu_bytes,\
          curves_per_pixel_mean,curves_per_pixel_max,mesh_points,mae_255,p99_255,rmse_255,max,\
          pixels_over_025,pixels_over_05,pixels,invalid_pixels,edge_pixels,edge_mae_255,\
          edge_max,edge_pixels_over_025,edge_pixels_over_05,refused\n",
@@ -347,7 +378,7 @@ pub fn csv(result: &BenchResult) -> String {
         let _ = writeln!(
             out,
             "{},{},{},\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\
-             {},{},{},{},",
+             {},{},{},{},{},",
             c.scene,
             serde_json::to_value(c.scene_camera)
                 .expect("a view serializes")
@@ -361,6 +392,7 @@ pub fn csv(result: &BenchResult) -> String {
             opt(c.cpu_frame_ms),
             opt(c.frame_ms),
             opt(ratio_to_baseline(result, c)),
+            opt(ratio_to_shipped(result, c)),
             c.cpu_prepare_ms,
             opt(c.cpu_render_ms),
             opt(c.mesh_build_ms),
@@ -396,7 +428,7 @@ pub fn csv(result: &BenchResult) -> String {
                 .unwrap_or(""),
             r.method,
             setting_name(&r.params),
-            ",".repeat(26),
+            ",".repeat(27),
             r.reason.replace('"', "'")
         );
     }

@@ -264,4 +264,29 @@ impl BenchResult {
             .iter()
             .find(|c| c.scene == scene && c.scene_camera == view && c.is_baseline())
     }
+
+    /// The default case of `method` in `scene`'s `view`, if it was measured there.
+    pub fn default_case_in(
+        &self,
+        method: &str,
+        scene: &str,
+        view: SceneCamera,
+    ) -> Option<&Measurement> {
+        self.measurements.iter().find(|c| {
+            c.scene == scene
+                && c.scene_camera == view
+                && c.method == method
+                && c.settings() == "default"
+        })
+    }
+
+    /// Why `method`'s default could not draw `scene`'s `view`, if it refused it.
+    pub fn refusal_in(&self, method: &str, scene: &str, view: SceneCamera) -> Option<&Refusal> {
+        self.refusals.iter().find(|r| {
+            r.scene == scene
+                && r.scene_camera == view
+                && r.method == method
+                && method_settings::setting_name(&r.params) == "default"
+        })
+    }
 }
