@@ -5,7 +5,7 @@ mod common;
 
 use std::path::PathBuf;
 
-use common::binary::{bin, run, scratch};
+use common::binary::{bin, run, run_within, scratch};
 
 /// Runs `args` and checks the command succeeded, showing its stderr if not.
 fn run_ok(args: &[&str]) {
@@ -304,6 +304,80 @@ fn bad_input_fails_cleanly() {
         "1 to 4 ASCII",
     );
     fails("no text", &base, "give --text or --glyph-id");
+    // cosmic-text panics on a font size of 0, which 1e-50 px/em is in its f32.
+    fails(
+        "vanishing size for glyphon",
+        &["--text", "a", "--size", "1e-50", "--method", "glyphon"],
+        "rounds to 0",
+    );
+}
+
+/// `bytes`, a TrueType or OpenType font, with its `hhea` ascender and descender
+/// overwritten (the rest intact, the table's checksum left stale, as a damaged file
+/// has it). The table directory is read here by hand, from the OpenType specification's
+/// layout: `numTables` at byte 4, 16-byte records (tag, checksum, offset, length) from
+/// byte 12; `hhea` holds `ascender` at byte 4 and `descender` at byte 6, big-endian.
+fn with_hhea_extents(mut bytes: Vec<u8>, ascender: i16, descender: i16) -> Vec<u8> {
+    let be16 = |b: &[u8], at: usize| usize::from(u16::from_be_bytes([b[at], b[at + 1]]));
+    let be32 = |b: &[u8], at: usize| u32::from_be_bytes(b[at..at + 4].try_into().unwrap());
+    let hhea = (0..be16(&bytes, 4))
+        .map(|i| 12 + 16 * i)
+        .find(|&record| &bytes[record..record + 4] == b"hhea")
+        .map(|record| be32(&bytes, record + 8) as usize)
+        .expect("the font has an hhea table");
+    bytes[hhea + 4..hhea + 6].copy_from_slice(&ascender.to_be_bytes());
+    bytes[hhea + 6..hhea + 8].copy_from_slice(&descender.to_be_bytes());
+    bytes
+}
+
+/// A font whose `hhea` gives lines a negative height (DejaVu Sans with ascender −10 629
+/// and descender +23 581, line gap 0: −34 210 units) once hung glyphon, inside
+/// cosmic-text's layout. Every method and peer must end within seconds, by a drawn frame
+/// (exit 0) or one line naming what it cannot draw (exit 2), never a panic; glyphon's
+/// line names the height. The run is bounded, so a hang fails here.
+#[test]
+fn a_font_with_negative_line_height_ends_every_method_within_seconds() {
+    let font = scratch("negative-line-height.ttf");
+    let dejavu = std::fs::read("fonts/DejaVuSans.ttf").unwrap();
+    std::fs::write(&font, with_hhea_extents(dejavu, -10629, 23581)).unwrap();
+    let limit = std::time::Duration::from_secs(30);
+    for method in glyphscope::methods::registry::names() {
+        let out = scratch(&format!("negative-line-height-{method}.png"));
+        let _ = std::fs::remove_file(&out);
+        let args = [
+            "render",
+            "--font",
+            font.to_str().unwrap(),
+            "--text",
+            "Hamburgefonstiv ffi 123\\nline two",
+            "--size",
+            "24",
+            "--method",
+            method,
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        let started = std::time::Instant::now();
+        let result = run_within(&args, limit)
+            .unwrap_or_else(|| panic!("{method}: still running after {limit:?}"));
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        let code = result.status.code();
+        println!("{method}: exit {code:?} in {:?}", started.elapsed());
+        assert!(!stderr.contains("panicked"), "{method}: panic: {stderr}");
+        match method {
+            // The file is a usable font: a method of glyphscope's draws it.
+            "winding" => assert_eq!(code, Some(0), "{method}: {stderr}"),
+            "glyphon" => {
+                assert_eq!(code, Some(2), "{method}: {stderr}");
+                assert!(
+                    stderr.contains("-34210 units high") && stderr.lines().count() == 1,
+                    "{method}: {stderr}"
+                );
+            }
+            _ => assert!(matches!(code, Some(0 | 2)), "{method}: {code:?}, {stderr}"),
+        }
+        assert_eq!(out.exists(), code == Some(0), "{method}: image iff drawn");
+    }
 }
 
 /// Runs `info` with no display to open, returning (exit code, stdout, stderr).

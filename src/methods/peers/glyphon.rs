@@ -125,6 +125,26 @@ pub fn weight_for(
     }
 }
 
+/// The line advance, in font units, glyphon is given for `font` (glyphscope's: ascender
+/// − descender + line gap), refused unless positive. cosmic-text 0.19 cannot lay out
+/// lines that are not: `Buffer::set_metrics` panics on a line height of 0, and
+/// `Buffer::shape_until_scroll` never ends on a negative one in a buffer of unbounded
+/// height, as glyphon's is here — it scrolls past the first line (whose height is not
+/// above the scroll offset, 0), finds the laid-out height short of the unbounded view,
+/// scrolls back up by an infinite amount to the first line, and starts again.
+fn positive_line_advance(font: &crate::font::Font) -> Result<f64, Error> {
+    let (ascender, descender, line_gap) = font.line_metrics();
+    let advance = ascender - descender + line_gap;
+    if advance > 0.0 {
+        return Ok(advance);
+    }
+    Err(Error::Refused(format!(
+        "glyphon cannot lay out this font: its lines would be {advance} units high \
+         (ascender {ascender}, descender {descender}, line gap {line_gap}), and \
+         cosmic-text's layout never ends on a line height ≤ 0"
+    )))
+}
+
 /// The font size, in pixels, glyphon draws `camera` at: the camera's map must be a
 /// uniform scale (and translation); anything else is refused.
 fn font_size_px(camera: &Camera, units_per_em: f64) -> Result<f64, Error> {
@@ -151,11 +171,20 @@ impl Prepared {
     /// Lays the text out at `font_size` pixels per em if it is not already: the text
     /// is set once, a new size only changes the metrics, as an application zooming
     /// its text would.
-    fn lay_out(&mut self, font_size: f64) {
+    fn lay_out(&mut self, font_size: f64) -> Result<(), Error> {
         let line_height = self.line_advance_units / self.scene.units_per_em * font_size;
         let metrics = Metrics::new(font_size as f32, line_height as f32);
         if self.laid_out_at == Some(metrics) {
-            return;
+            return Ok(());
+        }
+        // cosmic-text's `Buffer::set_metrics` panics on a font size or line height of 0:
+        // positive in f64 (prepare checked the line advance), a tiny size can still
+        // round to 0 in f32.
+        if !(metrics.font_size > 0.0 && metrics.line_height > 0.0) {
+            return Err(Error::Refused(format!(
+                "glyphon cannot lay out text at {font_size:e} px/em: its size or line height \
+                 rounds to 0 in cosmic-text's f32 metrics"
+            )));
         }
         if self.laid_out_at.is_none() {
             let flags = if self.hint {
@@ -173,6 +202,7 @@ impl Prepared {
         self.buffer.set_metrics(metrics);
         self.buffer.shape_until_scroll(&mut self.font_system, false);
         self.laid_out_at = Some(metrics);
+        Ok(())
     }
 
     /// Each glyph of glyphon's layout: its id, its pen as laid out from the exact
@@ -234,6 +264,7 @@ impl Method for Glyphon {
             return refuse("this scene is one glyph drawn by its id, not text");
         };
         let weight = weight_for(&source.font.variations(), &source.font.axes())?;
+        let line_advance_units = positive_line_advance(&source.font)?;
         // The scene's font alone: no system font to fall back on or be matched instead.
         let bytes: Arc<dyn AsRef<[u8]> + Send + Sync> = Arc::new(source.font.data());
         let mut db = glyphon::fontdb::Database::new();
@@ -270,7 +301,6 @@ impl Method for Glyphon {
         // No wrapping: each line of the text is one line of the layout.
         let mut buffer = Buffer::new_empty(Metrics::new(1.0, 1.0));
         buffer.set_size(None, None);
-        let (ascender, descender, line_gap) = source.font.line_metrics();
         self.prepared = Some(Prepared {
             font_system,
             swash: SwashCache::new(),
@@ -284,7 +314,7 @@ impl Method for Glyphon {
             laid_out_at: None,
             text: text.clone(),
             scene: scene.clone(),
-            line_advance_units: ascender - descender + line_gap,
+            line_advance_units,
             largest_glyph_units: scene
                 .glyphs
                 .iter()
@@ -313,7 +343,7 @@ impl Method for Glyphon {
                  px across, past the largest atlas texture ({atlas_side} px)"
             )));
         }
-        prepared.lay_out(font_size);
+        prepared.lay_out(font_size)?;
         let (exact, area) = prepared.area_origin(camera);
         prepared.viewport.update(
             &gpu.queue,
