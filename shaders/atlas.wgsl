@@ -31,13 +31,27 @@ fn translation(shift: vec2<f32>) -> mat3x3<f32> {
     return mat3x3<f32>(vec3<f32>(1.0, 0.0, 0.0), vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(shift, 1.0));
 }
 
+// What the atlas's fragments receive: the quad (its map to local coordinates) and its
+// bitmap's frame in the atlas, read once per vertex rather than once per fragment.
+struct AtlasQuad {
+    @builtin(position) position: vec4<f32>,
+    @location(0) @interpolate(flat) to_local_0: vec3<f32>,
+    @location(1) @interpolate(flat) to_local_1: vec3<f32>,
+    @location(2) @interpolate(flat) to_local_2: vec3<f32>,
+    // `Entry.origin` and `texels_per_unit`.
+    @location(3) @interpolate(flat) origin: vec3<f32>,
+    // The bitmap's texel centres at its edges: where a sample is kept (see
+    // `sampled_coverage`).
+    @location(4) @interpolate(flat) inside: vec4<f32>,
+}
+
 @vertex
-fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u32) -> GlyphQuad {
+fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u32) -> AtlasQuad {
     return atlas_quad(vertex, index);
 }
 
-// Strip vertex `vertex` of instance `index`'s quad.
-fn atlas_quad(vertex: u32, index: u32) -> GlyphQuad {
+// Strip vertex `vertex` of instance `index`'s quad, snapped to its phase.
+fn atlas_quad(vertex: u32, index: u32) -> AtlasQuad {
     var inst = instances[index];
     // One bitmap per glyph when nothing snaps (PHASES = 0).
     let phases = max(PHASES, 1u);
@@ -56,10 +70,9 @@ fn atlas_quad(vertex: u32, index: u32) -> GlyphQuad {
     let e = entries[entry];
     // No pixel footprint: a pixel centre outside the bitmap's rectangle reads its zero
     // border (see `sampled_coverage`), so no pixel beyond it can add anything.
-    var quad = glyph_quad(inst, e.quad.xy, e.quad.zw, vertex, frame.size, false);
-    // Here the quad's `glyph` names the bitmap: the glyph at its phase.
-    quad.glyph = entry;
-    return quad;
+    let q = glyph_quad(inst, e.quad.xy, e.quad.zw, vertex, frame.size, false);
+    let inside = vec4<f32>(e.texels.xy + 0.5, e.texels.zw - 0.5);
+    return AtlasQuad(q.position, q.to_local_0, q.to_local_1, q.to_local_2, vec3<f32>(e.origin, e.texels_per_unit), inside);
 }
 
 // How much of the fragment runs: all of it (3) but in the harness breakdown of
@@ -69,36 +82,37 @@ fn atlas_quad(vertex: u32, index: u32) -> GlyphQuad {
 override STAGE: u32 = 3u;
 
 @fragment
-fn fs_main(in: GlyphQuad) -> @location(0) vec4<f32> {
+fn fs_main(in: AtlasQuad) -> @location(0) vec4<f32> {
     if STAGE == 1u {
         return vec4<f32>(1.0);
     }
-    let local = quad_local(in);
+    let local = project(mat3x3<f32>(in.to_local_0, in.to_local_1, in.to_local_2), in.position.xy);
     if STAGE == 2u {
         // Depends on the position, so that the map is not optimized away.
         return vec4<f32>(f32(local.x != 1e30));
     }
-    return vec4<f32>(sampled_coverage(entries[in.glyph], local));
+    return vec4<f32>(sampled_coverage(in.origin, in.inside, local));
 }
 
 // The bitmap's coverage at a local point.
-fn sampled_coverage(e: Entry, local: vec2<f32>) -> f32 {
-    let texel = e.origin + vec2<f32>(local.x, -local.y) * e.texels_per_unit;
-    // Kept on the bitmap's own texels (its zero border included): pixels of the quad's
-    // dilation beyond it read that border, never a neighbour's bitmap.
-    let inside = clamp(texel, e.texels.xy + 0.5, e.texels.zw - 0.5);
+fn sampled_coverage(origin: vec3<f32>, inside: vec4<f32>, local: vec2<f32>) -> f32 {
+    let texel = origin.xy + vec2<f32>(local.x, -local.y) * origin.z;
+    // Kept on the bitmap's own texels (its zero border included): pixels of the quad
+    // beyond them read that border, never a neighbour's bitmap.
+    let kept = clamp(texel, inside.xy, inside.zw);
     let size = vec2<f32>(textureDimensions(atlas));
-    return textureSampleLevel(atlas, atlas_sampler, inside / size, 0.0).r;
+    return textureSampleLevel(atlas, atlas_sampler, kept / size, 0.0).r;
 }
 
 // The harness breakdown's other way to find a fragment's local position: interpolated
 // from the quad's corners, as text renderers do (glyphon interpolates its texture
-// coordinates), instead of mapping each pixel centre (`quad_local`, which common.wgsl
-// says why every method does). Exact for the bench's affine views, not under a tilt.
+// coordinates), instead of mapping each pixel centre (which common.wgsl says why every
+// method does). Exact for the bench's affine views, not under a tilt.
 struct InterpolatedQuad {
     @builtin(position) position: vec4<f32>,
     @location(0) local: vec2<f32>,
-    @location(1) @interpolate(flat) entry: u32,
+    @location(3) @interpolate(flat) origin: vec3<f32>,
+    @location(4) @interpolate(flat) inside: vec4<f32>,
 }
 
 @vertex
@@ -108,10 +122,10 @@ fn vs_interpolated(@builtin(vertex_index) vertex: u32, @builtin(instance_index) 
     // The corner's image point, back from clip space.
     let w = quad.position.w;
     let image = vec2<f32>(quad.position.x + w, w - quad.position.y) * 0.5 * frame.size / w;
-    return InterpolatedQuad(quad.position, project(to_local, image), quad.glyph);
+    return InterpolatedQuad(quad.position, project(to_local, image), quad.origin, quad.inside);
 }
 
 @fragment
 fn fs_interpolated(in: InterpolatedQuad) -> @location(0) vec4<f32> {
-    return vec4<f32>(sampled_coverage(entries[in.entry], in.local));
+    return vec4<f32>(sampled_coverage(in.origin, in.inside, in.local));
 }
