@@ -223,7 +223,10 @@ mod tests {
         };
         let scene = Scene::from_outlines(
             1000.0,
-            vec![(overlapping.clone(), DVec2::ZERO), (alone.clone(), DVec2::ZERO)],
+            vec![
+                (overlapping.clone(), DVec2::ZERO),
+                (alone.clone(), DVec2::ZERO),
+            ],
         );
         assert!(scene.glyphs.iter().all(|g| g.union.get().is_none()));
         let merged = scene.clone().with_overlaps_merged();

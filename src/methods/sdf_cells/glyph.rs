@@ -75,7 +75,10 @@ impl PreparedGlyph {
         // font-demo holds every cell, for glyphs whose curves all begin within its reach.
         while settings.encoding == EncodingChoice::Packed
             && settings.grid == GridChoice::Auto
-            && layout.curve_slots.last().is_none_or(|&last| last <= MAX_BEGIN_SLOT)
+            && layout
+                .curve_slots
+                .last()
+                .is_none_or(|&last| last <= MAX_BEGIN_SLOT)
             && cells.escaped > 0
             && grid.cols.max(grid.rows) < MAX_PACKING_SIDE
         {
