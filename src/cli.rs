@@ -53,8 +53,34 @@ pub enum Command {
     /// plot of temporal error and an animated picture of a magnified window.
     Motion(Box<MotionArgs>),
     /// Print which outline table a font uses (and why), its units per em and axes, and
-    /// for the glyphs asked for their advance, lsb, xMin and the shift applied to them.
+    /// for the glyphs asked for their advance, lsb, xMin and the shift applied to them;
+    /// with --gpu, the adapter the other commands draw with.
     Info(InfoArgs),
+}
+
+impl Command {
+    /// The adapter the command asks for by name, if any: the binary offers SwiftShader
+    /// to the Vulkan loader only then (see [`crate::gpu::offer_swiftshader`]).
+    pub fn adapter(&self) -> Option<&str> {
+        match self {
+            Command::Render(args) => args.adapter.adapter.as_deref(),
+            Command::Bench(args) => args.adapter.adapter.as_deref(),
+            Command::Motion(args) => args.adapter.adapter.as_deref(),
+            Command::Info(args) => args.adapter.adapter.as_deref(),
+            Command::Screenshots(_) | Command::Stability(_) => None,
+        }
+    }
+}
+
+/// The adapter a command draws with, for the commands that time or compare drawings.
+#[derive(Args, Clone, Debug)]
+pub struct AdapterArgs {
+    /// Draw with the adapter whose name contains NAME (case-insensitive), e.g.
+    /// `swiftshader` (Chromium's software Vulkan, where Debian's chromium is installed)
+    /// or `llvmpipe`; overrides WGPU_ADAPTER_NAME. The default is wgpu's choice. A name
+    /// that matches none lists the adapters found.
+    #[arg(long, value_name = "NAME")]
+    pub adapter: Option<String>,
 }
 
 #[derive(Args, Clone, Debug)]
@@ -78,6 +104,16 @@ pub struct InfoArgs {
     /// Variable-font axis values, TAG=VALUE[,TAG=VALUE...]; a short tag is space-padded.
     #[arg(long, value_delimiter = ',', value_parser = parse_variation)]
     pub variation: Vec<(String, f32)>,
+    /// Report the GPU adapter instead of a font: its name, backend, driver and device
+    /// type, as `render`, `bench` and `motion` would open it (with the same --adapter).
+    #[arg(long, conflicts_with_all = ["font", "text", "glyph_id", "variation"])]
+    pub gpu: bool,
+    #[command(flatten)]
+    pub adapter: AdapterArgs,
+    /// With --gpu: refuse (one line, exit 2) where the adapter is a CPU implementation
+    /// such as lavapipe or SwiftShader, whose timings say nothing of a GPU.
+    #[arg(long, requires = "gpu")]
+    pub require_hardware: bool,
 }
 
 #[derive(Args, Clone, Debug)]
@@ -128,14 +164,21 @@ pub struct BenchArgs {
     /// scenes page and tiny unless --scenes names others; no --methods).
     #[arg(long, conflicts_with_all = ["methods", "scaling_points"])]
     pub harness: bool,
+    #[command(flatten)]
+    pub adapter: AdapterArgs,
 }
 
 /// `glyphscope bench`: runs the bench and writes its outputs; the path of the report on
 /// stdout.
 pub fn run_bench(args: &BenchArgs) -> Result<(), Error> {
     if args.harness {
-        let report =
-            crate::bench::harness::run_to(&args.scenes, args.quick, args.frames, &args.out)?;
+        let report = crate::bench::harness::run_to(
+            &args.scenes,
+            args.quick,
+            args.frames,
+            args.adapter.adapter.as_deref(),
+            &args.out,
+        )?;
         println!("{}", report.display());
         return Ok(());
     }
@@ -145,6 +188,7 @@ pub fn run_bench(args: &BenchArgs) -> Result<(), Error> {
         methods: args.methods.clone(),
         frames: args.frames,
         scaling_points: args.scaling_points,
+        adapter: args.adapter.adapter.clone(),
     };
     crate::bench::run_to(&options, &args.out)?;
     println!("{}", args.out.join("bench.md").display());
@@ -206,6 +250,8 @@ pub struct MotionArgs {
     /// Folder for motion.csv, motion.md, motion.json, temporal.svg and motion.png.
     #[arg(long, default_value = "motion-out")]
     pub out: PathBuf,
+    #[command(flatten)]
+    pub adapter: AdapterArgs,
 }
 
 /// `glyphscope render`'s arguments: a view, the method that draws it, and what to write.
@@ -249,6 +295,8 @@ pub struct RenderArgs {
     /// curves and their points).
     #[arg(long = "overlay", value_delimiter = ',')]
     pub overlays: Vec<PictureOverlay>,
+    #[command(flatten)]
+    pub adapter: AdapterArgs,
 }
 
 /// `--method`'s help: the registry's names and summaries.
@@ -269,6 +317,7 @@ pub fn run_render(args: &RenderArgs) -> Result<(), Error> {
         magnify: args.magnify,
         focus: args.focus,
         overlays: args.overlays.clone(),
+        adapter: args.adapter.adapter.clone(),
     })
 }
 
@@ -315,13 +364,24 @@ pub fn run_motion(args: &MotionArgs) -> Result<(), Error> {
         focus: args.focus,
         out: args.out.clone(),
         command: format!("glyphscope {command}"),
+        adapter: args.adapter.adapter.clone(),
     })?;
     print!("{summary}");
     Ok(())
 }
 
-/// `glyphscope info`: prints the font's report.
+/// `glyphscope info`: prints the font's report, or with `--gpu` the adapter's.
 pub fn run_info(args: &InfoArgs) -> Result<(), Error> {
+    let adapter = args.adapter.adapter.as_deref();
+    if args.gpu {
+        print!("{}", crate::info::gpu(adapter, args.require_hardware)?);
+        return Ok(());
+    }
+    if adapter.is_some() {
+        return Err(Error::Input(
+            "info --adapter chooses the adapter that --gpu reports: add --gpu".into(),
+        ));
+    }
     print!(
         "{}",
         crate::info::run(&InfoOptions {

@@ -1,12 +1,14 @@
 //! `glyphscope info`: which outline table a font's glyphs come from and where each
 //! requested glyph is placed — the figures behind [`Font::outline`](crate::font::Font::outline) and
-//! [`Font::advance`](crate::font::Font::advance), printed without opening a display.
+//! [`Font::advance`](crate::font::Font::advance), printed without opening a display;
+//! or which GPU adapter the other commands draw with ([`gpu`]).
 
 use std::fmt::Write;
 use std::path::PathBuf;
 
 use crate::Error;
 use crate::font::{GlyphId, OutlineTable, describe_sfnt_version};
+use crate::gpu::GpuContext;
 use crate::shaping;
 use crate::view_args::load_font;
 
@@ -92,6 +94,33 @@ pub fn run(options: &InfoOptions) -> Result<String, Error> {
         out.push('\n');
     }
     Ok(out)
+}
+
+/// The report of the adapter `render`, `bench` and `motion` open when given `adapter`
+/// (see [`GpuContext::open`]): one `key: value` line each for its name, backend,
+/// driver, driver info, device type and the description every report quotes. With
+/// `require_hardware`, a CPU implementation (wgpu's [`wgpu::DeviceType::Cpu`]:
+/// lavapipe, SwiftShader) is an error instead, so that a script measuring a GPU stops
+/// before it writes figures that measure a CPU.
+pub fn gpu(adapter: Option<&str>, require_hardware: bool) -> Result<String, Error> {
+    let gpu = GpuContext::open(adapter)?;
+    let info = gpu.adapter_info();
+    if require_hardware && info.device_type == wgpu::DeviceType::Cpu {
+        return Err(Error::Input(format!(
+            "the adapter is a CPU implementation, not a GPU: {} (device type Cpu); \
+             choose a GPU with --adapter NAME or WGPU_ADAPTER_NAME",
+            gpu.adapter_name()
+        )));
+    }
+    Ok(format!(
+        "name: {}\nbackend: {:?}\ndriver: {}\ndriver info: {}\ndevice type: {:?}\nadapter: {}\n",
+        info.name,
+        info.backend,
+        info.driver,
+        info.driver_info,
+        info.device_type,
+        gpu.adapter_name()
+    ))
 }
 
 /// Font units as text, with no "-0".

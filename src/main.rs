@@ -8,8 +8,12 @@ use glyphscope::cli::{Cli, Command};
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    if cli.command.is_some() {
+    if let Some(command) = &cli.command {
         keep_the_gpu_off_the_display();
+        if command.adapter().is_some() || std::env::var_os("WGPU_ADAPTER_NAME").is_some() {
+            // SAFETY: as in `keep_the_gpu_off_the_display`, no thread has started yet.
+            unsafe { glyphscope::gpu::offer_swiftshader() };
+        }
     }
     if cli.command.is_some() && cli.view.is_some() {
         eprintln!("error: --view opens the explorer: give it without a subcommand");

@@ -40,6 +40,8 @@ pub struct RenderOptions {
     pub focus: Option<Focus>,
     /// What the magnified picture draws over the pixels.
     pub overlays: Vec<PictureOverlay>,
+    /// A part of the name of the adapter to draw with (see [`GpuContext::open`]).
+    pub adapter: Option<String>,
 }
 
 /// A layer of `render`'s magnified picture.
@@ -64,6 +66,7 @@ impl RenderOptions {
             magnify: 1,
             focus: None,
             overlays: Vec::new(),
+            adapter: None,
         }
     }
 
@@ -103,7 +106,7 @@ pub fn render(options: &RenderOptions) -> Result<Rendered, Error> {
     let gpu = if method.is_reference() {
         None
     } else {
-        Some(GpuContext::new()?)
+        Some(GpuContext::open(options.adapter.as_deref())?)
     };
     let Measured {
         image,

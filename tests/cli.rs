@@ -926,3 +926,137 @@ fn a_view_link_takes_no_subcommand() {
     assert_eq!(stderr.trim().lines().count(), 1, "{stderr}");
     assert!(stderr.contains("--view opens the explorer"), "{stderr}");
 }
+
+/// The binary run with `args` where only the command line chooses the adapter: no
+/// adapter named in the environment, and the Vulkan loader finding its drivers itself.
+fn run_choosing_the_adapter(args: &[&str]) -> std::process::Output {
+    bin()
+        .args(args)
+        .env_remove("WGPU_ADAPTER_NAME")
+        .env_remove("VK_ICD_FILENAMES")
+        .env_remove("VK_DRIVER_FILES")
+        .env_remove("VK_ADD_DRIVER_FILES")
+        .output()
+        .expect("the binary runs")
+}
+
+/// SwiftShader's manifest, which CI's chromium package installs: without it the tests
+/// of `--adapter swiftshader` fail saying so, rather than pass having checked nothing.
+fn swiftshader_manifest() {
+    let manifest = glyphscope::gpu::SWIFTSHADER_MANIFEST;
+    assert!(
+        std::path::Path::new(manifest).is_file(),
+        "{manifest} is missing: SwiftShader's Vulkan driver comes with Debian's chromium \
+         package (apt-get install chromium; .ci/run installs it)"
+    );
+}
+
+#[test]
+fn an_adapter_no_name_matches_is_one_line_listing_those_found() {
+    swiftshader_manifest();
+    let out = scratch("no-such-gpu.png");
+    let result = run_choosing_the_adapter(&[
+        "render",
+        "--text",
+        "x",
+        "--size",
+        "24",
+        "--method",
+        "atlas",
+        "--adapter",
+        "no-such-gpu",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert_eq!(result.status.code(), Some(2), "{stderr}");
+    assert_eq!(stderr.lines().count(), 1, "one line: {stderr}");
+    // The list names what CI installs: lavapipe, and SwiftShader, offered to the loader
+    // because an adapter was asked for by name.
+    for expected in ["no-such-gpu", "found:", "llvmpipe", "SwiftShader"] {
+        assert!(stderr.contains(expected), "lacks {expected:?}: {stderr}");
+    }
+    assert!(!out.exists(), "an image was written");
+}
+
+#[test]
+fn swiftshader_draws_when_asked_for_and_the_default_adapter_stays() {
+    swiftshader_manifest();
+    let adapter_of = |name: &str, extra: &[&str]| -> String {
+        let (out, stats) = (
+            scratch(&format!("{name}.png")),
+            scratch(&format!("{name}.json")),
+        );
+        let mut args = vec![
+            "render",
+            "--text",
+            "Hi",
+            "--size",
+            "24",
+            "--method",
+            "atlas",
+            "--out",
+            out.to_str().unwrap(),
+            "--stats",
+            stats.to_str().unwrap(),
+        ];
+        args.extend_from_slice(extra);
+        let result = run_choosing_the_adapter(&args);
+        assert!(
+            result.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&result.stderr)
+        );
+        let gray = image::open(&out).unwrap().to_luma8();
+        assert!(gray.pixels().any(|p| p.0[0] == 255), "{name}: no ink");
+        let json: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
+        json["adapter"].as_str().unwrap().to_string()
+    };
+    let swiftshader = adapter_of("swiftshader", &["--adapter", "swiftshader"]);
+    // The name as SwiftShader gives it, and its driver beside it (reports name both).
+    assert!(
+        swiftshader.starts_with("SwiftShader Device") && swiftshader.contains("driver"),
+        "{swiftshader}"
+    );
+    // SwiftShader comes first in the loader's list, so offering it to every command would
+    // make it wgpu's default: it is offered only where an adapter is asked for by name.
+    let default = adapter_of("default-adapter", &[]);
+    assert!(!default.contains("SwiftShader"), "{default}");
+}
+
+#[test]
+fn info_reports_the_adapter_and_refuses_a_cpu_one_where_hardware_is_required() {
+    // lavapipe, which CI installs, is a CPU implementation of Vulkan (Mesa's llvmpipe).
+    let result = run_choosing_the_adapter(&["info", "--gpu", "--adapter", "llvmpipe"]);
+    let stdout = String::from_utf8_lossy(&result.stdout);
+    assert!(
+        result.status.success(),
+        "{}",
+        String::from_utf8_lossy(&result.stderr)
+    );
+    for line in ["backend: Vulkan", "driver: llvmpipe", "device type: Cpu"] {
+        assert!(
+            stdout.lines().any(|l| l == line),
+            "lacks {line:?}: {stdout}"
+        );
+    }
+    let result = run_choosing_the_adapter(&[
+        "info",
+        "--gpu",
+        "--adapter",
+        "llvmpipe",
+        "--require-hardware",
+    ]);
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert_eq!(result.status.code(), Some(2), "{stderr}");
+    assert_eq!(stderr.lines().count(), 1, "one line: {stderr}");
+    assert!(
+        stderr.contains("CPU implementation") && stderr.contains("llvmpipe"),
+        "{stderr}"
+    );
+    assert!(
+        result.stdout.is_empty(),
+        "a refused adapter is reported on stdout"
+    );
+}

@@ -99,12 +99,14 @@ struct Timed {
     cpu_ms: f64,
 }
 
-/// Measures every case on `scene_names` (their own views) and writes `harness.md` into
-/// `out`; returns the report's path.
+/// Measures every case on `scene_names` (their own views) on the adapter named by
+/// `adapter` (see [`GpuContext::open`]) and writes `harness.md` into `out`; returns the
+/// report's path.
 pub fn run_to(
     scene_names: &[String],
     quick: bool,
     frames: Option<usize>,
+    adapter: Option<&str>,
     out: &Path,
 ) -> Result<std::path::PathBuf, Error> {
     let names: Vec<&str> = if scene_names.is_empty() {
@@ -132,7 +134,7 @@ pub fn run_to(
             }),
         },
     };
-    let gpu = GpuContext::new()?;
+    let gpu = GpuContext::open(adapter)?;
     if !gpu.has_timestamps() {
         return Err(Error::Gpu(format!(
             "'{}' has no timestamp queries: the harness breakdown times GPU passes",

@@ -40,6 +40,8 @@ pub struct BenchOptions {
     pub frames: Option<usize>,
     /// Points per scaling series, overriding [`Effort`]'s (11, or 3 with `quick`).
     pub scaling_points: Option<usize>,
+    /// A part of the name of the adapter to measure on (see [`GpuContext::open`]).
+    pub adapter: Option<String>,
 }
 
 /// One view of a scene, ready to measure methods in: its reference drawn once.
@@ -252,7 +254,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
                 }),
         },
     };
-    let gpu = GpuContext::new()?;
+    let gpu = GpuContext::open(options.adapter.as_deref())?;
     let per_view = |view| -> usize {
         methods
             .iter()

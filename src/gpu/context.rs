@@ -24,13 +24,21 @@ impl GpuContext {
     /// the device gets the adapter's own limits rather than WebGPU's portable defaults,
     /// so that 16384-pixel targets work wherever the hardware allows them.
     pub fn new() -> Result<GpuContext, Error> {
-        pollster::block_on(Self::new_async())
+        Self::open(None)
     }
 
-    async fn new_async() -> Result<GpuContext, Error> {
+    /// Opens the adapter whose name contains `adapter` (case-insensitive; the command
+    /// line's `--adapter`), else as [`GpuContext::new`] does. A name that matches no
+    /// adapter is an error listing those there are.
+    pub fn open(adapter: Option<&str>) -> Result<GpuContext, Error> {
+        pollster::block_on(Self::open_async(adapter))
+    }
+
+    async fn open_async(wanted: Option<&str>) -> Result<GpuContext, Error> {
         let instance =
             wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
-        let adapter = choose_adapter(&instance).await?;
+        let from_env = std::env::var("WGPU_ADAPTER_NAME").ok();
+        let adapter = choose_adapter(&instance, wanted.or(from_env.as_deref())).await?;
         let (device, queue) = adapter
             .request_device(&Self::device_descriptor(&adapter))
             .await
@@ -78,9 +86,16 @@ impl GpuContext {
         (&self.instance, &self.adapter)
     }
 
-    /// The adapter's name and backend, e.g. "llvmpipe (LLVM 15.0.6, 256 bits) (Vulkan)".
+    /// The adapter's name, backend and driver, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)
+    /// (Vulkan; driver llvmpipe, Mesa 22.3.6 (LLVM 15.0.6))": every report names it.
     pub fn adapter_name(&self) -> String {
         describe(&self.adapter)
+    }
+
+    /// What the adapter says of itself: its device type tells a CPU implementation
+    /// (lavapipe, SwiftShader) from a GPU.
+    pub fn adapter_info(&self) -> wgpu::AdapterInfo {
+        self.adapter.get_info()
     }
 
     /// Whether `time_frames` can measure GPU time on this device.
@@ -194,11 +209,14 @@ impl GpuContext {
     }
 }
 
-/// The adapter named by `WGPU_ADAPTER_NAME` (a case-insensitive part of its name) if
-/// that is set, else wgpu's default choice under `WGPU_POWER_PREF`. wgpu's own helper
-/// for this panics when the name matches nothing; this reports the adapters there are.
-async fn choose_adapter(instance: &wgpu::Instance) -> Result<wgpu::Adapter, Error> {
-    if let Ok(wanted) = std::env::var("WGPU_ADAPTER_NAME") {
+/// The adapter whose name contains `wanted` (case-insensitive) if one is asked for, else
+/// wgpu's default choice under `WGPU_POWER_PREF`. wgpu's own helper for this panics when
+/// the name matches nothing; this reports the adapters there are.
+async fn choose_adapter(
+    instance: &wgpu::Instance,
+    wanted: Option<&str>,
+) -> Result<wgpu::Adapter, Error> {
+    if let Some(wanted) = wanted {
         let adapters = instance.enumerate_adapters(wgpu::Backends::all()).await;
         let names: Vec<String> = adapters.iter().map(describe).collect();
         return adapters
@@ -211,7 +229,8 @@ async fn choose_adapter(instance: &wgpu::Instance) -> Result<wgpu::Adapter, Erro
             })
             .ok_or_else(|| {
                 Error::Gpu(format!(
-                    "WGPU_ADAPTER_NAME='{wanted}' matches no adapter; found: {}",
+                    "no adapter's name contains '{wanted}' (--adapter or WGPU_ADAPTER_NAME); \
+                     found: {}",
                     if names.is_empty() {
                         "none".to_string()
                     } else {
@@ -233,8 +252,53 @@ async fn choose_adapter(instance: &wgpu::Instance) -> Result<wgpu::Adapter, Erro
         })
 }
 
-/// An adapter's name and backend: the same name can come through several backends.
+/// An adapter's name, backend and driver: the same name can come through several
+/// backends, and one device through several drivers (or versions of one).
 fn describe(adapter: &wgpu::Adapter) -> String {
     let info = adapter.get_info();
-    format!("{} ({:?})", info.name, info.backend)
+    let driver: Vec<&str> = [info.driver.as_str(), info.driver_info.as_str()]
+        .into_iter()
+        .filter(|part| !part.is_empty())
+        .collect();
+    if driver.is_empty() {
+        format!("{} ({:?})", info.name, info.backend)
+    } else {
+        format!(
+            "{} ({:?}; driver {})",
+            info.name,
+            info.backend,
+            driver.join(", ")
+        )
+    }
+}
+
+/// SwiftShader's Vulkan manifest as Debian's `chromium` package installs it.
+pub const SWIFTSHADER_MANIFEST: &str = "/usr/lib/chromium/vk_swiftshader_icd.json";
+
+/// Makes SwiftShader, a second software Vulkan implementation, one of the adapters
+/// there are, where Chromium ships it and the user has not chosen the drivers
+/// (`VK_ICD_FILENAMES`, `VK_DRIVER_FILES`): the Vulkan loader adds the drivers
+/// `VK_ADD_DRIVER_FILES` lists to those it finds (Debian bookworm's, 1.3.239, does).
+/// They come before lavapipe in the loader's order, so SwiftShader would become wgpu's
+/// default choice: call this only where an adapter is asked for by name.
+///
+/// # Safety
+///
+/// Sets an environment variable: call it before the process starts a thread, as
+/// nothing may read the environment meanwhile.
+pub unsafe fn offer_swiftshader() {
+    let set = |name: &str| std::env::var_os(name).is_some();
+    if set("VK_ICD_FILENAMES")
+        || set("VK_DRIVER_FILES")
+        || !std::path::Path::new(SWIFTSHADER_MANIFEST).exists()
+    {
+        return;
+    }
+    let mut files = std::ffi::OsString::from(SWIFTSHADER_MANIFEST);
+    if let Some(others) = std::env::var_os("VK_ADD_DRIVER_FILES") {
+        files.push(":");
+        files.push(others);
+    }
+    // SAFETY: this function's own contract: no other thread runs yet.
+    unsafe { std::env::set_var("VK_ADD_DRIVER_FILES", files) };
 }

@@ -10,5 +10,5 @@ pub mod shaders;
 mod target;
 pub mod timing;
 
-pub use context::GpuContext;
+pub use context::{GpuContext, SWIFTSHADER_MANIFEST, offer_swiftshader};
 pub use target::{Channels, CoverageTarget, PendingReadback, clearing_pass};

@@ -37,6 +37,8 @@ pub struct MotionOptions {
     pub out: PathBuf,
     /// The command line the report names as its source.
     pub command: String,
+    /// A part of the name of the adapter to draw with (see [`GpuContext::open`]).
+    pub adapter: Option<String>,
 }
 
 /// Indices into `methods` of the methods `names` picks by place (1, 2, …), name or
@@ -80,7 +82,9 @@ pub fn run(options: &MotionOptions) -> Result<String, Error> {
     };
     let specs = &options.methods;
     let needs_gpu = specs.iter().any(|s| s.name != registry::REFERENCE.name);
-    let gpu = needs_gpu.then(GpuContext::new).transpose()?;
+    let gpu = needs_gpu
+        .then(|| GpuContext::open(options.adapter.as_deref()))
+        .transpose()?;
     let frames = options.frames;
     let bar = indicatif::ProgressBar::new(frames as u64);
     let result = run::run(gpu.as_ref(), scene, camera, path, frames, specs, |_| {
