@@ -145,8 +145,8 @@ pub struct BenchArgs {
     /// (100 → 30 000 glyphs of the page) and px-per-em (one word at 4 → 4 096 px/em).
     #[arg(long, value_delimiter = ',')]
     pub scenes: Vec<String>,
-    /// Methods to run, comma-separated (default: all): reference, winding, sdf-cells,
-    /// xor-stencil, tessellation, atlas.
+    /// Methods to run, comma-separated (default: all, the peers included): reference,
+    /// winding, sdf-cells, xor-stencil, tessellation, atlas, vello, glyphon, vello-cpu.
     #[arg(long, value_delimiter = ',')]
     pub methods: Vec<String>,
     /// Frames timed per case, over its rounds (default 21 in 3 rounds; 3 with --quick);

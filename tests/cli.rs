@@ -1060,3 +1060,36 @@ fn info_reports_the_adapter_and_refuses_a_cpu_one_where_hardware_is_required() {
         "a refused adapter is reported on stdout"
     );
 }
+
+#[test]
+fn the_gpu_report_refuses_a_cpu_adapter_with_one_line_and_writes_nothing() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let reports = root.join("docs/bench/gpu");
+    let listing = || -> Vec<PathBuf> {
+        std::fs::read_dir(&reports).map_or(Vec::new(), |dir| {
+            dir.map(|entry| entry.unwrap().path()).collect()
+        })
+    };
+    let before = listing();
+    // lavapipe by name, so the script meets a CPU adapter on any machine CI runs on; the
+    // built binary, so the script does not build one.
+    let result = std::process::Command::new("bash")
+        .arg("tools/gpu-report.sh")
+        .current_dir(&root)
+        .env("GLYPHSCOPE_BIN", env!("CARGO_BIN_EXE_glyphscope"))
+        .env("WGPU_ADAPTER_NAME", "llvmpipe")
+        .output()
+        .expect("bash runs");
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert_eq!(result.status.code(), Some(2), "{stderr}");
+    assert_eq!(stderr.lines().count(), 1, "one line: {stderr}");
+    assert!(
+        stderr.contains("CPU implementation") && stderr.contains("llvmpipe"),
+        "{stderr}"
+    );
+    assert_eq!(
+        listing(),
+        before,
+        "a refused report wrote into docs/bench/gpu"
+    );
+}

@@ -5,11 +5,12 @@
 # figure (the check behind "behaviour unchanged" refactors).
 #   tools/render_snapshot.sh target/release/glyphscope DIR
 set -euo pipefail
+# shellcheck source=tools/methods.sh
+. "$(dirname "$0")/methods.sh"
 bin=$1
 out=$2
 mkdir -p "$out"
-methods=$("$bin" render --help | sed -n 's/.*The method that draws it: //p' | tr ';' '\n' \
-    | sed -n 's/^ *\([a-z-]*\):.*/\1/p' || true)
+methods=$(glyphscope_methods "$bin" || true)
 [ -n "$methods" ] || methods="reference bounds winding sdf-cells xor-stencil tessellation atlas"
 scenes=(
     "hamburg|--text Hamburgefonstiv --size 16"
