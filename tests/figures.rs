@@ -360,26 +360,32 @@ fn tables_read_as_written() {
     assert_eq!(cited_run("`cargo test --release --test gpu_smoke`"), None);
 }
 
-/// README with one figure changed (sdf-cells' max, 0.417 → 0.418), and with the
-/// reference's CPU time changed: each wrong cell is named, and nothing else.
+/// README with one figure changed (sdf-cells' max, 0.417 → 0.418), with the reference's
+/// CPU time changed, and with a ratio to each yardstick changed: each wrong cell is
+/// named, and nothing else.
 #[test]
 fn a_wrong_readme_figure_is_named() {
     let readme = read("README.md");
     for (right, wrong, named) in [
         (
-            "4.76× · 0.36 · 0.417",
-            "4.76× · 0.36 · 0.418",
-            "`sdf-cells`, max: 0.418 where docs/bench/bench.json gives 0.417",
+            "7.64× · 9.41× · 0.36 · 0.417",
+            "7.64× · 9.41× · 0.36 · 0.418",
+            "`sdf-cells`, max: 0.418 where docs/bench/peers/bench.json gives 0.417",
         ),
         (
-            "— (361 ms CPU)",
-            "— (384 ms CPU)",
-            "`reference`, × atlas: 384 where docs/bench/bench.json gives 361",
+            "— (599 ms CPU)",
+            "— (623 ms CPU)",
+            "`reference`, × atlas: 623 where docs/bench/peers/bench.json gives 599",
         ),
         (
-            "0.30× · 3.21",
-            "0.31× · 3.21",
-            "`glyphon`, × atlas: 0.31 where docs/bench/peers/bench.json gives 0.30",
+            "0.81× · 1.00× · 3.21",
+            "0.82× · 1.00× · 3.21",
+            "`glyphon`, × atlas: 0.82 where docs/bench/peers/bench.json gives 0.81",
+        ),
+        (
+            "2.58× · 3.18× · 0.00",
+            "2.58× · 3.19× · 0.00",
+            "`winding`, × glyphon: 3.19 where docs/bench/peers/bench.json gives 3.18",
         ),
     ] {
         assert_eq!(
@@ -398,20 +404,20 @@ fn a_wrong_readme_figure_is_named() {
 #[test]
 fn a_wrong_quoted_cell_is_named() {
     let doc = read("docs/bench.md");
-    let right = "| page | own | 1.54× · 0.00 · 0.03 · 0.001 · 0 |";
+    let right = "| page | own | 2.58× · 3.18× · 0.00 · 0.03 · 0.001 · 0 |";
     assert_eq!(doc.matches(right).count(), 1);
-    let wrong = doc.replace(right, "| page | own | 1.45× · 0.00 · 0.03 · 0.001 · 0 |");
+    let wrong = doc.replace(right, "| page | own | 2.85× · 3.18× · 0.00 · 0.03 · 0.001 · 0 |");
     let errors = quote_errors("docs/bench.md", &wrong, &committed_report);
     assert_eq!(errors.len(), 1, "{errors:?}");
     assert!(
-        errors[0].contains("row [\"page\", \"own\"], column 'winding': '1.45× · 0.00"),
+        errors[0].contains("row [\"page\", \"own\"], column 'winding': '2.85× · 3.18×"),
         "{errors:?}"
     );
-    let refusal = "| rotated | own | 2.81× · 0.00 · 0.04 · 0.001 · 0 | n/a — tilt |";
+    let refusal = "| rotated | own | 3.52× · n/a · 0.00 · 0.04 · 0.001 · 0 | n/a — tilt |";
     assert_eq!(doc.matches(refusal).count(), 1);
     let wrong = doc.replace(
         refusal,
-        "| rotated | own | 2.81× · 0.00 · 0.04 · 0.001 · 0 | n/a — turns |",
+        "| rotated | own | 3.52× · n/a · 0.00 · 0.04 · 0.001 · 0 | n/a — turns |",
     );
     let errors = quote_errors("docs/bench.md", &wrong, &committed_report);
     assert_eq!(errors.len(), 1, "{errors:?}");

@@ -15,6 +15,7 @@ for k in $(seq 1 "$runs"); do
     for adapter in llvmpipe swiftshader; do
         echo "run $k of $runs on $adapter" >&2
         "$bin" bench --quick --scenes page,tiny,rotated --adapter "$adapter" \
+            --methods winding,sdf-cells,xor-stencil,tessellation,atlas,glyphon \
             --out "$out/$adapter-$k" >/dev/null
         # The tables and the JSON are what the comparison reads; the plots are the
         # bench's usual ones, kept out of the repository.

@@ -43,6 +43,8 @@ def main(folder):
     if len(runs) != 2:
         sys.exit(f"{folder}: expected the runs of two adapters, found {sorted(runs)}")
     names = sorted(runs)
+    # A heading, so that docs/bench.md can quote the table and tests/figures.rs check it.
+    print("## The quick bench on two software GPUs\n")
     print("| scene | view | method | over | " + " | ".join(
         f"{runs[n][0]['adapter'].split(' (')[0]} ({len(runs[n])} runs)" for n in names
     ) + " | |")
