@@ -1048,16 +1048,22 @@ fn info_reports_the_adapter_and_refuses_a_cpu_one_where_hardware_is_required() {
         "llvmpipe",
         "--require-hardware",
     ]);
+    assert_refuses_lavapipe(&result);
+    assert!(
+        result.stdout.is_empty(),
+        "a refused adapter is reported on stdout"
+    );
+}
+
+/// Exit 2 and one line saying lavapipe is a CPU implementation: how `info --gpu
+/// --require-hardware` and the GPU report refuse it.
+fn assert_refuses_lavapipe(result: &std::process::Output) {
     let stderr = String::from_utf8_lossy(&result.stderr);
     assert_eq!(result.status.code(), Some(2), "{stderr}");
     assert_eq!(stderr.lines().count(), 1, "one line: {stderr}");
     assert!(
         stderr.contains("CPU implementation") && stderr.contains("llvmpipe"),
         "{stderr}"
-    );
-    assert!(
-        result.stdout.is_empty(),
-        "a refused adapter is reported on stdout"
     );
 }
 
@@ -1080,13 +1086,7 @@ fn the_gpu_report_refuses_a_cpu_adapter_with_one_line_and_writes_nothing() {
         .env("WGPU_ADAPTER_NAME", "llvmpipe")
         .output()
         .expect("bash runs");
-    let stderr = String::from_utf8_lossy(&result.stderr);
-    assert_eq!(result.status.code(), Some(2), "{stderr}");
-    assert_eq!(stderr.lines().count(), 1, "one line: {stderr}");
-    assert!(
-        stderr.contains("CPU implementation") && stderr.contains("llvmpipe"),
-        "{stderr}"
-    );
+    assert_refuses_lavapipe(&result);
     assert_eq!(
         listing(),
         before,
