@@ -273,17 +273,14 @@ fn quote_errors(doc_name: &str, doc: &str, source: &dyn Fn(&str) -> String) -> V
             ));
             continue;
         };
-        // Rows are found by their first cell, or their first two where the first repeats.
-        let firsts: Vec<&String> = table.rows.iter().map(|r| &r[0]).collect();
-        let key_len = if firsts
-            .iter()
-            .enumerate()
-            .all(|(i, f)| !firsts[..i].contains(f))
-        {
-            1
-        } else {
-            2
-        };
+        // Rows are found by their first cells: as few as tell the table's rows apart.
+        let key_len = (1..=table.header.len())
+            .find(|&k| {
+                let keys: Vec<&[String]> =
+                    table.rows.iter().map(|r| &r[..k.min(r.len())]).collect();
+                keys.iter().enumerate().all(|(i, key)| !keys[..i].contains(key))
+            })
+            .unwrap_or(table.header.len());
         if quote.rows.is_empty() {
             errors.push(format!(
                 "{doc_name}:{}: the quoted table is empty",
