@@ -12,13 +12,11 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use super::method_settings::baseline_cache_param;
-use super::result::Rounds;
-use super::run::WARMUP_FRAMES;
+use super::run::rounds;
 use super::scenes;
 use crate::Error;
 use crate::effort::Effort;
 use crate::gpu::{Channels, CoverageTarget, GpuContext};
-use crate::measure::FrameTiming;
 use crate::methods::atlas::{self, Atlas, Stage, auto_cache_size};
 use crate::methods::peers::glyphon;
 use crate::methods::{Method, frame};
@@ -125,15 +123,7 @@ pub fn run_to(
     if frames == Some(0) {
         return Err(Error::Input("--frames must be at least 1".into()));
     }
-    let timing = Rounds {
-        rounds: effort.bench_rounds,
-        per_round: FrameTiming {
-            warmup: WARMUP_FRAMES,
-            frames: frames.map_or(effort.bench_frames_per_round, |f| {
-                f.div_ceil(effort.bench_rounds)
-            }),
-        },
-    };
+    let timing = rounds(&effort, frames);
     let gpu = GpuContext::open(adapter)?;
     if !gpu.has_timestamps() {
         return Err(Error::Gpu(format!(

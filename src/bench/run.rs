@@ -26,6 +26,20 @@ use crate::scene::Scene;
 /// alike (shaders compile lazily on the first frames).
 pub const WARMUP_FRAMES: usize = 3;
 
+/// The rounds a case is timed in: [`Effort`]'s, with `frames` (the whole run's timed
+/// frames per case, `--frames`) spread over them where given.
+pub fn rounds(effort: &Effort, frames: Option<usize>) -> Rounds {
+    Rounds {
+        rounds: effort.bench_rounds,
+        per_round: FrameTiming {
+            warmup: WARMUP_FRAMES,
+            frames: frames.map_or(effort.bench_frames_per_round, |frames| {
+                frames.div_ceil(effort.bench_rounds)
+            }),
+        },
+    }
+}
+
 /// What to measure.
 #[derive(Clone, Debug)]
 pub struct BenchOptions {
@@ -243,17 +257,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
         frames: options.frames.unwrap_or(effort.bench_scaling_frames),
     };
     let scaling_methods = plan.scaling_methods();
-    let timing = Rounds {
-        rounds: effort.bench_rounds,
-        per_round: FrameTiming {
-            warmup: WARMUP_FRAMES,
-            frames: options
-                .frames
-                .map_or(effort.bench_frames_per_round, |frames| {
-                    frames.div_ceil(effort.bench_rounds)
-                }),
-        },
-    };
+    let timing = rounds(&effort, options.frames);
     let gpu = GpuContext::open(options.adapter.as_deref())?;
     let per_view = |view| -> usize {
         methods
