@@ -4,23 +4,7 @@
 // bilinear filtering. Exact where the instance lands on the grid it was cached for;
 // resampled (blurred, aliased) anywhere else.
 
-// One cached bitmap of a glyph, at one sub-pixel phase.
-struct Entry {
-    // The bitmap's rectangle (padding included) in the glyph's local font units:
-    // min.xy, max.xy. The quad covers it.
-    quad: vec4<f32>,
-    // Where the glyph's local origin lies in the atlas, in texels (x right, y down),
-    // and texels per font unit.
-    origin: vec2<f32>,
-    texels_per_unit: f32,
-    _pad: f32,
-    // The bitmap's texels in the atlas: min.xy, max.xy (texel edges).
-    texels: vec4<f32>,
-}
-
-@group(1) @binding(0) var<storage, read> entries: array<Entry>;
-@group(1) @binding(1) var atlas: texture_2d<f32>;
-@group(1) @binding(2) var atlas_sampler: sampler;
+// The bitmaps are `entries` of glyph_atlas.wgsl: PHASES × PHASES per glyph.
 
 // Sub-pixel phases per axis: each glyph has PHASES × PHASES bitmaps, and an instance's
 // pen snaps to the nearest 1/PHASES pixel, drawing the bitmap of that phase. 0: no
@@ -29,20 +13,6 @@ override PHASES: u32 = 4u;
 
 fn translation(shift: vec2<f32>) -> mat3x3<f32> {
     return mat3x3<f32>(vec3<f32>(1.0, 0.0, 0.0), vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(shift, 1.0));
-}
-
-// What the atlas's fragments receive: the quad (its map to local coordinates) and its
-// bitmap's frame in the atlas, read once per vertex rather than once per fragment.
-struct AtlasQuad {
-    @builtin(position) position: vec4<f32>,
-    @location(0) @interpolate(flat) to_local_0: vec3<f32>,
-    @location(1) @interpolate(flat) to_local_1: vec3<f32>,
-    @location(2) @interpolate(flat) to_local_2: vec3<f32>,
-    // `Entry.origin` and `texels_per_unit`.
-    @location(3) @interpolate(flat) origin: vec3<f32>,
-    // The bitmap's texel centres at its edges: where a sample is kept (see
-    // `sampled_coverage`).
-    @location(4) @interpolate(flat) inside: vec4<f32>,
 }
 
 @vertex
@@ -67,12 +37,9 @@ fn atlas_quad(vertex: u32, index: u32) -> AtlasQuad {
         inst.to_image = translation(snapped - pen) * inst.to_image;
         inst.to_local = inst.to_local * translation(pen - snapped);
     }
-    let e = entries[entry];
     // No pixel footprint: a pixel centre outside the bitmap's rectangle reads its zero
-    // border (see `sampled_coverage`), so no pixel beyond it can add anything.
-    let q = glyph_quad(inst, e.quad.xy, e.quad.zw, vertex, frame.size, false);
-    let inside = vec4<f32>(e.texels.xy + 0.5, e.texels.zw - 0.5);
-    return AtlasQuad(q.position, q.to_local_0, q.to_local_1, q.to_local_2, vec3<f32>(e.origin, e.texels_per_unit), inside);
+    // border (see `atlas_sample`), so no pixel beyond it can add anything.
+    return entry_quad(inst, entries[entry], vertex, false);
 }
 
 // How much of the fragment runs: all of it (3) but in the harness breakdown of
@@ -96,12 +63,7 @@ fn fs_main(in: AtlasQuad) -> @location(0) vec4<f32> {
 
 // The bitmap's coverage at a local point.
 fn sampled_coverage(origin: vec3<f32>, inside: vec4<f32>, local: vec2<f32>) -> f32 {
-    let texel = origin.xy + vec2<f32>(local.x, -local.y) * origin.z;
-    // Kept on the bitmap's own texels (its zero border included): pixels of the quad
-    // beyond them read that border, never a neighbour's bitmap.
-    let kept = clamp(texel, inside.xy, inside.zw);
-    let size = vec2<f32>(textureDimensions(atlas));
-    return textureSampleLevel(atlas, atlas_sampler, kept / size, 0.0).r;
+    return atlas_sample(inside, atlas_texel(origin, local)).r;
 }
 
 // The harness breakdown's other way to find a fragment's local position: interpolated

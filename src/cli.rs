@@ -264,7 +264,9 @@ pub struct RenderArgs {
     /// the views the explorer's Cases menu loads.
     #[arg(long, conflicts_with_all = VIEW_OPTIONS)]
     pub case: Option<String>,
-    /// The method that draws it; one of the registry's (see `--help`).
+    /// The method that draws it; one of the registry's (see `--help`), with its
+    /// parameters after colons if wanted (`msdf:field=sdf`, as `motion` and `bench`
+    /// take them).
     #[arg(long, help = method_help())]
     pub method: String,
     /// Method parameter KEY=VALUE; repeat for several.
@@ -301,16 +303,22 @@ pub struct RenderArgs {
 
 /// `--method`'s help: the registry's names and summaries.
 fn method_help() -> String {
-    format!("The method that draws it: {}", registry::help())
+    format!(
+        "The method that draws it: {}. Its parameters may follow its name after colons \
+         (NAME:KEY=VALUE:…), as --param gives them",
+        registry::help()
+    )
 }
 
 /// `glyphscope render`: renders the view and writes the PNG and what else is asked for.
 pub fn run_render(args: &RenderArgs) -> Result<(), Error> {
+    // `NAME:KEY=VALUE:…`, then `--param`s, which win where both set a key.
+    let spec = MethodSpec::parse(&args.method)?;
     crate::render::run(&RenderOptions {
         view: args.view.clone(),
         case: args.case.clone(),
-        method: args.method.clone(),
-        params: args.params.clone(),
+        method: spec.name,
+        params: [spec.params, args.params.clone()].concat(),
         out: args.out.clone(),
         stats: args.stats.clone(),
         error_image: args.error_image.clone(),

@@ -112,6 +112,8 @@ pub fn overlay_description(overlay: Overlay) -> &'static str {
         Overlay::CostHeatMap => "curves evaluated per pixel, on a colour scale",
         Overlay::TriangleWireframe => "the triangles as wireframe",
         Overlay::SubdivisionPoints => "where curves were subdivided",
+        Overlay::FieldChannels => "the distance field's channels as colour",
+        Overlay::MedianChannel => "the channel the field's median picks",
     }
 }
 

@@ -337,10 +337,8 @@ fn peers_summary(result: &BenchResult, md: &mut String) {
                 format!(
                     "{} · {} · {:.2} · {:.2} · {:.3} · {}",
                     ratio_to_baseline(result, c).map_or("—".into(), |r| format!("{r:.2}×")),
-                    ratio_to_shipped(result, c).map_or_else(
-                        || shipped_cell(result, c),
-                        |r| format!("{r:.2}×")
-                    ),
+                    ratio_to_shipped(result, c)
+                        .map_or_else(|| shipped_cell(result, c), |r| format!("{r:.2}×")),
                     c.error.mae_255,
                     c.error.edge.mae_255,
                     c.error.max,

@@ -17,12 +17,13 @@
 use glam::DVec2;
 
 use super::Method;
+use super::glyph_atlas::{self, AtlasPipeline, Entry};
 use super::info::{MethodInfo, Role, bench_at};
 use super::instances::Instances;
 use super::params::{Numbers, ParamSpec, Params};
 use crate::Error;
 use crate::camera::Camera;
-use crate::gpu::kit::{self, PerTarget, PipelineBuilder, Slot};
+use crate::gpu::kit::PipelineBuilder;
 use crate::gpu::shaders::Shader;
 use crate::gpu::{CoverageTarget, GpuContext};
 use crate::reference;
@@ -49,7 +50,7 @@ pub const INFO: MethodInfo = MethodInfo {
 };
 
 pub const NAME: &str = "atlas";
-const SHADER: Shader = crate::method_shader!("atlas.wgsl");
+const SHADER: Shader = crate::method_shader!("atlas.wgsl", "glyph_atlas.wgsl");
 
 /// Caching never goes above this size by itself: a glyph at 20 000 px/em would need a
 /// bitmap of hundreds of megabytes. Beyond it the atlas magnifies, as real ones do.
@@ -143,16 +144,8 @@ impl Stage {
 pub struct Atlas {
     settings: Settings,
     stage: Stage,
-    pipeline: Option<Pipeline>,
+    pipeline: Option<AtlasPipeline>,
     prepared: Option<Prepared>,
-}
-
-struct Pipeline {
-    layout: wgpu::BindGroupLayout,
-    pipeline_layout: wgpu::PipelineLayout,
-    module: wgpu::ShaderModule,
-    pipelines: PerTarget<wgpu::RenderPipeline>,
-    sampler: wgpu::Sampler,
 }
 
 struct Prepared {
@@ -170,17 +163,6 @@ struct Cache {
     bytes: u64,
     /// The texture alone, one byte a texel.
     texture_bytes: u64,
-}
-
-/// `Entry` in `atlas.wgsl`.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
-struct GpuEntry {
-    quad: [f32; 4],
-    origin: [f32; 2],
-    texels_per_unit: f32,
-    _pad: f32,
-    texels: [f32; 4],
 }
 
 /// One glyph's coverage at one phase, 8 bits a texel.
@@ -215,27 +197,9 @@ impl Atlas {
             .map(|c| c.px_per_em)
     }
 
-    fn pipeline(&mut self, gpu: &GpuContext) -> &Pipeline {
-        self.pipeline.get_or_insert_with(|| {
-            let device = &gpu.device;
-            // entries, the atlas, its sampler (`@group(1)` of atlas.wgsl).
-            let layout = kit::layout(gpu, NAME, &[Slot::Storage, Slot::Texture, Slot::Sampler]);
-            let pipeline_layout = kit::pipeline_layout(gpu, NAME, Some(&layout));
-            let module = SHADER.module(device);
-            let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
-                label: Some(NAME),
-                mag_filter: wgpu::FilterMode::Linear,
-                min_filter: wgpu::FilterMode::Linear,
-                ..Default::default()
-            });
-            Pipeline {
-                layout,
-                pipeline_layout,
-                module,
-                pipelines: PerTarget::default(),
-                sampler,
-            }
-        })
+    fn pipeline(&mut self, gpu: &GpuContext) -> &AtlasPipeline {
+        self.pipeline
+            .get_or_insert_with(|| AtlasPipeline::new(gpu, NAME, &SHADER))
     }
 
     /// Rasterizes, packs and uploads every glyph of the prepared scene at `px_per_em`.
@@ -252,7 +216,7 @@ impl Atlas {
             let frame = BitmapFrame::of(glyph, scene.units_per_em, px_per_em)?;
             sizes.extend(std::iter::repeat_n((frame.width, frame.height), per_glyph));
         }
-        let packed = shelves(&sizes, gpu.max_texture_side()).ok_or_else(|| {
+        let packed = glyph_atlas::pack(&sizes, gpu.max_texture_side()).ok_or_else(|| {
             Error::Input(format!(
                 "atlas: the glyphs at {px_per_em} px/em with subpixel={phases} do not fit in \
                  one {0}×{0} texture; cache smaller (cache_px_per_em) or with fewer phases",
@@ -260,56 +224,22 @@ impl Atlas {
             ))
         })?;
         let bitmaps = rasterize_glyphs(scene, px_per_em, phases)?;
-        let texels = fill(&packed, &bitmaps);
+        let texels = packed.fill(bitmaps.iter().map(|b| (b.width, &b.coverage[..])), 1);
         let texels_per_unit = px_per_em / prepared.scene.units_per_em;
-        let entries: Vec<GpuEntry> = bitmaps
+        let entries: Vec<Entry> = bitmaps
             .iter()
             .zip(&packed.corners)
-            .map(|(b, &(x, y))| entry(b, x, y, texels_per_unit))
+            .map(|(b, &corner)| Entry::new((b.width, b.height), corner, b.origin, texels_per_unit))
             .collect();
         let cache = gpu.catching_errors("building the atlas", || {
             // One byte a texel: coverage is all an atlas of grey glyphs holds, 8 bits are
             // what every atlas stores (within 1/510 of the exact value), and R8Unorm is
             // filterable on every device.
-            let size = wgpu::Extent3d {
-                width: packed.width,
-                height: packed.height,
-                depth_or_array_layers: 1,
-            };
-            let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
-                label: Some("atlas"),
-                size,
-                mip_level_count: 1,
-                sample_count: 1,
-                dimension: wgpu::TextureDimension::D2,
-                format: wgpu::TextureFormat::R8Unorm,
-                usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-                view_formats: &[],
-            });
-            gpu.queue.write_texture(
-                texture.as_image_copy(),
-                &texels,
-                wgpu::TexelCopyBufferLayout {
-                    offset: 0,
-                    bytes_per_row: Some(packed.width),
-                    rows_per_image: None,
-                },
-                size,
-            );
+            let texture = packed.upload(gpu, "atlas", wgpu::TextureFormat::R8Unorm, &texels);
             let entry_buffer =
                 gpu.buffer_of("atlas entries", &entries, wgpu::BufferUsages::STORAGE);
-            let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
-            let bind_group = kit::bind_group(
-                gpu,
-                NAME,
-                &pipeline.layout,
-                &[
-                    entry_buffer.as_entire_binding(),
-                    wgpu::BindingResource::TextureView(&view),
-                    wgpu::BindingResource::Sampler(&pipeline.sampler),
-                ],
-            );
-            let texture_bytes = u64::from(packed.width) * u64::from(packed.height);
+            let bind_group = pipeline.bind_group(gpu, NAME, &entry_buffer, &texture);
+            let texture_bytes = packed.bytes(1);
             Ok(Cache {
                 px_per_em,
                 bind_group,
@@ -390,88 +320,6 @@ impl BitmapFrame {
             ),
         })
     }
-}
-
-/// A bitmap placed with its top-left texel at (x, y), as the shader reads it.
-fn entry(b: &Bitmap, x: u32, y: u32, texels_per_unit: f64) -> GpuEntry {
-    let (w, h) = (f64::from(b.width), f64::from(b.height));
-    // Bitmap pixel (X, Y) shows local (x, y) = ((X − ox) / s, (oy − Y) / s).
-    let quad = [
-        -b.origin.x / texels_per_unit,
-        (b.origin.y - h) / texels_per_unit,
-        (w - b.origin.x) / texels_per_unit,
-        b.origin.y / texels_per_unit,
-    ];
-    let corner = DVec2::new(f64::from(x), f64::from(y));
-    GpuEntry {
-        quad: quad.map(|v| v as f32),
-        origin: (corner + b.origin).as_vec2().to_array(),
-        texels_per_unit: texels_per_unit as f32,
-        _pad: 0.0,
-        texels: [
-            x as f32,
-            y as f32,
-            (corner.x + w) as f32,
-            (corner.y + h) as f32,
-        ],
-    }
-}
-
-/// Where each bitmap goes in the atlas texture.
-struct Shelves {
-    width: u32,
-    height: u32,
-    /// Each bitmap's top-left texel, in the bitmaps' order.
-    corners: Vec<(u32, u32)>,
-}
-
-/// Shelf packing of bitmaps of `sizes`, tallest first, into a texture about as wide as
-/// it is tall; None if it would need a side over `max_side`. Each bitmap carries its own
-/// zero border, so they can touch. Worked out from the sizes alone, before anything is
-/// rasterized: a cache that cannot fit is refused at once.
-fn shelves(sizes: &[(u32, u32)], max_side: u32) -> Option<Shelves> {
-    let area: u64 = sizes
-        .iter()
-        .map(|&(w, h)| u64::from(w) * u64::from(h))
-        .sum();
-    let widest = sizes.iter().map(|s| s.0).max().unwrap_or(1);
-    let width = ((area as f64).sqrt() * 1.1).ceil().max(f64::from(widest));
-    if width > f64::from(max_side) {
-        return None;
-    }
-    let width = width as u32;
-    let mut order: Vec<usize> = (0..sizes.len()).collect();
-    order.sort_by_key(|&i| std::cmp::Reverse(sizes[i].1));
-    let mut corners = vec![(0, 0); sizes.len()];
-    let (mut x, mut y, mut shelf_height) = (0u32, 0u32, 0u32);
-    for &i in &order {
-        let (w, h) = sizes[i];
-        if x + w > width {
-            (x, y, shelf_height) = (0, y + shelf_height, 0);
-        }
-        corners[i] = (x, y);
-        x += w;
-        shelf_height = shelf_height.max(h);
-    }
-    let height = (y + shelf_height).max(1);
-    (height <= max_side).then_some(Shelves {
-        width,
-        height,
-        corners,
-    })
-}
-
-/// The atlas texture: every bitmap at its corner.
-fn fill(shelves: &Shelves, bitmaps: &[Bitmap]) -> Vec<u8> {
-    let width = shelves.width as usize;
-    let mut texels = vec![0u8; width * shelves.height as usize];
-    for (b, &(x, y)) in bitmaps.iter().zip(&shelves.corners) {
-        for (row, line) in b.coverage.chunks_exact(b.width as usize).enumerate() {
-            let start = (y as usize + row) * width + x as usize;
-            texels[start..start + line.len()].copy_from_slice(line);
-        }
-    }
-    texels
 }
 
 impl Method for Atlas {

@@ -156,16 +156,22 @@ pub enum Overlay {
     TriangleWireframe,
     /// Where curves were subdivided.
     SubdivisionPoints,
+    /// A distance field's channels as colour.
+    FieldChannels,
+    /// Which of a multi-channel field's channels the median picks.
+    MedianChannel,
 }
 
 impl Overlay {
-    pub const ALL: [Overlay; 6] = [
+    pub const ALL: [Overlay; 8] = [
         Overlay::EqualDistance,
         Overlay::CellGrid,
         Overlay::CurveClasses,
         Overlay::CostHeatMap,
         Overlay::TriangleWireframe,
         Overlay::SubdivisionPoints,
+        Overlay::FieldChannels,
+        Overlay::MedianChannel,
     ];
 
     /// The overlay called `name` (see [`Overlay::name`]); None for `none` and any name
@@ -183,6 +189,8 @@ impl Overlay {
             Overlay::CostHeatMap => "cost",
             Overlay::TriangleWireframe => "wireframe",
             Overlay::SubdivisionPoints => "points",
+            Overlay::FieldChannels => "field",
+            Overlay::MedianChannel => "median",
         }
     }
 }
@@ -198,6 +206,7 @@ pub fn not_prepared(method: &str) -> Error {
 pub mod atlas;
 pub mod bounds;
 pub mod frame;
+pub mod glyph_atlas;
 pub mod info;
 pub mod instances;
 pub mod params;

@@ -35,6 +35,7 @@ pub const METHODS: &[&MethodInfo] = &[
     &super::peers::vello::INFO,
     &super::peers::glyphon::INFO,
     &super::peers::vello_cpu::INFO,
+    &super::peers::msdf::INFO,
 ];
 
 /// The GPU method called `name`, made with the parameters `given`. The reference is

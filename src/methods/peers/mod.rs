@@ -11,6 +11,7 @@
 //! [`Error::Refused`], naming its limit.
 
 pub mod glyphon;
+pub mod msdf;
 pub mod vello;
 pub mod vello_cpu;
 
