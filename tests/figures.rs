@@ -278,7 +278,9 @@ fn quote_errors(doc_name: &str, doc: &str, source: &dyn Fn(&str) -> String) -> V
             .find(|&k| {
                 let keys: Vec<&[String]> =
                     table.rows.iter().map(|r| &r[..k.min(r.len())]).collect();
-                keys.iter().enumerate().all(|(i, key)| !keys[..i].contains(key))
+                keys.iter()
+                    .enumerate()
+                    .all(|(i, key)| !keys[..i].contains(key))
             })
             .unwrap_or(table.header.len());
         if quote.rows.is_empty() {
@@ -403,7 +405,10 @@ fn a_wrong_quoted_cell_is_named() {
     let doc = read("docs/bench.md");
     let right = "| page | own | 2.58× · 3.18× · 0.00 · 0.03 · 0.001 · 0 |";
     assert_eq!(doc.matches(right).count(), 1);
-    let wrong = doc.replace(right, "| page | own | 2.85× · 3.18× · 0.00 · 0.03 · 0.001 · 0 |");
+    let wrong = doc.replace(
+        right,
+        "| page | own | 2.85× · 3.18× · 0.00 · 0.03 · 0.001 · 0 |",
+    );
     let errors = quote_errors("docs/bench.md", &wrong, &committed_report);
     assert_eq!(errors.len(), 1, "{errors:?}");
     assert!(

@@ -441,6 +441,37 @@ pub fn all() -> Vec<HardCase> {
                 48.0,
             )
         },
+        // A distance-field atlas's known failures (msdfgen's issues 9, 181 and 182), at
+        // sizes where its field, 32 texels per em by default, is drawn magnified,
+        // thinner than a texel, and minified: every method runs them.
+        real(
+            "sharp-corners-magnified",
+            "DejaVu Sans 'AVWM' at 128 px/em: sharp vertices, 4–8 px per texel of a \
+             32–16 texels-per-em field",
+            text("AVWM"),
+            128.0,
+        ),
+        // The 0.6 px bar has both its edges inside one pixel.
+        subpixel_detail(HardCase {
+            size_px_per_em: 64.0,
+            ..synthetic(
+                "hairline-stroke",
+                "bars 0.02 and 0.01 em wide at 64 px/em (1.3 and 0.6 px): under a texel of \
+                 a 32 texels-per-em field",
+                vec![
+                    polygon(&rect(100.0, 0.0, 120.0, 600.0)),
+                    polygon(&rect(300.0, 0.0, 310.0, 600.0)),
+                ],
+            )
+        }),
+        // DejaVu's stems are 0.09 em: 0.7 px here, both edges inside one pixel.
+        subpixel_detail(real(
+            "minified-line",
+            "DejaVu Sans 'Hamburgefonstiv' at 8 px/em (stems 0.7 px): a quarter of a 32 \
+             texels-per-em field, its range under 2 px",
+            text("Hamburgefonstiv"),
+            8.0,
+        )),
         overlapping(real(
             "inter-overlaps",
             "Inter 'eQ&' (overlapping contours, as variable fonts draw them) at 40 px/em",

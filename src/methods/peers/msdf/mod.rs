@@ -36,7 +36,7 @@ pub const INFO: MethodInfo = MethodInfo {
     role: Role::Peer,
     shader: Some(SHADER),
     params: PARAMS,
-    colour: [188, 189, 34],
+    colour: [140, 86, 75],
     bench: &[
         bench_at(&[], true),
         bench_at(&[("field", "sdf")], true),
