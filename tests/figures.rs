@@ -367,8 +367,8 @@ fn a_wrong_readme_figure_is_named() {
     let readme = read("README.md");
     for (right, wrong, named) in [
         (
-            "7.64× · 9.41× · 0.36 · 0.417",
-            "7.64× · 9.41× · 0.36 · 0.418",
+            "10.13× · 10.48× · 0.36 · 0.417",
+            "10.13× · 10.48× · 0.36 · 0.418",
             "`sdf-cells`, max: 0.418 where docs/bench/peers/bench.json gives 0.417",
         ),
         (
@@ -377,14 +377,14 @@ fn a_wrong_readme_figure_is_named() {
             "`reference`, × atlas: 623 where docs/bench/peers/bench.json gives 599",
         ),
         (
-            "0.81× · 1.00× · 3.21",
-            "0.82× · 1.00× · 3.21",
-            "`glyphon`, × atlas: 0.82 where docs/bench/peers/bench.json gives 0.81",
+            "0.97× · 1.00× · 3.21",
+            "0.98× · 1.00× · 3.21",
+            "`glyphon`, × atlas: 0.98 where docs/bench/peers/bench.json gives 0.97",
         ),
         (
-            "2.58× · 3.18× · 0.00",
-            "2.58× · 3.19× · 0.00",
-            "`winding`, × glyphon: 3.19 where docs/bench/peers/bench.json gives 3.18",
+            "2.66× · 2.75× · 0.00",
+            "2.66× · 2.76× · 0.00",
+            "`winding`, × glyphon: 2.76 where docs/bench/peers/bench.json gives 2.75",
         ),
     ] {
         assert_eq!(
@@ -403,23 +403,23 @@ fn a_wrong_readme_figure_is_named() {
 #[test]
 fn a_wrong_quoted_cell_is_named() {
     let doc = read("docs/bench.md");
-    let right = "| page | own | 2.58× · 3.18× · 0.00 · 0.03 · 0.001 · 0 |";
+    let right = "| page | own | 2.66× · 2.75× · 0.00 · 0.03 · 0.001 · 0 |";
     assert_eq!(doc.matches(right).count(), 1);
     let wrong = doc.replace(
         right,
-        "| page | own | 2.85× · 3.18× · 0.00 · 0.03 · 0.001 · 0 |",
+        "| page | own | 6.62× · 2.75× · 0.00 · 0.03 · 0.001 · 0 |",
     );
     let errors = quote_errors("docs/bench.md", &wrong, &committed_report);
     assert_eq!(errors.len(), 1, "{errors:?}");
     assert!(
-        errors[0].contains("row [\"page\", \"own\"], column 'winding': '2.85× · 3.18×"),
+        errors[0].contains("row [\"page\", \"own\"], column 'winding': '6.62× · 2.75×"),
         "{errors:?}"
     );
-    let refusal = "| rotated | own | 3.52× · n/a · 0.00 · 0.04 · 0.001 · 0 | n/a — tilt |";
+    let refusal = "| rotated | own | 2.90× · n/a · 0.00 · 0.04 · 0.001 · 0 | n/a — tilt |";
     assert_eq!(doc.matches(refusal).count(), 1);
     let wrong = doc.replace(
         refusal,
-        "| rotated | own | 3.52× · n/a · 0.00 · 0.04 · 0.001 · 0 | n/a — turns |",
+        "| rotated | own | 2.90× · n/a · 0.00 · 0.04 · 0.001 · 0 | n/a — turns |",
     );
     let errors = quote_errors("docs/bench.md", &wrong, &committed_report);
     assert_eq!(errors.len(), 1, "{errors:?}");
@@ -428,8 +428,8 @@ fn a_wrong_quoted_cell_is_named() {
         "{errors:?}"
     );
     let extra = doc.replacen(
-        "| reference | default | 361 (CPU)",
-        "| nothing | default | 1 |\n| reference | default | 361 (CPU)",
+        "| reference | default | 588 (CPU)",
+        "| nothing | default | 1 |\n| reference | default | 588 (CPU)",
         1,
     );
     let errors = quote_errors("docs/bench.md", &extra, &committed_report);

@@ -37,11 +37,21 @@ pub const INFO: MethodInfo = MethodInfo {
     shader: Some(SHADER),
     params: PARAMS,
     colour: [140, 86, 75],
+    // msdfgen's common settings (32 and 48 texels per em, ranges 4 and 8) for each
+    // field, and the two known to fail: 16 texels per em, and msdf-atlas-gen's default
+    // range of 2.
     bench: &[
         bench_at(&[], true),
         bench_at(&[("field", "sdf")], true),
         bench_at(&[("field", "mtsdf")], false),
+        bench_at(&[("range", "8")], false),
+        bench_at(&[("em_px", "48")], false),
         bench_at(&[("em_px", "48"), ("range", "8")], false),
+        bench_at(&[("field", "sdf"), ("em_px", "48"), ("range", "8")], false),
+        bench_at(
+            &[("field", "mtsdf"), ("em_px", "48"), ("range", "8")],
+            false,
+        ),
         bench_at(&[("em_px", "16")], false),
         bench_at(&[("range", "2")], false),
     ],
