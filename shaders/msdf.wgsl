@@ -1,6 +1,6 @@
 // Peer `msdf` (compiled after common.wgsl): a distance-field atlas drawn with the shader
 // msdfgen publishes (Viktor Chlumský, "Shape Decomposition for Multi-channel Distance
-// Fields", and msdfgen's README since 1.13). Each distinct glyph has a field made once
+// Fields", and msdfgen's README), its screen range from the derivatives. Each distinct glyph has a field made once
 // on the CPU by fdsm; each instance draws one quad that samples it bilinearly.
 
 // The fields are `entries` of glyph_atlas.wgsl, one per glyph.
@@ -15,9 +15,11 @@ override OVERLAY: u32 = 0u;
 @vertex
 fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u32) -> AtlasQuad {
     let inst = instances[index];
-    // With the pixel footprint: where a field texel is larger than a pixel, a pixel
-    // whose centre lies just outside the field's rectangle can still touch the ink.
-    return entry_quad(inst, entries[inst.glyph], vertex, true);
+    // No pixel footprint, as the atlas: the field's border lies past range/2 texels
+    // from the ink, where it holds 0, and the ramp (its screen range at least 1) turns
+    // 0 into coverage 0; a pixel centre beyond the rectangle reads that border and adds
+    // nothing.
+    return entry_quad(inst, entries[inst.glyph], vertex, false);
 }
 
 fn median3(v: vec3<f32>) -> f32 {
@@ -28,10 +30,11 @@ fn median3(v: vec3<f32>) -> f32 {
 fn fs_main(in: AtlasQuad) -> @location(0) vec4<f32> {
     let local = project(mat3x3<f32>(in.to_local_0, in.to_local_1, in.to_local_2), in.position.xy);
     let texel = atlas_texel(in.origin, local);
-    // msdfgen's screen range: field texels per screen pixel along each field axis, from
-    // the derivatives (msdfgen 1.13 replaced 1/fwidth, which anti-aliased rotated text
-    // wrongly), averaged over the two axes, times the range; at least 1.
-    let per_pixel = sqrt(dpdx(texel) * dpdx(texel) + dpdy(texel) * dpdy(texel));
+    // msdfgen's screen range: screen pixels per field texel along each field axis,
+    // averaged over the two, times the range; at least 1. From the length of each
+    // axis's gradient, which a turn leaves alone, rather than 1/fwidth (|dx| + |dy|),
+    // which counts a pixel √2 too wide at 45°. The floor keeps an edge-on tilt finite.
+    let per_pixel = max(sqrt(dpdx(texel) * dpdx(texel) + dpdy(texel) * dpdy(texel)), vec2<f32>(1e-6));
     let screen_range = max(0.5 * dot(vec2<f32>(RANGE), 1.0 / per_pixel), 1.0);
     // Level 0: msdfgen's recipe has no mipmaps (docs/methods/msdf.md says what that
     // does to minified text).

@@ -334,8 +334,10 @@ fn readme_method_figures_are_the_cited_runs() {
 
 #[test]
 fn docs_bench_tables_quote_the_committed_reports() {
-    let errors = quote_errors("docs/bench.md", &read("docs/bench.md"), &committed_report);
-    assert!(errors.is_empty(), "\n{}", errors.join("\n"));
+    for doc in ["docs/bench.md", "docs/motion.md"] {
+        let errors = quote_errors(doc, &read(doc), &committed_report);
+        assert!(errors.is_empty(), "\n{}", errors.join("\n"));
+    }
 }
 
 /// A table read as written by hand: its line, heading, columns and cells; the rule

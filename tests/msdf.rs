@@ -73,12 +73,12 @@ fn edge_error(
         for x in 0..camera.width {
             let centre = DVec2::new(f64::from(x) + 0.5, f64::from(y) + 0.5);
             let near_corner = corners.iter().any(|c| c.distance(centre) < corner_px);
-            // Distance to the nearest edge line, through the corners' images.
+            // Distance to the nearest edge, a segment between two corners' images.
             let to_edge = (0..4)
                 .map(|i| {
                     let (a, b) = (corners[i], corners[(i + 1) % 4]);
-                    let along = (b - a).normalize();
-                    (centre - a).perp_dot(along).abs()
+                    let t = ((centre - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
+                    centre.distance(a + (b - a) * t)
                 })
                 .fold(f64::INFINITY, f64::min);
             if near_corner || to_edge > 1.0 {

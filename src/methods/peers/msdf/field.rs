@@ -7,8 +7,6 @@
 //! A field value v in [0, 1] encodes a signed distance d (texels, positive inside) as
 //! v = d / range + 1/2, clamped: the field holds distances within ±range/2 texels.
 
-use std::time::Instant;
-
 use fdsm::bezier::scanline::FillRule;
 use fdsm::bezier::{Point, Segment as FieldSegment};
 use fdsm::correct_error::{ErrorCorrectionConfig, correct_error_msdf, correct_error_mtsdf};
@@ -85,10 +83,9 @@ pub struct GlyphField {
     pub texels: Vec<u8>,
     /// Where the glyph's local origin lies in the field, texels, x right and y down.
     pub origin: DVec2,
-    /// CPU time spent making it, ms.
-    pub cpu_ms: f64,
 }
 
+#[cfg(test)]
 impl GlyphField {
     /// Texel (x, y)'s bytes.
     pub fn texel(&self, kind: FieldKind, x: u32, y: u32) -> &[u8] {
@@ -98,30 +95,45 @@ impl GlyphField {
     }
 }
 
+/// The largest side of one glyph's field, texels: its f32 image, made before it is
+/// quantized, then holds at most 4096² texels of 16 bytes (268 MB).
+pub const MAX_FIELD_SIDE: u32 = 4096;
+
+/// The size of the field of an outline with ink `bounds` (font units; None for an
+/// empty outline) for a font of `units_per_em`, texels: worked out before anything is
+/// made, so that an atlas that cannot fit is refused at once. Errors over
+/// [`MAX_FIELD_SIDE`] a side.
+pub fn size(
+    bounds: Option<Rect>,
+    units_per_em: f64,
+    spec: &FieldSpec,
+) -> Result<(u32, u32), Error> {
+    let Some(bounds) = bounds else {
+        return Ok((1, 1));
+    };
+    let extent = bounds.size() * spec.texels_per_em / units_per_em + 2.0 * spec.pad();
+    let (width, height) = (extent.x.ceil(), extent.y.ceil());
+    let side = f64::from(MAX_FIELD_SIDE);
+    if !(width <= side && height <= side) {
+        return Err(Error::Input(format!(
+            "msdf: a field of {width}×{height} texels is over {side} a side; ask for \
+             fewer texels per em (em_px) or a smaller range"
+        )));
+    }
+    Ok((width as u32, height as u32))
+}
+
 /// The field of `outline` (with ink `bounds`, font units) for a font of
-/// `units_per_em`. Errors where the field would be larger than `max_side` texels a side.
+/// `units_per_em`, of the [`size`] it has.
 pub fn generate(
     outline: &Outline,
     bounds: Rect,
     units_per_em: f64,
     spec: &FieldSpec,
-    max_side: u32,
 ) -> Result<GlyphField, Error> {
-    let started = Instant::now();
     let scale = spec.texels_per_em / units_per_em;
     let pad = spec.pad();
-    let (width, height) = if outline.is_empty() {
-        (1.0, 1.0)
-    } else {
-        let size = bounds.size() * scale;
-        ((size.x + 2.0 * pad).ceil(), (size.y + 2.0 * pad).ceil())
-    };
-    if !(width <= f64::from(max_side) && height <= f64::from(max_side)) {
-        return Err(Error::Input(format!(
-            "msdf: a field of {width}×{height} texels is over {max_side} a side; ask for \
-             fewer texels per em (em_px) or a smaller range"
-        )));
-    }
+    let (width, height) = size((!outline.is_empty()).then_some(bounds), units_per_em, spec)?;
     // Where the local origin lies in fdsm's texels, y up from the field's bottom edge.
     let origin = if outline.is_empty() {
         DVec2::ZERO
@@ -131,7 +143,6 @@ pub fn generate(
     let shape = field_shape(outline, |p| {
         Point::new(origin.x + p.x * scale, origin.y + p.y * scale)
     });
-    let (width, height) = (width as u32, height as u32);
     let bottom_first = if shape.contours.is_empty() {
         // Nothing to measure a distance to: the outside value everywhere.
         vec![0; width as usize * height as usize * spec.kind.texel_bytes()]
@@ -156,7 +167,6 @@ pub fn generate(
         height,
         texels,
         origin: DVec2::new(origin.x, f64::from(height) - origin.y),
-        cpu_ms: started.elapsed().as_secs_f64() * 1e3,
     })
 }
 
@@ -298,7 +308,7 @@ mod tests {
                     range,
                     correction: true,
                 };
-                let field = generate(&outline, bounds, units_per_em, &spec, 4096).expect("made");
+                let field = generate(&outline, bounds, units_per_em, &spec).expect("made");
                 let pad = spec.pad();
                 assert_eq!(field.width as f64, 10.0 + 2.0 * pad);
                 assert_eq!(field.height, field.width);
@@ -350,12 +360,12 @@ mod tests {
             min: DVec2::ZERO,
             max: DVec2::ZERO,
         };
-        let empty = generate(&Outline::default(), rect, 1000.0, &spec, 4096).expect("made");
+        let empty = generate(&Outline::default(), rect, 1000.0, &spec).expect("made");
         assert_eq!((empty.width, empty.height), (1, 1));
         assert_eq!(empty.texel(FieldKind::Msdf, 0, 0)[..3], [0, 0, 0]);
         let outline = square(1000.0);
         let bounds = outline.control_bounds().expect("points");
-        let refused = generate(&outline, bounds, 1.0, &spec, 4096);
+        let refused = generate(&outline, bounds, 1.0, &spec);
         assert!(matches!(refused, Err(Error::Input(_))), "{refused:?}");
     }
 

@@ -14,7 +14,7 @@
 pub mod field;
 pub mod params;
 
-use self::field::{FieldKind, GlyphField};
+use self::field::FieldKind;
 use self::params::{NAME, OVERLAYS, PARAMS, Settings};
 use super::observed;
 use crate::Error;
@@ -107,32 +107,13 @@ impl Msdf {
     }
 }
 
-/// The field of every distinct glyph of `scene`, in its order.
-fn glyph_fields(
-    scene: &Scene,
-    settings: &Settings,
-    max_side: u32,
-) -> Result<Vec<GlyphField>, Error> {
-    let merged;
-    let scene = if settings.merge_overlaps {
-        merged = scene.with_overlaps_merged();
-        &merged
+/// `scene` as its fields are made from: overlapping contours merged where asked.
+fn field_scene(scene: &Scene, settings: &Settings) -> Scene {
+    if settings.merge_overlaps {
+        scene.with_overlaps_merged()
     } else {
-        scene
-    };
-    scene
-        .glyphs
-        .iter()
-        .map(|g| {
-            field::generate(
-                &g.outline,
-                g.bounds,
-                scene.units_per_em,
-                &settings.field,
-                max_side,
-            )
-        })
-        .collect()
+        scene.clone()
+    }
 }
 
 impl Method for Msdf {
@@ -143,8 +124,21 @@ impl Method for Msdf {
     fn prepare(&mut self, gpu: &GpuContext, scene: &Scene) -> Result<(), Error> {
         let settings = self.settings;
         let max_side = gpu.max_texture_side();
-        let fields = glyph_fields(scene, &settings, max_side)?;
-        let sizes: Vec<(u32, u32)> = fields.iter().map(|f| (f.width, f.height)).collect();
+        let source = field_scene(scene, &settings);
+        let upem = source.units_per_em;
+        // Packed from the sizes alone, before fdsm makes anything: an atlas that cannot
+        // fit is refused at once.
+        let sizes = source
+            .glyphs
+            .iter()
+            .map(|g| {
+                field::size(
+                    (!g.outline.is_empty()).then_some(g.bounds),
+                    upem,
+                    &settings.field,
+                )
+            })
+            .collect::<Result<Vec<_>, _>>()?;
         let packed = glyph_atlas::pack(&sizes, max_side).ok_or_else(|| {
             Error::Input(format!(
                 "msdf: the fields at {} texels per em do not fit in one {max_side}×{max_side} \
@@ -152,6 +146,11 @@ impl Method for Msdf {
                 settings.field.texels_per_em
             ))
         })?;
+        let fields = source
+            .glyphs
+            .iter()
+            .map(|g| field::generate(&g.outline, g.bounds, upem, &settings.field))
+            .collect::<Result<Vec<_>, _>>()?;
         let kind = settings.field.kind;
         let texels = packed.fill(
             fields.iter().map(|f| (f.width, &f.texels[..])),
