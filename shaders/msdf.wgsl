@@ -15,10 +15,11 @@ override OVERLAY: u32 = 0u;
 @vertex
 fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u32) -> AtlasQuad {
     let inst = instances[index];
-    // No pixel footprint, as the atlas: the field's border lies past range/2 texels
-    // from the ink, where it holds 0, and the ramp (its screen range at least 1) turns
-    // 0 into coverage 0; a pixel centre beyond the rectangle reads that border and adds
-    // nothing.
+    // No pixel footprint: the quad covers the field's rectangle, as engines draw an
+    // MSDF glyph (msdf-atlas-gen's plane bounds). Its border lies past range/2 texels
+    // from the ink, where the true distance reads "outside"; grown further, the quad
+    // would sample the clamped border, whose pseudo-distance channels along an edge's
+    // extension need not.
     return entry_quad(inst, entries[inst.glyph], vertex, false);
 }
 

@@ -859,8 +859,8 @@ fn render_case_draws_a_named_view_and_refuses_mixing() {
 }
 
 /// Each peer renders through `render` as a method does, with time, error and edge
-/// error in `--stats`; a view it cannot draw exits 2 with one line naming its limit,
-/// and writes no image.
+/// error in `--stats`; a view it cannot draw (a tilt, for all but msdf) exits 2 with
+/// one line naming its limit, and writes no image.
 #[test]
 fn render_draws_the_peers_and_refuses_what_they_cannot_draw() {
     let peers = glyphscope::methods::registry::METHODS
@@ -894,6 +894,19 @@ fn render_draws_the_peers_and_refuses_what_they_cannot_draw() {
         assert!(error["mae_255"].as_f64().unwrap().is_finite(), "{peer}");
         assert!(error["edge"]["pixels"].as_u64().unwrap() > 0, "{peer}");
         assert!(error["edge"]["mae_255"].as_f64().unwrap() > 0.0, "{peer}");
+        // msdf draws through the quads every method shares: any camera, a tilt too.
+        if peer == glyphscope::methods::peers::msdf::params::NAME {
+            run_ok(&[
+                "render",
+                "--case",
+                "rotated",
+                "--method",
+                peer,
+                "--out",
+                out.to_str().unwrap(),
+            ]);
+            continue;
+        }
         fails(
             &format!("{peer}-tilted"),
             &["--case", "rotated", "--method", peer],
@@ -1092,4 +1105,59 @@ fn the_gpu_report_refuses_a_cpu_adapter_with_one_line_and_writes_nothing() {
         before,
         "a refused report wrote into docs/bench/gpu"
     );
+}
+
+/// `render --method msdf:KEY=VALUE` draws with the parameters after the colons (as
+/// `motion` and `bench` take them) and writes the field's memory and the error; a bad
+/// value, given either way, exits 2 with one line.
+#[test]
+fn render_takes_parameters_after_the_method_name() {
+    let stats = scratch("msdf-sdf.json");
+    let error = scratch("msdf-sdf-error.png");
+    let out = scratch("msdf-sdf.png");
+    run_ok(&[
+        "render",
+        "--text",
+        "Ag",
+        "--size",
+        "40",
+        "--method",
+        "msdf:field=sdf:em_px=48",
+        "--out",
+        out.to_str().unwrap(),
+        "--stats",
+        stats.to_str().unwrap(),
+        "--error-image",
+        error.to_str().unwrap(),
+    ]);
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&stats).unwrap()).unwrap();
+    let params: Vec<String> = json["params"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| format!("{}={}", p[0].as_str().unwrap(), p[1].as_str().unwrap()))
+        .collect();
+    assert_eq!(params, ["field=sdf", "em_px=48"], "{json}");
+    // One byte a texel for a single-channel field, inside what the method holds.
+    let field = json["cache_bytes"].as_u64().unwrap();
+    assert!(
+        field > 0 && field < json["gpu_bytes"].as_u64().unwrap(),
+        "{json}"
+    );
+    assert!(
+        json["error"]["mae_255"].as_f64().unwrap().is_finite(),
+        "{json}"
+    );
+    let text = ["--text", "a", "--size", "20"];
+    let with = |method: &'static str, extra: &[&'static str]| -> Vec<&'static str> {
+        [&text[..], &["--method", method], extra].concat()
+    };
+    fails("msdf em_px=0", &with("msdf:em_px=0", &[]), "em_px must be");
+    fails(
+        "msdf range",
+        &with("msdf", &["--param", "range=banana"]),
+        "range must be",
+    );
+    fails("msdf no value", &with("msdf:field", &[]), "KEY=VALUE");
 }

@@ -369,24 +369,24 @@ fn a_wrong_readme_figure_is_named() {
     let readme = read("README.md");
     for (right, wrong, named) in [
         (
-            "10.13× · 10.48× · 0.36 · 0.417",
-            "10.13× · 10.48× · 0.36 · 0.418",
+            "8.27× · 9.69× · 0.36 · 0.417",
+            "8.27× · 9.69× · 0.36 · 0.418",
             "`sdf-cells`, max: 0.418 where docs/bench/peers/bench.json gives 0.417",
         ),
         (
-            "— (599 ms CPU)",
+            "— (669 ms CPU)",
             "— (623 ms CPU)",
-            "`reference`, × atlas: 623 where docs/bench/peers/bench.json gives 599",
+            "`reference`, × atlas: 623 where docs/bench/peers/bench.json gives 669",
         ),
         (
-            "0.97× · 1.00× · 3.21",
-            "0.98× · 1.00× · 3.21",
-            "`glyphon`, × atlas: 0.98 where docs/bench/peers/bench.json gives 0.97",
+            "0.85× · 1.00× · 3.21",
+            "0.86× · 1.00× · 3.21",
+            "`glyphon`, × atlas: 0.86 where docs/bench/peers/bench.json gives 0.85",
         ),
         (
-            "2.66× · 2.75× · 0.00",
-            "2.66× · 2.76× · 0.00",
-            "`winding`, × glyphon: 2.76 where docs/bench/peers/bench.json gives 2.75",
+            "2.59× · 3.03× · 0.00",
+            "2.59× · 3.04× · 0.00",
+            "`winding`, × glyphon: 3.04 where docs/bench/peers/bench.json gives 3.03",
         ),
     ] {
         assert_eq!(
@@ -405,23 +405,23 @@ fn a_wrong_readme_figure_is_named() {
 #[test]
 fn a_wrong_quoted_cell_is_named() {
     let doc = read("docs/bench.md");
-    let right = "| page | own | 2.66× · 2.75× · 0.00 · 0.03 · 0.001 · 0 |";
+    let right = "| page | own | 2.59× · 3.03× · 0.00 · 0.03 · 0.001 · 0 |";
     assert_eq!(doc.matches(right).count(), 1);
     let wrong = doc.replace(
         right,
-        "| page | own | 6.62× · 2.75× · 0.00 · 0.03 · 0.001 · 0 |",
+        "| page | own | 9.52× · 3.03× · 0.00 · 0.03 · 0.001 · 0 |",
     );
     let errors = quote_errors("docs/bench.md", &wrong, &committed_report);
     assert_eq!(errors.len(), 1, "{errors:?}");
     assert!(
-        errors[0].contains("row [\"page\", \"own\"], column 'winding': '6.62× · 2.75×"),
+        errors[0].contains("row [\"page\", \"own\"], column 'winding': '9.52× · 3.03×"),
         "{errors:?}"
     );
-    let refusal = "| rotated | own | 2.90× · n/a · 0.00 · 0.04 · 0.001 · 0 | n/a — tilt |";
+    let refusal = "| rotated | own | 3.03× · n/a · 0.00 · 0.04 · 0.001 · 0 | n/a — tilt |";
     assert_eq!(doc.matches(refusal).count(), 1);
     let wrong = doc.replace(
         refusal,
-        "| rotated | own | 2.90× · n/a · 0.00 · 0.04 · 0.001 · 0 | n/a — turns |",
+        "| rotated | own | 3.03× · n/a · 0.00 · 0.04 · 0.001 · 0 | n/a — turns |",
     );
     let errors = quote_errors("docs/bench.md", &wrong, &committed_report);
     assert_eq!(errors.len(), 1, "{errors:?}");
@@ -430,8 +430,8 @@ fn a_wrong_quoted_cell_is_named() {
         "{errors:?}"
     );
     let extra = doc.replacen(
-        "| reference | default | 588 (CPU)",
-        "| nothing | default | 1 |\n| reference | default | 588 (CPU)",
+        "| reference | default | 1235 (CPU)",
+        "| nothing | default | 1 |\n| reference | default | 1235 (CPU)",
         1,
     );
     let errors = quote_errors("docs/bench.md", &extra, &committed_report);

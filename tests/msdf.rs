@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::{gpu, polygon, rect, render, single};
+use common::{polygon, rect, render, single};
 use glam::DVec2;
 use glyphscope::camera::Camera;
 use glyphscope::geometry::{Outline, project};

@@ -189,7 +189,7 @@ impl Overlay {
             Overlay::CostHeatMap => "cost",
             Overlay::TriangleWireframe => "wireframe",
             Overlay::SubdivisionPoints => "points",
-            Overlay::FieldChannels => "field",
+            Overlay::FieldChannels => "channels",
             Overlay::MedianChannel => "median",
         }
     }

@@ -98,6 +98,10 @@ impl GlyphField {
 /// The largest side of one glyph's field, texels: its f32 image, made before it is
 /// quantized, then holds at most 4096² texels of 16 bytes (268 MB).
 pub const MAX_FIELD_SIDE: u32 = 4096;
+/// The most texels the fields of one scene may have together (128 MB at four bytes a
+/// texel): fdsm's time grows with them (every texel measures every edge), and past
+/// this a scene's preparation would take minutes, so it is refused instead.
+pub const MAX_ATLAS_TEXELS: u64 = 1 << 25;
 
 /// The size of the field of an outline with ink `bounds` (font units; None for an
 /// empty outline) for a font of `units_per_em`, texels: worked out before anything is
@@ -115,7 +119,8 @@ pub fn size(
     let (width, height) = (extent.x.ceil(), extent.y.ceil());
     let side = f64::from(MAX_FIELD_SIDE);
     if !(width <= side && height <= side) {
-        return Err(Error::Input(format!(
+        // A limit of the technique, as a peer's are: refused, naming it.
+        return Err(Error::Refused(format!(
             "msdf: a field of {width}×{height} texels is over {side} a side; ask for \
              fewer texels per em (em_px) or a smaller range"
         )));
@@ -366,7 +371,7 @@ mod tests {
         let outline = square(1000.0);
         let bounds = outline.control_bounds().expect("points");
         let refused = generate(&outline, bounds, 1.0, &spec);
-        assert!(matches!(refused, Err(Error::Input(_))), "{refused:?}");
+        assert!(matches!(refused, Err(Error::Refused(_))), "{refused:?}");
     }
 
     #[test]

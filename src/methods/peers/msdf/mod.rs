@@ -139,8 +139,20 @@ impl Method for Msdf {
                 )
             })
             .collect::<Result<Vec<_>, _>>()?;
+        let texels: u64 = sizes
+            .iter()
+            .map(|&(w, h)| u64::from(w) * u64::from(h))
+            .sum();
+        if texels > field::MAX_ATLAS_TEXELS {
+            return Err(Error::Refused(format!(
+                "msdf: the fields at {} texels per em would hold {texels} texels, over the \
+                 {} glyphscope makes for one scene; ask for fewer (em_px)",
+                settings.field.texels_per_em,
+                field::MAX_ATLAS_TEXELS
+            )));
+        }
         let packed = glyph_atlas::pack(&sizes, max_side).ok_or_else(|| {
-            Error::Input(format!(
+            Error::Refused(format!(
                 "msdf: the fields at {} texels per em do not fit in one {max_side}×{max_side} \
                  texture; ask for fewer (em_px)",
                 settings.field.texels_per_em

@@ -58,9 +58,9 @@ pub const PARAMS: &[ParamSpec] = &[
     },
     ParamSpec {
         key: "overlay",
-        choices: &["none", "field", "median"],
+        choices: &["none", "channels", "median"],
         numbers: None,
-        help: "field: the field's channels as colour (red, green, blue); median: the \
+        help: "channels: the field's channels as colour (red, green, blue); median: the \
                channel the median picks at each pixel, white where two agree.",
     },
 ];
