@@ -1,7 +1,8 @@
 // Peer `msdf` (compiled after common.wgsl): a distance-field atlas drawn with the shader
 // msdfgen publishes (Viktor Chlumský, "Shape Decomposition for Multi-channel Distance
-// Fields", and msdfgen's README), its screen range from the derivatives. Each distinct glyph has a field made once
-// on the CPU by fdsm; each instance draws one quad that samples it bilinearly.
+// Fields", and msdfgen's README), its screen range from the derivatives. Each distinct
+// glyph has a field made once on the CPU by fdsm; each instance draws one quad that
+// samples it bilinearly.
 
 // The fields are `entries` of glyph_atlas.wgsl, one per glyph.
 

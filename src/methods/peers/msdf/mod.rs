@@ -14,6 +14,8 @@
 pub mod field;
 pub mod params;
 
+use std::borrow::Cow;
+
 use self::field::FieldKind;
 use self::params::{NAME, OVERLAYS, PARAMS, Settings};
 use super::observed;
@@ -108,11 +110,11 @@ impl Msdf {
 }
 
 /// `scene` as its fields are made from: overlapping contours merged where asked.
-fn field_scene(scene: &Scene, settings: &Settings) -> Scene {
+fn field_scene<'a>(scene: &'a Scene, settings: &Settings) -> Cow<'a, Scene> {
     if settings.merge_overlaps {
-        scene.with_overlaps_merged()
+        Cow::Owned(scene.with_overlaps_merged())
     } else {
-        scene.clone()
+        Cow::Borrowed(scene)
     }
 }
 

@@ -8,6 +8,9 @@ pub const NAME: &str = "msdf";
 
 /// The most field texels per em a parameter may ask for.
 pub const MAX_EM_PX: u32 = 512;
+/// The defaults: the first choice of each row (a unit test holds them together).
+const DEFAULT_EM_PX: u32 = 32;
+const DEFAULT_RANGE: f64 = 4.0;
 
 pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
@@ -87,12 +90,33 @@ impl Settings {
         Settings {
             field: FieldSpec {
                 kind,
-                texels_per_em: f64::from(params.whole("em_px").unwrap_or(32)),
-                range: params.real("range").unwrap_or(4.0),
+                texels_per_em: f64::from(params.whole("em_px").unwrap_or(DEFAULT_EM_PX)),
+                range: params.real("range").unwrap_or(DEFAULT_RANGE),
                 correction: params.word("correction") != Some("off"),
             },
             merge_overlaps: params.word("overlaps") != Some("keep"),
             overlay: params.word("overlay").and_then(Overlay::named),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The fallbacks `from_params` names are the rows' own defaults, and the settings
+    /// with nothing given are msdfgen's: a multi-channel field, corrected, overlaps
+    /// merged.
+    #[test]
+    fn the_defaults_are_the_rows_first_choices() {
+        let row = |key: &str| PARAMS.iter().find(|r| r.key == key).expect(key);
+        assert_eq!(row("em_px").choices[0], DEFAULT_EM_PX.to_string());
+        assert_eq!(row("range").choices[0].parse::<f64>(), Ok(DEFAULT_RANGE));
+        let settings = Settings::from_params(&Params::parse(NAME, PARAMS, &[]).unwrap());
+        assert_eq!(settings.field.kind, FieldKind::Msdf);
+        assert_eq!(settings.field.texels_per_em, f64::from(DEFAULT_EM_PX));
+        assert_eq!(settings.field.range, DEFAULT_RANGE);
+        assert!(settings.field.correction && settings.merge_overlaps);
+        assert_eq!(settings.overlay, None);
     }
 }
