@@ -970,6 +970,68 @@ fn painted_texts(harness: &Harness<'static, Explorer>) -> Vec<(egui::Pos2, Strin
     out
 }
 
+/// The orange frames of the mark (`app::MARK_COLOR`) painted in the last frame, each
+/// with the pane it lies in and its inner edge (points); the mark is drawn outside
+/// that edge.
+fn painted_marks(harness: &Harness<'static, Explorer>) -> Vec<(Option<usize>, egui::Rect)> {
+    fn collect(shape: &egui::Shape, out: &mut Vec<egui::Rect>) {
+        match shape {
+            egui::Shape::Rect(r) if r.stroke.color == glyphscope::app::MARK_COLOR => {
+                assert_eq!(r.stroke_kind, egui::StrokeKind::Outside, "{r:?}");
+                out.push(r.rect);
+            }
+            egui::Shape::Vec(shapes) => shapes.iter().for_each(|s| collect(s, out)),
+            _ => {}
+        }
+    }
+    let mut rects = Vec::new();
+    for clipped in &harness.output().shapes {
+        collect(&clipped.shape, &mut rects);
+    }
+    let panes = harness.state().pane_rects();
+    rects
+        .into_iter()
+        .map(|r| (panes.iter().position(|p| p.contains(r.center())), r))
+        .collect()
+}
+
+/// Every visible pane has the mark around exactly ×1 pixel `pixel`'s N×N block (one
+/// screen pixel out, so none of the block is covered), and nothing else is marked.
+fn assert_marked(harness: &Harness<'static, Explorer>, pixel: (u32, u32), what: &str) {
+    let app = harness.state();
+    let window = app.magnified_window().expect("laid out");
+    let ppp = harness.ctx.pixels_per_point();
+    let step = window.factor as f32 / ppp;
+    let marks = painted_marks(harness);
+    assert_eq!(
+        marks.len(),
+        app.pane_rects().len(),
+        "{what}: one mark a pane, not {marks:?}"
+    );
+    for (pane, rect) in app.pane_rects().iter().enumerate() {
+        let block = egui::Rect::from_min_size(
+            rect.min
+                + egui::vec2(
+                    pixel.0 as f32 - window.x0 as f32,
+                    pixel.1 as f32 - window.y0 as f32,
+                ) * step,
+            egui::vec2(step, step),
+        );
+        let inner = block.expand(1.0 / ppp);
+        let found: Vec<egui::Rect> = marks
+            .iter()
+            .filter(|(p, _)| *p == Some(pane))
+            .map(|(_, r)| *r)
+            .collect();
+        assert!(
+            found.len() == 1
+                && (found[0].min - inner.min).length() < 1e-3
+                && (found[0].max - inner.max).length() < 1e-3,
+            "{what}: pane {pane} should mark pixel {pixel:?} (block {block:?}), marks {found:?}"
+        );
+    }
+}
+
 /// How far a pane's pixel may be from `render`'s for the same view: one step of the
 /// 8-bit PNG `render` writes. The two draw the same pixels through cameras whose
 /// translations differ by whole pixels, so only f32 rounding separates them; a wrong
@@ -1159,6 +1221,50 @@ fn a_first_start_opens_magnified_on_an_artifact() {
     let shown = app.pane_capture(0).expect("read back at rest");
     let inked = shown.data.iter().filter(|&&c| c > 0.0 && c < 1.0).count();
     assert!(inked > 20, "{inked} edge pixels in the magnified window");
+    // The pixel the status bar names is framed in both panes.
+    assert_marked(&harness, pixel, "first start");
+}
+
+/// The pixel a link's focus names is framed in every pane, exactly around its block; the
+/// frame stays while only an overlay changes and goes once the camera moves; W then
+/// frames the worst pixel it goes to.
+#[test]
+fn the_pixel_a_link_or_the_worst_pixel_opens_on_is_marked_until_the_view_moves() {
+    let mut harness = harness(Settings::default());
+    harness.state_mut().open_link(
+        "#size=24&origin=10,60&rotate=0&layout=2&a=sdf-cells&b=reference&magnify=16&focus=30.5,12.5",
+    );
+    settle(&mut harness);
+    assert_eq!(harness.state().status_text(), "");
+    assert_eq!(
+        harness
+            .state()
+            .magnified_window()
+            .map(|w| (w.factor, w.focus)),
+        Some((16, (30, 12)))
+    );
+    assert_eq!(harness.state().marked_pixel(), Some((30, 12)));
+    assert_marked(&harness, (30, 12), "the link's focus");
+    // An overlay changes what a pane shows, not which pixel it is.
+    harness.key_press(egui::Key::E);
+    settle(&mut harness);
+    assert_eq!(
+        harness.state().settings.panes[0].overlay,
+        PaneOverlay::Error
+    );
+    assert_marked(&harness, (30, 12), "with the error overlay");
+    harness.key_press(egui::Key::ArrowLeft);
+    settle(&mut harness);
+    assert_eq!(painted_marks(&harness), vec![], "panned: the mark is gone");
+    assert_eq!(harness.state().marked_pixel(), None);
+    harness.key_press(egui::Key::W);
+    settle(&mut harness);
+    let (_, _, pixel, _) = artifact_status(&harness);
+    assert_eq!(harness.state().magnified_window().unwrap().focus, pixel);
+    assert_marked(&harness, pixel, "the worst pixel");
+    harness.key_press(egui::Key::Plus);
+    settle(&mut harness);
+    assert_eq!(painted_marks(&harness), vec![], "zoomed: the mark is gone");
 }
 
 /// Shift+B blinks pane A on its own, a few times a second (the harness's clock moves

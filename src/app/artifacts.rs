@@ -143,6 +143,7 @@ impl Explorer {
                 ));
             } else {
                 self.magnify_on((x, y));
+                self.mark_pixel((x, y));
                 self.set_status(format!(
                     "worst pixel ({x}, {y}) error {error:.3}; none is off by more than \
                      {ARTIFACT_THRESHOLD}"
@@ -162,6 +163,7 @@ impl Explorer {
             artifacts.current + 1
         );
         self.magnify_on((x, y));
+        self.mark_pixel((x, y));
         self.set_status(message);
     }
 

@@ -398,6 +398,7 @@ impl Explorer {
                 notes.push(e);
             }
         }
+        self.paint_mark(&painter, rect, ppp);
         let mut lines = vec![self.pane_title(index)];
         lines.extend(self.pane_numbers(index));
         let text = lines.join("\n");

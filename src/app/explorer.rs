@@ -20,7 +20,8 @@ use super::pareto::{ParetoPoint, ParetoSweep};
 use super::scene_state::SceneState;
 use super::settings::{FontBytes, FontChoice, PANES, Settings, sanitize};
 use super::state::{
-    ArtifactSearch, Artifacts, AutoFit, Blink, CanvasState, CasesMenu, Playback, WorstPixelRequest,
+    ArtifactSearch, Artifacts, AutoFit, Blink, CanvasState, CasesMenu, Mark, Playback,
+    WorstPixelRequest,
 };
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
@@ -48,6 +49,8 @@ pub struct Explorer {
     pub(super) cases: CasesMenu,
     /// Go to the worst pixel once a pane is ready (see `go_to_worst_pixel_when_ready`).
     pub(super) worst_pixel_pending: Option<WorstPixelRequest>,
+    /// The pixel the view opened on, framed in every pane until the view moves (`mark`).
+    pub(super) mark: Option<Mark>,
     /// Each pane's heat-scale legend's own uniform and bind group.
     pub(super) legends: Vec<SharedSurface>,
     /// Messages from screenshots and file drops; shared with the screenshot callback.
@@ -92,20 +95,33 @@ impl Explorer {
         match link::open(link) {
             Ok(view) => {
                 show(view.settings);
-                self.remember_the_scene_under_the_case();
+                // Only under a case: remembered with none, leaving it would frame the
+                // text anew over the link's camera (and set the link's outlines back).
+                if self.settings.scene.case.is_some() {
+                    self.remember_the_scene_under_the_case();
+                } else {
+                    self.cases.loaded_over = None;
+                    self.cases.outlines_before = None;
+                }
                 self.playback.frame = view.frame;
                 self.set_status(String::new());
                 if let (Some(case), false) = (self.settings.scene.case.clone(), view.camera_given) {
                     self.load_case(&case);
+                }
+                sanitize(&mut self.settings);
+                // The pixel a magnified link is centred on is the one it points at.
+                let [x, y] = self.settings.camera.focus;
+                if view.focus_given && self.settings.camera.magnify > 1 && x >= 0.0 && y >= 0.0 {
+                    self.mark_pixel((x.floor() as u32, y.floor() as u32));
                 }
             }
             Err(e) => {
                 show(Settings::default());
                 self.playback.frame = 0;
                 self.set_status(e);
+                sanitize(&mut self.settings);
             }
         }
-        sanitize(&mut self.settings);
     }
 
     /// The link (a URL fragment, with its `#`) that opens the view shown, or why this
@@ -158,6 +174,7 @@ impl Explorer {
             blink: Blink::default(),
             cases: CasesMenu::default(),
             worst_pixel_pending: None,
+            mark: None,
             legends: (0..PANES).map(|_| PaneSurface::new()).collect(),
             status: Arc::new(Mutex::new(String::new())),
             frame_intervals: VecDeque::new(),
@@ -329,6 +346,7 @@ impl Explorer {
         self.shortcuts(&ctx);
         self.tick_blink(&ctx);
         self.leave_case_on_scene_change();
+        self.forget_the_mark_once_the_view_moves();
         self.scene.sync(&self.settings.scene);
         egui::Panel::left("controls")
             .resizable(true)

@@ -35,14 +35,16 @@ use crate::methods::params::assignments;
 use crate::methods::registry;
 use crate::motion::MotionPath;
 
-/// A view opened from a link: its settings, the frame of its motion path shown, and
+/// A view opened from a link: its settings, the frame of its motion path shown,
 /// whether the link placed the camera (a link that names a case and no camera opens the
-/// case as the Cases menu does: framed, magnified on its worst pixel).
+/// case as the Cases menu does: framed, magnified on its worst pixel), and whether it
+/// named the magnifier's focus (the pixel the explorer then marks).
 #[derive(Clone, Debug, PartialEq)]
 pub struct LinkedView {
     pub settings: Settings,
     pub frame: i64,
     pub camera_given: bool,
+    pub focus_given: bool,
 }
 
 /// The farthest frame a link may show, either way: steps from it cannot overflow.
@@ -144,6 +146,7 @@ pub fn open(fragment: &str) -> Result<LinkedView, String> {
         settings: Settings::default(),
         frame: 0,
         camera_given: false,
+        focus_given: false,
     };
     let text = fragment.trim().trim_start_matches('#');
     if text.is_empty() {
@@ -156,6 +159,7 @@ pub fn open(fragment: &str) -> Result<LinkedView, String> {
             .ok_or_else(|| format!("link: '{part}' is not KEY=VALUE"))?;
         let value = decode(raw).map_err(|e| format!("link: {key}: {e}"))?;
         view.camera_given |= CAMERA_KEYS.contains(&key);
+        view.focus_given |= key == "focus";
         apply(&mut view, key, &value, &mut layout_given)
             .map_err(|e| format!("link: {key}={}: {e}", value.escape_debug()))?;
     }

@@ -17,6 +17,8 @@
 //! - `analysis`: the reference and the error figures, on a background thread.
 //! - `cases_menu`: the Cases menu, loading each named hard case and bench scene.
 //! - `artifacts`: a pane's pixels off from the reference, worst first, to step through.
+//! - `mark`: the frame around the pixel the view opened on (a worst pixel, a link's
+//!   focus), in every pane until the view moves.
 //! - `blink`: pane A flipped in place to pane B's method or the reference.
 //! - `playback`: text in motion: the camera along a path frame by frame, with strip
 //!   charts of each pane's error and temporal error.
@@ -41,6 +43,7 @@ mod font_dialog;
 mod gpu_view;
 pub mod headless;
 mod link;
+mod mark;
 mod outline_painter;
 mod panes;
 mod pareto;
@@ -56,6 +59,7 @@ pub mod web;
 use std::sync::Arc;
 
 pub use self::explorer::Explorer;
+pub use self::mark::MARK_COLOR;
 use crate::gpu::GpuContext;
 
 /// Opens the explorer window, on the view a link describes when `view` is given (a

@@ -94,6 +94,19 @@ pub struct WorstPixelRequest {
     pub(super) scene: SceneSettings,
 }
 
+/// The pixel the view opened on (a worst pixel, a link's focus), marked in every pane
+/// while the view it was found for is shown: the camera and scene settings and the
+/// motion frame of that moment. Any change to them (a pan, a zoom, a new focus, scene
+/// or case) leaves it; a pane's method or overlay does not, the pixel being the same.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mark {
+    /// The pixel, in ×1 pane pixels.
+    pub(super) pixel: (u32, u32),
+    pub(super) camera: CameraSettings,
+    pub(super) scene: SceneSettings,
+    pub(super) frame: i64,
+}
+
 /// A search for a pane's artifacts under way: its method drawn into a frame of its own,
 /// read back without waiting (`PendingReadback`), then compared with the reference on
 /// a later frame; and what to do with the answer.
