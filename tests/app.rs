@@ -314,6 +314,15 @@ fn a_font_opens_from_disk() {
     assert_eq!(app.settings.scene.font.label(), "lmroman10-regular.otf");
     assert_eq!(app.pane_problem(0), None);
     assert!(app.pane_error(0).unwrap().mae_255 < 2.0);
+    // The view travels in a link, the font as its path.
+    let link = app.link().expect("a font from disk travels as its path");
+    let encoded: String = path
+        .to_str()
+        .unwrap()
+        .replace('%', "%25")
+        .replace('/', "%2F")
+        .replace(' ', "%20");
+    assert!(link.starts_with(&format!("#font={encoded}&")), "{link}");
     let changed = before
         .pixels()
         .zip(after.pixels())
@@ -327,7 +336,8 @@ fn a_font_opens_from_disk() {
 
 /// The web page's way in: a font as bytes with a name, no path (its file picker, a drop).
 /// The same font file opened as bytes draws exactly what it draws opened from disk; a
-/// view with it cannot travel in a link, and says why; a file that is not a font is
+/// view with it cannot travel in a link (it has no path, and a link carries no bytes),
+/// and says why; a file that is not a font is
 /// refused by name and leaves the font as it was.
 #[test]
 fn a_font_opens_from_bytes_as_from_disk() {
@@ -1436,6 +1446,51 @@ fn motion_steps_plays_and_charts_one_point_per_frame() {
     // Each pane's chart is titled with it (the pixel chart's legend names it too).
     assert!(harness.query_all_by_label("A atlas").count() >= 2);
     assert!(harness.query_all_by_label("B winding").count() >= 2);
+}
+
+/// A link whose font is a file's path opens that font on the desktop, as `--view` does,
+/// and its `glyph=#ID` the glyph of that id: the scene is that glyph of the file, and
+/// the pane draws what the method draws of it apart from the app, pixel for pixel.
+#[test]
+fn a_link_opens_a_font_by_its_path_and_a_glyph_by_id() {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("fonts/DejaVuSans.ttf");
+    let encoded = path.to_str().unwrap().replace('/', "%2F");
+    let link = format!(
+        "#font={encoded}&glyph=%2336&size=48&rotate=0&origin=10,60&magnify=16&focus=20,40\
+         &a=winding&b=reference"
+    );
+    let mut harness = harness(Settings::default());
+    harness.state_mut().open_link(&link);
+    settle(&mut harness);
+    let app = harness.state();
+    assert_eq!(app.status_text(), "", "{link}");
+    assert_eq!(
+        app.settings.scene.font,
+        glyphscope::app::settings::FontChoice::File(path.clone())
+    );
+    assert_eq!(app.settings.camera.size_px_per_em, 48.0);
+    let font = glyphscope::font::Font::from_path(&path).unwrap();
+    let expected = glyphscope::scene::Scene::from_glyph_id(&font, 36).unwrap();
+    let scene = app.scene().expect("the scene builds");
+    let ids: Vec<_> = scene.glyphs.iter().map(|g| g.id).collect();
+    assert_eq!(ids, [expected.glyphs[0].id], "glyph 36 alone");
+    assert_eq!(u32::from(expected.glyphs[0].id), 36);
+    assert_eq!(app.pane_problem(0), None);
+    let shown = app.pane_capture(0).expect("read back at rest");
+    let camera = app.camera().unwrap();
+    let mut method = registry::create("winding", &[]).unwrap();
+    method.prepare(gpu(), &expected).unwrap();
+    let drawn = methods::frame::render_image(gpu(), method.as_mut(), &camera).unwrap();
+    assert!(drawn.sum() > 20.0, "the glyph is in the window");
+    assert_eq!(*shown, drawn, "pane A of {link}");
+    // Its link back carries the path too.
+    assert!(
+        app.link()
+            .unwrap()
+            .starts_with(&format!("#font={encoded}&")),
+        "{:?}",
+        app.link()
+    );
 }
 
 /// A link is a view: the link copied from an explorer that loaded a case, magnified on

@@ -12,7 +12,7 @@
 //! |---|---|
 //! | `case` | a named view: a hard case or a bench scene (`glyphscope render --case`) |
 //! | `text` | the text (newlines as `%0A`) |
-//! | `font` | a shipped font by its number, 0 the first (a font from disk cannot travel) |
+//! | `font` | a shipped font by its number, 0 the first; anything else is a font file's path, which the desktop explorer opens (the web page cannot: it says so) |
 //! | `var` | variable-font axes, `TAG:VALUE,TAG:VALUE` |
 //! | `glyph` | one glyph (a character, or `#` and an id) instead of the text |
 //! | `size` | px/em |
@@ -56,7 +56,7 @@ const CAMERA_KEYS: &[&str] = &[
 ];
 
 /// The fragment (without its `#`) that opens `settings` at motion frame `frame`, or why
-/// the scene cannot travel in a link (a font opened from disk).
+/// the scene cannot travel in a link (a font given as bytes, with no path).
 pub fn fragment(settings: &Settings, frame: i64) -> Result<String, String> {
     let mut parts: Vec<(String, String)> = Vec::new();
     let mut put = |key: &str, value: String| parts.push((key.into(), value));
@@ -66,15 +66,11 @@ pub fn fragment(settings: &Settings, frame: i64) -> Result<String, String> {
         None => {
             match &scene.font {
                 FontChoice::Shipped(index) => put("font", index.to_string()),
-                FontChoice::File(path) => {
-                    return Err(format!(
-                        "the font {} was opened from disk: a link carries only the shipped fonts",
-                        path.display()
-                    ));
-                }
+                FontChoice::File(path) => put("font", font_path(path)?),
                 FontChoice::Opened { name, .. } => {
                     return Err(format!(
-                        "the font {name} was opened from this computer: a link carries only the shipped fonts"
+                        "the font {name} was opened from this computer: a link carries a \
+                         shipped font or a font file's path, never the font's bytes"
                     ));
                 }
             }
@@ -160,16 +156,18 @@ pub fn open(fragment: &str) -> Result<LinkedView, String> {
         let value = decode(raw).map_err(|e| format!("link: {key}: {e}"))?;
         view.camera_given |= CAMERA_KEYS.contains(&key);
         view.focus_given |= key == "focus";
-        apply(&mut view, key, &value, &mut layout_given)
+        apply(&mut view, key, &value, text, &mut layout_given)
             .map_err(|e| format!("link: {key}={}: {e}", value.escape_debug()))?;
     }
     Ok(view)
 }
 
+/// Sets what `key`=`value` of the fragment `link` (without its `#`) says.
 fn apply(
     view: &mut LinkedView,
     key: &str,
     value: &str,
+    link: &str,
     layout_given: &mut bool,
 ) -> Result<(), String> {
     let s = &mut view.settings;
@@ -182,16 +180,7 @@ fn apply(
             s.scene.case = Some(value.into());
         }
         "text" => s.scene.text = value.into(),
-        "font" => {
-            let index: usize = value.parse().map_err(|_| "not a font number".to_string())?;
-            if index >= SHIPPED_FONTS.len() {
-                return Err(format!(
-                    "there are {} shipped fonts, from 0",
-                    SHIPPED_FONTS.len()
-                ));
-            }
-            s.scene.font = FontChoice::Shipped(index);
-        }
+        "font" => s.scene.font = font(value, link)?,
         "var" => {
             s.scene.variations = value
                 .split(',')
@@ -266,6 +255,56 @@ fn apply(
         _ => return pane_key(s, key, value, *layout_given),
     }
     Ok(())
+}
+
+/// A `font` value: a shipped font's number, else a font file's path (on the desktop;
+/// the web page has no files to open). `link` is the whole fragment, for the web page's
+/// message.
+fn font(value: &str, link: &str) -> Result<FontChoice, String> {
+    if let Ok(index) = value.parse::<usize>() {
+        if index >= SHIPPED_FONTS.len() {
+            return Err(format!(
+                "there are {} shipped fonts, from 0",
+                SHIPPED_FONTS.len()
+            ));
+        }
+        return Ok(FontChoice::Shipped(index));
+    }
+    if value.is_empty() {
+        return Err("neither a shipped font's number nor a font file's path".into());
+    }
+    if cfg!(target_arch = "wasm32") {
+        return Err(local_path_on_the_web(value, link));
+    }
+    Ok(FontChoice::File(value.into()))
+}
+
+/// What the web page says of a link whose font is a path on some computer.
+fn local_path_on_the_web(path: &str, link: &str) -> String {
+    format!(
+        "the web page cannot open a font from a local path ('{path}'); open this link in \
+         the desktop explorer: glyphscope --view '#{link}'"
+    )
+}
+
+/// A font file's path as a `font` value: as it is, but for a path of digits alone, which
+/// would read as a shipped font's number and is written `./N`; or why it cannot be
+/// written (not UTF-8, empty).
+fn font_path(path: &std::path::Path) -> Result<String, String> {
+    let text = path.to_str().ok_or_else(|| {
+        format!(
+            "the font's path {} is not UTF-8: a link cannot carry it",
+            path.display()
+        )
+    })?;
+    if text.is_empty() {
+        return Err("the font has an empty path: a link cannot carry it".into());
+    }
+    Ok(if text.parse::<usize>().is_ok() {
+        format!("./{text}")
+    } else {
+        text.to_string()
+    })
 }
 
 /// `a` … `d`, `a.overlay`, `a.outline`, `a.merged`.
@@ -546,10 +585,96 @@ mod tests {
         }
     }
 
+    /// A font opened from disk travels as its path, characters the grammar uses and all,
+    /// with a glyph by id; a path of digits alone is written so that it is not read as a
+    /// shipped font's number.
     #[test]
-    fn a_font_from_disk_cannot_travel() {
+    fn a_font_from_disk_travels_as_its_path() {
         let mut s = Settings::default();
-        s.scene.font = FontChoice::File("/tmp/some.ttf".into());
-        assert!(fragment(&s, 0).unwrap_err().contains("from disk"));
+        s.scene.font = FontChoice::File("/tmp/my fonts/A&B=50% #1, Ä.ttf".into());
+        s.scene.glyph_mode = true;
+        s.scene.glyph = "#36".into();
+        let link = fragment(&s, 0).unwrap();
+        assert!(
+            link.starts_with("font=%2Ftmp%2Fmy%20fonts%2FA%26B%3D50%25%20%231,%20%C3%84.ttf&"),
+            "{link}"
+        );
+        let back = open(&link).unwrap();
+        assert_eq!(back.settings.scene, s.scene);
+        assert_eq!(back.settings.camera, s.camera);
+
+        s.scene.font = FontChoice::File("7".into());
+        let link = fragment(&s, 0).unwrap();
+        assert!(link.starts_with("font=.%2F7&"), "{link}");
+        assert_eq!(
+            open(&link).unwrap().settings.scene.font,
+            FontChoice::File("./7".into())
+        );
+        s.scene.font = FontChoice::File("".into());
+        assert!(fragment(&s, 0).unwrap_err().contains("empty path"));
+    }
+
+    /// A number is a shipped font, whichever way it is written; one past the last is an
+    /// error, not a path.
+    #[test]
+    fn a_number_stays_a_shipped_font() {
+        for (link, index) in [("#font=0", 0), ("#font=2", 2), ("#font=%32", 2)] {
+            assert_eq!(
+                open(link).unwrap().settings.scene.font,
+                FontChoice::Shipped(index),
+                "{link}"
+            );
+        }
+        let e = open(&format!("#font={}", SHIPPED_FONTS.len())).unwrap_err();
+        assert!(e.contains("shipped fonts"), "{e}");
+        assert!(open("#font=").unwrap_err().contains("font="));
+    }
+
+    /// A path to no file is a well-formed link: it opens, and the scene then says what
+    /// the explorer shows for a font file it cannot read, naming the file.
+    #[test]
+    fn a_missing_font_file_opens_and_the_scene_names_it() {
+        let view = open("#font=%2Fno%2Fsuch%2Fdir%2FMissing.ttf&glyph=%2336").unwrap();
+        let path = "/no/such/dir/Missing.ttf";
+        assert_eq!(view.settings.scene.font, FontChoice::File(path.into()));
+        let mut scene = super::super::scene_state::SceneState::default();
+        scene.sync(&view.settings.scene);
+        assert!(scene.scene().is_none());
+        let problem = scene.problem().expect("the font cannot be read");
+        assert!(
+            problem.contains(&format!("cannot read font file '{path}'")),
+            "{problem}"
+        );
+    }
+
+    /// The web page cannot open a path: it says so, and gives the command that opens the
+    /// link on the desktop. (Written here as the page writes it; the page reaches it
+    /// through `font` under wasm32.)
+    #[test]
+    fn the_web_page_says_a_local_path_opens_on_the_desktop() {
+        let link = "font=%2Ftmp%2FA.ttf&glyph=%2336";
+        let message = local_path_on_the_web("/tmp/A.ttf", link);
+        assert_eq!(
+            message,
+            "the web page cannot open a font from a local path ('/tmp/A.ttf'); open this \
+             link in the desktop explorer: glyphscope --view '#font=%2Ftmp%2FA.ttf&glyph=%2336'"
+        );
+        assert!(!message.contains('\n'));
+    }
+
+    /// A font given as bytes (the web page's file picker) has no path to write: the
+    /// link refuses it and says why.
+    #[test]
+    fn a_font_given_as_bytes_cannot_travel() {
+        let mut s = Settings::default();
+        s.scene.font = FontChoice::Opened {
+            name: "Mine.ttf".into(),
+            bytes: crate::app::settings::FontBytes(std::sync::Arc::from(vec![0u8; 4])),
+        };
+        let why = fragment(&s, 0).unwrap_err();
+        assert!(
+            why.contains("Mine.ttf") && why.contains("opened from this computer"),
+            "{why}"
+        );
     }
 }
