@@ -1312,7 +1312,8 @@ fn shift_b_blinks_pane_a_on_its_own_and_stops() {
 }
 
 /// A case whose method has no pixel off by more than 0.25 (winding on `strong-skew`)
-/// still opens on its worst pixel, and the status bar says none is over the threshold.
+/// still opens on its worst pixel, framed in both panes, and the status bar says none is
+/// over the threshold.
 #[test]
 fn a_case_with_no_pixel_over_the_threshold_opens_on_its_worst() {
     let mut settings = Settings::default();
@@ -1337,6 +1338,8 @@ fn a_case_with_no_pixel_over_the_threshold_opens_on_its_worst() {
         .unwrap_or_else(|| panic!("the status bar says {text:?}"));
     let window = harness.state().magnified_window().expect("laid out");
     assert_eq!((window.factor, window.focus), (32, pixel));
+    // The case's worst pixel is framed in both panes.
+    assert_marked(&harness, pixel, "strong-skew's worst");
 }
 
 /// Text in motion: each step moves the shared camera by the path's step in every pane
