@@ -69,6 +69,8 @@ pub struct Font {
     units_per_em: f64,
     glyph_count: u16,
     outline_table: OutlineTable,
+    /// Which face of a collection (`.ttc`/`.otc`); 0 for a single font.
+    face_index: u32,
     /// (tag, value) pairs applied to every face this font hands out.
     variations: Vec<(ttf_parser::Tag, f32)>,
 }
@@ -107,20 +109,34 @@ impl Font {
 
     /// Parses font bytes (the first face of a collection).
     pub fn from_bytes(data: Vec<u8>, name: &str) -> Result<Self, Error> {
-        let face = ttf_parser::Face::parse(&data, 0)
+        Self::from_bytes_face(data, name, 0)
+    }
+
+    /// How many faces font bytes hold: a collection's count, 1 for a single font, 0 for
+    /// bytes that are not a font at all.
+    pub fn face_count(data: &[u8]) -> u32 {
+        match ttf_parser::fonts_in_collection(data) {
+            Some(count) => count,
+            None => u32::from(ttf_parser::Face::parse(data, 0).is_ok()),
+        }
+    }
+
+    /// Parses face `index` of font bytes (0 for a single font).
+    pub fn from_bytes_face(data: Vec<u8>, name: &str, index: u32) -> Result<Self, Error> {
+        let face = ttf_parser::Face::parse(&data, index)
             .map_err(|e| Error::Font(format!("'{name}' is not a usable font: {e}")))?;
         let units_per_em = f64::from(face.units_per_em());
         let glyph_count = face.number_of_glyphs();
         if glyph_count == 0 {
             return Err(Error::Font(format!("'{name}' has no glyphs")));
         }
-        let outline_table = OutlineTable::of(&face).map_err(|why| {
+        let outline_table = OutlineTable::of(&face, index).map_err(|why| {
             Error::Font(format!(
                 "'{name}' has no outlines glyphscope can draw: {why}"
             ))
         })?;
         // rustybuzz must accept it too, or shaping would fail later with a vaguer message.
-        if rustybuzz::Face::from_slice(&data, 0).is_none() {
+        if rustybuzz::Face::from_slice(&data, index).is_none() {
             return Err(Error::Font(format!(
                 "'{name}' cannot be shaped (rustybuzz rejects it)"
             )));
@@ -131,6 +147,7 @@ impl Font {
             units_per_em,
             glyph_count,
             outline_table,
+            face_index: index,
             variations: Vec::new(),
         })
     }
@@ -142,6 +159,18 @@ impl Font {
 
     pub fn name(&self) -> &str {
         &self.name
+    }
+
+    /// Which face of a collection this is (0 for a single font).
+    pub fn face_index(&self) -> u32 {
+        self.face_index
+    }
+
+    /// The glyph's name in the font (`post` or CFF), if it has one.
+    pub fn glyph_name(&self, glyph: GlyphId) -> Option<String> {
+        self.face()
+            .glyph_name(ttf_parser::GlyphId(glyph))
+            .map(str::to_owned)
     }
 
     pub fn units_per_em(&self) -> f64 {
@@ -159,7 +188,7 @@ impl Font {
 
     /// The sfntVersion of the face in use, which chose the outline table.
     pub fn sfnt_version(&self) -> Option<[u8; 4]> {
-        sfnt_version(&self.data)
+        sfnt_version(&self.data, self.face_index)
     }
 
     /// The variation axes, empty for a static font.
@@ -222,7 +251,8 @@ impl Font {
 
     /// A ttf-parser face at this font's variation instance.
     pub fn face(&self) -> ttf_parser::Face<'_> {
-        let mut face = ttf_parser::Face::parse(&self.data, 0).expect("parsed when loaded");
+        let mut face =
+            ttf_parser::Face::parse(&self.data, self.face_index).expect("parsed when loaded");
         for (tag, value) in &self.variations {
             face.set_variation(*tag, *value);
         }
@@ -231,7 +261,8 @@ impl Font {
 
     /// A rustybuzz face at this font's variation instance.
     pub fn shaping_face(&self) -> rustybuzz::Face<'_> {
-        let mut face = rustybuzz::Face::from_slice(&self.data, 0).expect("checked when loaded");
+        let mut face =
+            rustybuzz::Face::from_slice(&self.data, self.face_index).expect("checked when loaded");
         let variations: Vec<_> = self
             .variations
             .iter()
@@ -291,6 +322,27 @@ impl Font {
             }
         }
         builder.finish()
+    }
+
+    /// [`Font::outline`], or why it cannot be trusted: the font gives the glyph a
+    /// bounding box but no outline can be read from it (a malformed glyph, which
+    /// `outline` reads as blank), or a coordinate is not finite.
+    pub fn checked_outline(&self, glyph: GlyphId) -> Result<Outline, String> {
+        let outline = self.outline(glyph);
+        let id = ttf_parser::GlyphId(glyph);
+        if outline.is_empty() && self.face().glyph_bounding_box(id).is_some() {
+            return Err(format!(
+                "glyph {glyph} has a bounding box but its outline cannot be read"
+            ));
+        }
+        let finite = outline
+            .segments()
+            .flat_map(crate::geometry::segment_points)
+            .all(|p| p.is_finite());
+        if !finite {
+            return Err(format!("glyph {glyph} has a coordinate that is not finite"));
+        }
+        Ok(outline)
     }
 
     /// The glyph's advance width in font units, by the same rules as its outline.
@@ -358,9 +410,9 @@ impl OutlineTable {
 
     /// FreeType's choice: an `OTTO` font is read by its CFF driver (CFF2 first), any
     /// other by its TrueType driver, whatever other outline tables the font carries.
-    fn of(face: &ttf_parser::Face) -> Result<Self, String> {
+    fn of(face: &ttf_parser::Face, index: u32) -> Result<Self, String> {
         let tables = face.tables();
-        let version = sfnt_version(face.raw_face().data);
+        let version = sfnt_version(face.raw_face().data, index);
         if version == Some(*b"OTTO") {
             if tables.cff2.is_some() {
                 Ok(OutlineTable::Cff2)
@@ -381,11 +433,13 @@ impl OutlineTable {
 }
 
 /// The sfntVersion of the font's first face (a collection's header points to it).
-fn sfnt_version(data: &[u8]) -> Option<[u8; 4]> {
+/// The sfntVersion of face `index` (a collection's `index`-th table directory).
+fn sfnt_version(data: &[u8], index: u32) -> Option<[u8; 4]> {
     let at = |offset: usize| -> Option<[u8; 4]> { data.get(offset..offset + 4)?.try_into().ok() };
     let version = at(0)?;
     if &version == b"ttcf" {
-        at(usize::try_from(u32::from_be_bytes(at(12)?)).ok()?)
+        let entry = 12 + 4 * usize::try_from(index).ok()?;
+        at(usize::try_from(u32::from_be_bytes(at(entry)?)).ok()?)
     } else {
         Some(version)
     }
@@ -664,9 +718,12 @@ mod tests {
         // 'ttcf', version 1.0, one font, its offset table at byte 16.
         let mut data = b"ttcf\0\x01\0\0\0\0\0\x01\0\0\0\x10".to_vec();
         data.extend_from_slice(b"OTTO");
-        assert_eq!(sfnt_version(&data), Some(*b"OTTO"));
-        assert_eq!(sfnt_version(b"\0\x01\0\0rest"), Some([0, 1, 0, 0]));
-        assert_eq!(sfnt_version(b"ttcf\0\x01\0\0\0\0\0\x01\0\0\xff\xff"), None);
+        assert_eq!(sfnt_version(&data, 0), Some(*b"OTTO"));
+        assert_eq!(sfnt_version(b"\0\x01\0\0rest", 0), Some([0, 1, 0, 0]));
+        assert_eq!(
+            sfnt_version(b"ttcf\0\x01\0\0\0\0\0\x01\0\0\xff\xff", 0),
+            None
+        );
         assert_eq!(describe_sfnt_version(Some(*b"OTTO")), "'OTTO'");
         assert_eq!(describe_sfnt_version(Some([0, 1, 0, 0])), "0x00010000");
     }

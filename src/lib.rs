@@ -13,6 +13,7 @@ pub mod font;
 pub mod geometry;
 pub mod gpu;
 pub mod info;
+pub mod link_text;
 pub mod magnify;
 pub mod measure;
 pub mod methods;
@@ -25,6 +26,7 @@ pub mod render;
 pub mod scene;
 pub mod shaping;
 pub mod stability;
+pub mod survey;
 pub mod view_args;
 
 /// Every failure the core reports. Each message is one line a user can act on.

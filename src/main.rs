@@ -27,6 +27,8 @@ fn main() -> ExitCode {
         Some(Command::Screenshots(args)) => run_screenshots(args).map(|()| true),
         Some(Command::Motion(args)) => glyphscope::cli::run_motion(args).map(|()| true),
         Some(Command::Info(args)) => glyphscope::cli::run_info(args).map(|()| true),
+        // Exit 1 when a method breaks its claim on some glyph.
+        Some(Command::Survey(args)) => glyphscope::cli::run_survey(args),
         None => run_app(cli.view.as_deref()).map(|()| true),
     };
     match result {

@@ -141,6 +141,12 @@ impl Scene {
                 instances.push(Instance { glyph, position });
             }
         }
+        Self::from_font_glyphs(font, glyphs, instances)
+    }
+
+    /// Glyphs of `font` already read (each with ink), placed by `instances`: a scene
+    /// built from outlines checked once and shared by many frames (the survey's).
+    pub fn from_font_glyphs(font: &Font, glyphs: Vec<Glyph>, instances: Vec<Instance>) -> Scene {
         Scene {
             units_per_em: font.units_per_em(),
             glyphs,

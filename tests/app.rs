@@ -1550,3 +1550,102 @@ fn a_copied_link_opens_the_same_view_and_a_malformed_one_says_why() {
         .unwrap_or_default();
     assert!(said.contains("is not positive"), "{said}");
 }
+
+/// A survey's link opens its glyph as the survey measured it: `glyphscope survey` run
+/// on a few glyphs of a font given by path, the first link of winding's worst-glyph
+/// table opened as `--view` opens it, shows that glyph alone, the pane's error against
+/// the reference is the row's (its largest and where), and that pixel is marked.
+#[test]
+fn a_survey_link_opens_the_glyph_it_names_on_its_worst_pixel() {
+    let out = common::binary::scratch("survey-link");
+    let font = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("fonts/lmroman10-regular.otf");
+    let copy = common::binary::scratch("survey-font.otf");
+    std::fs::copy(&font, &copy).unwrap();
+    let output = common::binary::run(&[
+        "survey",
+        "--fonts",
+        copy.to_str().unwrap(),
+        "--sizes",
+        "24",
+        "--transforms",
+        "rotate:30",
+        "--methods",
+        "winding:aa=rays",
+        "--glyphs",
+        "40-60",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        output.status.code().is_some_and(|c| c <= 1),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let md = std::fs::read_to_string(out.join("survey.md")).unwrap();
+    let first = md
+        .lines()
+        .find(|l| l.starts_with("| 1 | "))
+        .expect("a worst glyph");
+    let cells: Vec<&str> = first.split(" | ").collect();
+    let id: u16 = cells[2]
+        .trim_start_matches('#')
+        .split(' ')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    let max: f64 = cells[5].parse().unwrap();
+    let link = first
+        .split("--view '")
+        .nth(1)
+        .unwrap()
+        .split('\'')
+        .next()
+        .unwrap();
+    // The row's worst pixel, from the CSV (survey.md rounds).
+    let csv = std::fs::read_to_string(out.join("survey.csv")).unwrap();
+    let row: Vec<&str> = csv
+        .lines()
+        .find(|l| l.contains(&format!(",{id},")) && l.contains(",rotate:30,"))
+        .unwrap()
+        .split(',')
+        .collect();
+    let (row_max, worst): (f64, (u32, u32)) = (
+        row[9].parse().unwrap(),
+        (row[15].parse().unwrap(), row[16].parse().unwrap()),
+    );
+    assert!((row_max - max).abs() < 6e-4, "{row_max} vs {max}");
+
+    let mut harness = harness(Settings::default());
+    harness.state_mut().open_link(link);
+    settle(&mut harness);
+    let app = harness.state();
+    assert_eq!(app.status_text(), "", "{link}");
+    let scene = app.scene().expect("the scene builds");
+    let ids: Vec<_> = scene.glyphs.iter().map(|g| g.id).collect();
+    assert_eq!(ids, [id], "{link}");
+    // The glyph sits at another place in the survey's frame than in the pane, so f32
+    // positions may round differently: the same error to 1/255, at the same pixel.
+    let stats = app.pane_error(0).expect("pane A's error at rest");
+    assert!(
+        (stats.max - row_max).abs() < 4e-3,
+        "{} vs the row's {row_max}",
+        stats.max
+    );
+    let margin = 8;
+    let pixel = (worst.0 + margin, worst.1 + margin);
+    // The magnified pane draws a window of the view: its pixels from the window's corner.
+    let camera = app.camera().unwrap();
+    let corner = camera
+        .crop
+        .map_or((0, 0), |c| (c.offset.x as u32, c.offset.y as u32));
+    let at = (pixel.0 - corner.0, pixel.1 - corner.1);
+    assert_eq!(stats.worst_pixel, at, "{link}");
+    let (shown, reference) = (app.pane_capture(0).unwrap(), app.reference_image().unwrap());
+    let error = f64::from((shown.get(at.0, at.1) - reference.get(at.0, at.1)).abs());
+    assert!(
+        (error - row_max).abs() < 4e-3,
+        "{error} vs the row's {row_max}"
+    );
+    assert_eq!(app.marked_pixel(), Some(pixel), "{link}");
+}

@@ -31,6 +31,7 @@
 use super::panes::pane_letter;
 use super::settings::{CaseFrame, FontChoice, Layout, PANES, PaneOverlay, PaneSource, Settings};
 use crate::font::SHIPPED_FONTS;
+use crate::link_text::{decode, encode};
 use crate::methods::params::assignments;
 use crate::methods::registry;
 use crate::motion::MotionPath;
@@ -423,49 +424,6 @@ fn numbers(text: &str) -> Result<[f64; 2], String> {
         .split_once(',')
         .ok_or_else(|| format!("'{text}' is not X,Y"))?;
     Ok([number(a)?, number(b)?])
-}
-
-/// Bytes kept as they are in a fragment value: the unreserved ones and the separators
-/// the grammar itself uses inside values (`,` `:` `@` `+`).
-fn kept(b: u8) -> bool {
-    b.is_ascii_alphanumeric() || b"-._~,:@+".contains(&b)
-}
-
-fn encode(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for &b in text.as_bytes() {
-        if kept(b) {
-            out.push(char::from(b));
-        } else {
-            out.push_str(&format!("%{b:02X}"));
-        }
-    }
-    out
-}
-
-fn decode(text: &str) -> Result<String, String> {
-    let bytes = text.as_bytes();
-    let mut out = Vec::with_capacity(bytes.len());
-    let mut i = 0;
-    while i < bytes.len() {
-        if bytes[i] == b'%' {
-            let hex = bytes
-                .get(i + 1..i + 3)
-                .and_then(|h| std::str::from_utf8(h).ok())
-                .and_then(|h| u8::from_str_radix(h, 16).ok())
-                .ok_or_else(|| {
-                    // By characters: the bytes after a '%' may be a character's middle.
-                    let escape: String = text[i..].chars().take(3).collect();
-                    format!("'{escape}' is not a %XX escape")
-                })?;
-            out.push(hex);
-            i += 3;
-        } else {
-            out.push(bytes[i]);
-            i += 1;
-        }
-    }
-    String::from_utf8(out).map_err(|_| "not UTF-8 once unescaped".into())
 }
 
 #[cfg(test)]

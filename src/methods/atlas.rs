@@ -15,6 +15,7 @@
 //! atlas; `subpixel=off` resamples the phase-0 bitmap at the exact position.
 
 use glam::DVec2;
+use rayon::prelude::*;
 
 use super::Method;
 use super::glyph_atlas::{self, AtlasPipeline, Entry};
@@ -253,38 +254,45 @@ impl Atlas {
 }
 
 /// Every glyph of `scene` at `px_per_em`, `phases` × `phases` times (once for 0), in
-/// the order the shader indexes them: glyph, then phase row, then phase column.
+/// the order the shader indexes them: glyph, then phase row, then phase column. The
+/// bitmaps are independent, so they are made on every core (on the web page, where
+/// threads cannot start, rayon makes them one by one).
 fn rasterize_glyphs(scene: &Scene, px_per_em: f64, phases: u32) -> Result<Vec<Bitmap>, Error> {
     let steps = phases.max(1);
-    let mut bitmaps = Vec::with_capacity(scene.glyphs.len() * (steps * steps) as usize);
-    for glyph in &scene.glyphs {
-        let alone = Scene {
-            units_per_em: scene.units_per_em,
-            glyphs: vec![glyph.clone()],
-            instances: vec![Instance {
-                glyph: 0,
-                position: DVec2::ZERO,
-            }],
-            source: None,
-        };
-        let frame = BitmapFrame::of(glyph, scene.units_per_em, px_per_em)?;
-        for row in 0..steps {
-            for column in 0..steps {
-                let phase = DVec2::new(f64::from(column), f64::from(row)) / f64::from(steps);
-                let origin = frame.origin + phase;
-                let (width, height) = (frame.width, frame.height);
-                let camera = Camera::new(width, height, px_per_em, origin);
-                let image = reference::rasterize(&alone, &camera)?;
-                bitmaps.push(Bitmap {
-                    width: image.width,
-                    height: image.height,
-                    coverage: image.to_gray8().into_raw(),
-                    origin,
-                });
-            }
-        }
-    }
-    Ok(bitmaps)
+    let frames = scene
+        .glyphs
+        .iter()
+        .map(|glyph| BitmapFrame::of(glyph, scene.units_per_em, px_per_em))
+        .collect::<Result<Vec<_>, _>>()?;
+    let jobs: Vec<(usize, u32, u32)> = (0..scene.glyphs.len())
+        .flat_map(|g| {
+            (0..steps).flat_map(move |row| (0..steps).map(move |column| (g, row, column)))
+        })
+        .collect();
+    jobs.into_par_iter()
+        .map(|(g, row, column)| {
+            let alone = Scene {
+                units_per_em: scene.units_per_em,
+                glyphs: vec![scene.glyphs[g].clone()],
+                instances: vec![Instance {
+                    glyph: 0,
+                    position: DVec2::ZERO,
+                }],
+                source: None,
+            };
+            let frame = &frames[g];
+            let phase = DVec2::new(f64::from(column), f64::from(row)) / f64::from(steps);
+            let origin = frame.origin + phase;
+            let camera = Camera::new(frame.width, frame.height, px_per_em, origin);
+            let image = reference::rasterize(&alone, &camera)?;
+            Ok(Bitmap {
+                width: image.width,
+                height: image.height,
+                coverage: image.to_gray8().into_raw(),
+                origin,
+            })
+        })
+        .collect()
 }
 
 /// Where a glyph's bitmaps sit: whole pixels around its ink at the cached size, the

@@ -16,6 +16,8 @@ pub mod params;
 
 use std::borrow::Cow;
 
+use rayon::prelude::*;
+
 use self::field::FieldKind;
 use self::params::{NAME, OVERLAYS, PARAMS, Settings};
 use super::observed;
@@ -160,9 +162,10 @@ impl Method for Msdf {
                 settings.field.texels_per_em
             ))
         })?;
+        // Each glyph's field is its own: made on every core (one by one on the web page).
         let fields = source
             .glyphs
-            .iter()
+            .par_iter()
             .map(|g| field::generate(&g.outline, g.bounds, upem, &settings.field))
             .collect::<Result<Vec<_>, _>>()?;
         let kind = settings.field.kind;
