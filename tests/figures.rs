@@ -6,7 +6,8 @@
 //!   from the run's raw times and errors, to the digits the cell shows;
 //! - docs/bench.md's quoted tables: each table under a marker
 //!   `<!-- quotes bench/DIR/bench.md "## HEADING" -->` against the table the bench
-//!   wrote under that heading, cell by cell.
+//!   wrote under that heading, cell by cell (docs/motion.md and docs/survey.md quote
+//!   their reports the same way).
 //!
 //! A failure names the file, the line, the row and the column, with both figures. The
 //! checks are shown to fail on a wrong cell in the last tests here.
@@ -334,7 +335,7 @@ fn readme_method_figures_are_the_cited_runs() {
 
 #[test]
 fn docs_bench_tables_quote_the_committed_reports() {
-    for doc in ["docs/bench.md", "docs/motion.md"] {
+    for doc in ["docs/bench.md", "docs/motion.md", "docs/survey.md"] {
         let errors = quote_errors(doc, &read(doc), &committed_report);
         assert!(errors.is_empty(), "\n{}", errors.join("\n"));
     }

@@ -62,8 +62,7 @@ pub fn summaries(methods: &[String], rows: &[Row]) -> Vec<MethodSummary> {
             };
             for r in rows.iter().filter(|r| &r.method == method) {
                 if !r.is_measured() {
-                    s.not_drawn
-                        .push(format!("{} {}: {}", r.font, r.face, r.reason).replace("  ", " "));
+                    s.not_drawn.push(format!("{}: {}", font_cell(r), r.reason));
                     continue;
                 }
                 s.views += 1;
@@ -273,7 +272,7 @@ fn markdown(
         .collect();
     let _ = writeln!(
         md,
-        "{} font files; {glyph_views} glyph views measured (glyph × size × transform × method); \
+        "{} font files; {glyph_views} rows measured (glyph × size × transform × method); \
          {} broken claims. The plan: `{plan}`.\n",
         fonts.len(),
         broken.len()
@@ -285,6 +284,14 @@ fn markdown(
     md += "| method | views | ok | limitation | BROKEN | observed | worst max | mean MAE /255 | mean edge MAE /255 | views with px > 0.25 | views with px > 0.5 | invalid px |\n\
            |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for s in summaries {
+        if s.views == 0 {
+            let _ = writeln!(
+                md,
+                "| {} | 0 | drew nothing (below) | | | | | | | | | |",
+                s.method
+            );
+            continue;
+        }
         let _ = writeln!(
             md,
             "| {} | {} | {} | {} | {} | {} | {} | {:.2} | {:.2} | {} | {} | {} |",
@@ -441,15 +448,24 @@ fn verdict_word(v: Verdict) -> String {
         .unwrap_or_default()
 }
 
-/// The tiles, magnified so the tallest is about 160 px (2× to 8×), five to a row, the
-/// worst pixel framed in both halves of each.
+/// The tiles, each magnified to about 160 px tall (2× to 8×, whole pixels), five to a
+/// row, the worst pixel framed in both halves of each.
 fn contact_sheet(tiles: &[(image::RgbImage, (u32, u32))]) -> image::RgbImage {
     const COLUMNS: usize = 5;
     const GAP: u32 = 8;
-    let tallest = tiles.iter().map(|(t, _)| t.height()).max().unwrap_or(1);
-    let widest = tiles.iter().map(|(t, _)| t.width()).max().unwrap_or(1);
-    let factor = (160 / tallest.max(1)).clamp(2, 8);
-    let (cell_w, cell_h) = (widest * factor + GAP, tallest * factor + GAP);
+    let factor = |tile: &image::RgbImage| (160 / tile.height().max(1)).clamp(2, 8);
+    let cell_w = tiles
+        .iter()
+        .map(|(t, _)| t.width() * factor(t))
+        .max()
+        .unwrap_or(1)
+        + GAP;
+    let cell_h = tiles
+        .iter()
+        .map(|(t, _)| t.height() * factor(t))
+        .max()
+        .unwrap_or(1)
+        + GAP;
     let rows = tiles.len().div_ceil(COLUMNS) as u32;
     let columns = tiles.len().min(COLUMNS) as u32;
     let mut sheet = image::RgbImage::from_pixel(
@@ -458,26 +474,22 @@ fn contact_sheet(tiles: &[(image::RgbImage, (u32, u32))]) -> image::RgbImage {
         image::Rgb([235, 235, 235]),
     );
     for (k, (tile, worst)) in tiles.iter().enumerate() {
+        let f = factor(tile);
         let (x0, y0) = (
             GAP + (k % COLUMNS) as u32 * cell_w,
             GAP + (k / COLUMNS) as u32 * cell_h,
         );
         for (x, y, p) in tile.enumerate_pixels() {
-            for dy in 0..factor {
-                for dx in 0..factor {
-                    sheet.put_pixel(x0 + x * factor + dx, y0 + y * factor + dy, *p);
+            for dy in 0..f {
+                for dx in 0..f {
+                    sheet.put_pixel(x0 + x * f + dx, y0 + y * f + dy, *p);
                 }
             }
         }
         // The worst pixel framed, in the coverage half and the error half.
         let half = (tile.width() - 1) / 2;
         for left in [worst.0, worst.0 + half + 1] {
-            frame_block(
-                &mut sheet,
-                x0 + left * factor,
-                y0 + worst.1 * factor,
-                factor,
-            );
+            frame_block(&mut sheet, x0 + left * f, y0 + worst.1 * f, f);
         }
     }
     sheet
