@@ -245,6 +245,39 @@ fn three_shards_merged_equal_the_single_run() {
         text(&single.join("survey.md")),
         text(&merged.join("survey.md"))
     );
+    // A shard missing a font it was to survey (one that died) is refused, and so is a
+    // set of shards without one of them.
+    let dead = shards[1].join("fonts");
+    let first = std::fs::read_dir(&dead)
+        .unwrap()
+        .next()
+        .unwrap()
+        .unwrap()
+        .path();
+    std::fs::rename(&first, dead.join("gone.partial")).unwrap();
+    let refused = bin().args(&args).output().unwrap();
+    assert_eq!(refused.status.code(), Some(2), "{}", stderr(&refused));
+    assert!(
+        stderr(&refused).contains("has not finished 1 of its fonts"),
+        "{}",
+        stderr(&refused)
+    );
+    std::fs::rename(dead.join("gone.partial"), &first).unwrap();
+    let two = [
+        "survey".to_owned(),
+        "merge".into(),
+        shards[0].display().to_string(),
+        shards[2].display().to_string(),
+        "--out".into(),
+        scratch("two-of-three").display().to_string(),
+    ];
+    let refused = bin().args(two).output().unwrap();
+    assert_eq!(refused.status.code(), Some(2), "{}", stderr(&refused));
+    assert!(
+        stderr(&refused).contains("each of the 3 shards once"),
+        "{}",
+        stderr(&refused)
+    );
     // Each shard holds only its own fonts.
     let rows_of = |dir: &Path| text(&dir.join("survey.csv")).lines().count() - 1;
     assert_eq!(
@@ -298,9 +331,12 @@ fn a_killed_survey_resumes_to_the_same_rows() {
         "killed before its outputs"
     );
     // What a kill during a font's writing leaves: a partial folder, never trusted.
-    let partial = out
-        .join("fonts")
-        .join("Inter-roman.var.ttf-0000000000000000.partial");
+    // The last font's own folder name, so a resume that trusted it would skip that font.
+    let last = format!("{}/{}", fonts.display(), SHIPPED[3]);
+    let partial = out.join("fonts").join(format!(
+        "{}.partial",
+        glyphscope::survey::font_folder(&last)
+    ));
     std::fs::create_dir_all(&partial).unwrap();
     std::fs::write(partial.join("rows.csv"), "font,face\nhalf").unwrap();
     let output = bin().args(&args).output().unwrap();
@@ -311,6 +347,13 @@ fn a_killed_survey_resumes_to_the_same_rows() {
         stderr(&output)
     );
     assert!(!partial.exists());
+    let finished_last = out
+        .join("fonts")
+        .join(glyphscope::survey::font_folder(&last));
+    assert!(
+        finished_last.join("rows.csv").exists(),
+        "the half-written font measured again"
+    );
     assert_eq!(
         text(&single.join("survey.csv")),
         text(&out.join("survey.csv"))

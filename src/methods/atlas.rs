@@ -269,7 +269,8 @@ fn rasterize_glyphs(scene: &Scene, px_per_em: f64, phases: u32) -> Result<Vec<Bi
             (0..steps).flat_map(move |row| (0..steps).map(move |column| (g, row, column)))
         })
         .collect();
-    jobs.into_par_iter()
+    let made: Vec<Result<Bitmap, Error>> = jobs
+        .into_par_iter()
         .map(|(g, row, column)| {
             let alone = Scene {
                 units_per_em: scene.units_per_em,
@@ -292,7 +293,9 @@ fn rasterize_glyphs(scene: &Scene, px_per_em: f64, phases: u32) -> Result<Vec<Bi
                 origin,
             })
         })
-        .collect()
+        .collect();
+    // The first glyph's error, whichever thread met it first: the same every run.
+    made.into_iter().collect()
 }
 
 /// Where a glyph's bitmaps sit: whole pixels around its ink at the cached size, the

@@ -80,12 +80,15 @@ pub fn layout(
         let size = ink.size();
         // The ink spans [offset, offset + size] past the margin: one pixel more than
         // its size, rounded up, holds it at any offset.
-        let width = size.x.ceil() as u32 + 1 + 2 * MARGIN;
-        let height = size.y.ceil() as u32 + 1 + 2 * MARGIN;
-        if width > MAX_FRAME_SIDE || height > MAX_FRAME_SIDE {
+        let side = |extent: f64| extent.ceil() + f64::from(1 + 2 * MARGIN);
+        // Compared before any cast: a glyph millions of pixels across is too large, not
+        // a wrapped-around small slot.
+        if !(side(size.x) <= f64::from(MAX_FRAME_SIDE) && side(size.y) <= f64::from(MAX_FRAME_SIDE))
+        {
             too_large.push(index);
             continue;
         }
+        let (width, height) = (side(size.x) as u32, side(size.y) as u32);
         if x + width > MAX_FRAME_SIDE {
             (x, y) = (0, y + row_height);
             row_height = 0;

@@ -109,6 +109,9 @@ struct Drawing {
     method: Result<Box<dyn Method>, (Verdict, String)>,
     /// Its worst rows so far, with their tiles, worst first.
     worst: Vec<(Row, image::RgbImage)>,
+    /// The frames it refused or failed to draw: one row per size, transform and
+    /// reason (a method that refuses a glyph by id refuses every frame alike).
+    not_drawn: Vec<Row>,
 }
 
 impl FaceContext<'_> {
@@ -129,6 +132,7 @@ impl FaceContext<'_> {
                     .map_err(|e| (Verdict::Failed, format!("cannot be made: {e}"))),
                 run: run.clone(),
                 worst: Vec::new(),
+                not_drawn: Vec::new(),
             })
             .collect();
         for &size in &self.plan.sizes {
@@ -144,6 +148,7 @@ impl FaceContext<'_> {
                 row.method = drawing.run.label.clone();
                 result.rows.push(row);
             }
+            result.rows.extend(drawing.not_drawn);
             for (row, tile) in drawing.worst {
                 result.tiles.push((tile_name(&row), tile));
             }
@@ -281,15 +286,22 @@ impl FaceContext<'_> {
                 .and_then(|()| frame::render_image(self.gpu, method.as_mut(), &camera));
             let image = match image {
                 Ok(image) => image,
-                Err(Error::Refused(why)) => {
-                    drawing.method = Err((Verdict::Refused, why));
-                    continue;
-                }
+                // Said for this frame's size and transform; the method goes on with the
+                // other frames.
                 Err(e) => {
-                    drawing.method = Err((
-                        Verdict::Failed,
-                        format!("at {size} px/em, {}: {e}", transform.name),
-                    ));
+                    let verdict = match e {
+                        Error::Refused(_) => Verdict::Refused,
+                        _ => Verdict::Failed,
+                    };
+                    let mut row = self.unmeasured(verdict, e.to_string());
+                    (row.size, row.transform) = (size, transform.name.clone());
+                    row.method = drawing.run.label.clone();
+                    let said = drawing.not_drawn.iter().any(|r| {
+                        (r.size, &r.transform, &r.reason) == (row.size, &row.transform, &row.reason)
+                    });
+                    if !said {
+                        drawing.not_drawn.push(row);
+                    }
                     continue;
                 }
             };

@@ -37,6 +37,8 @@ pub struct SurveyOptions {
 
 /// The plan a folder's results were measured by.
 const PLAN_FILE: &str = "survey-plan.json";
+/// The font files a folder is to hold, and its shard: what a merge checks is there.
+const FONTS_FILE: &str = "survey-fonts.json";
 /// The folder of finished fonts, one folder each.
 const FONTS_DIR: &str = "fonts";
 /// In a finished font's folder: the font's label, its rows and its worst tiles.
@@ -52,7 +54,7 @@ fn output(path: &Path, e: &dyn std::fmt::Display) -> Error {
 
 /// The folder a font file's results go in: its path made safe, and a hash of the path
 /// so that two files whose safe names agree stay apart.
-fn font_folder(label: &str) -> String {
+pub fn font_folder(label: &str) -> String {
     let safe = file_safe(label);
     // FNV-1a, 64-bit: stable across runs and machines, unlike std's hasher.
     let hash = label.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
@@ -88,8 +90,21 @@ fn claim_folder(out: &Path, plan: &serde_json::Value) -> Result<(), Error> {
             }
             Ok(())
         }
-        Err(_) => std::fs::write(&path, plan.to_string() + "\n").map_err(|e| output(&path, &e)),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+            write_atomically(&path, &(plan.to_string() + "\n"))
+        }
+        Err(e) => Err(Error::Input(format!(
+            "cannot read '{}': {e}",
+            path.display()
+        ))),
     }
+}
+
+/// Writes `text` to `path` through a temporary file renamed over it.
+fn write_atomically(path: &Path, text: &str) -> Result<(), Error> {
+    let partial = PathBuf::from(format!("{}{PARTIAL}", path.display()));
+    std::fs::write(&partial, text).map_err(|e| output(&partial, &e))?;
+    std::fs::rename(&partial, path).map_err(|e| output(path, &e))
 }
 
 /// Runs the survey and writes its outputs. Returns whether every claim held.
@@ -109,6 +124,9 @@ pub fn run(options: &SurveyOptions) -> Result<bool, Error> {
         }
     }
     let labels: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
+    let expected = serde_json::json!({ "shard": options.shard, "fonts": labels });
+    let path = options.out.join(FONTS_FILE);
+    write_atomically(&path, &(expected.to_string() + "\n"))?;
     let to_do: Vec<(&PathBuf, &String)> = files
         .iter()
         .zip(&labels)
@@ -295,6 +313,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<bool, Error> {
     }
     let description = description
         .ok_or_else(|| Error::Input("survey merge: give the folders to merge".into()))?;
+    check_shards_complete(dirs)?;
     let plan = plan_from(&description)?;
     claim_folder(out, &description)?;
     let mut labels: Vec<String> = Vec::new();
@@ -316,7 +335,59 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<bool, Error> {
         }
     }
     labels.sort();
+    let merged = serde_json::json!({ "shard": null, "fonts": labels });
+    write_atomically(&out.join(FONTS_FILE), &(merged.to_string() + "\n"))?;
     write_outputs(out, &description, &plan, &labels)
+}
+
+/// Refuses shards that do not make a whole: each folder must hold every font it was
+/// to survey (a shard that died part way is rerun, and resumes, before merging), and
+/// sharded folders must be the N shards of one split, each once.
+fn check_shards_complete(dirs: &[PathBuf]) -> Result<(), Error> {
+    let mut shards: Vec<(usize, usize)> = Vec::new();
+    for dir in dirs {
+        let path = dir.join(FONTS_FILE);
+        let expected: serde_json::Value = std::fs::read_to_string(&path)
+            .ok()
+            .and_then(|t| serde_json::from_str(&t).ok())
+            .ok_or_else(|| Error::Input(format!("'{}' is not a survey's folder", dir.display())))?;
+        let finished: Vec<String> = finished_fonts(dir, None)?
+            .into_iter()
+            .map(|f| f.label)
+            .collect();
+        let missing: Vec<&str> = expected["fonts"]
+            .as_array()
+            .into_iter()
+            .flatten()
+            .filter_map(|v| v.as_str())
+            .filter(|label| !finished.iter().any(|f| f == label))
+            .collect();
+        if !missing.is_empty() {
+            return Err(Error::Input(format!(
+                "survey merge: '{}' has not finished {} of its fonts ({}…); rerun its command \
+                 to resume it",
+                dir.display(),
+                missing.len(),
+                missing[0]
+            )));
+        }
+        if let Ok((index, count)) =
+            serde_json::from_value::<(usize, usize)>(expected["shard"].clone())
+        {
+            shards.push((index, count));
+        }
+    }
+    if let Some(&(_, count)) = shards.first() {
+        let mut indices: Vec<usize> = shards.iter().map(|&(i, _)| i).collect();
+        indices.sort_unstable();
+        if shards.iter().any(|&(_, n)| n != count) || indices != (0..count).collect::<Vec<_>>() {
+            return Err(Error::Input(format!(
+                "survey merge: the folders are shards {shards:?} (index, count): give each of \
+                 the {count} shards once"
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// The plan a folder's description names, rebuilt (its methods' claims from today's

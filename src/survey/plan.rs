@@ -210,9 +210,13 @@ impl Plan {
         (first..=last.min(count.saturating_sub(1))).filter(move |_| count > 0)
     }
 
-    /// The plan as written beside the results: what must match for results to merge.
+    /// The plan as written beside the results: what must match for results to merge
+    /// (the claims each method is held to and the version among them).
     pub fn describe(&self) -> serde_json::Value {
         serde_json::json!({
+            // Results judged by another build's claims do not mix with these.
+            "glyphscope": env!("CARGO_PKG_VERSION"),
+            "claims": self.methods.iter().map(|m| format!("{:?}", m.claim)).collect::<Vec<_>>(),
             "sizes": self.sizes,
             "transforms": self.transforms.iter().map(|t| &t.name).collect::<Vec<_>>(),
             "methods": self.methods.iter().map(|m| &m.label).collect::<Vec<_>>(),

@@ -196,12 +196,24 @@ pub fn write(
         let Some(list) = worst.get(method.as_str()) else {
             continue;
         };
+        // A tile that cannot be read is a grey square in its place, so the sheet keeps
+        // the table's order.
         let tiles: Vec<(image::RgbImage, (u32, u32))> = list
             .iter()
-            .filter_map(|r| {
-                let font = fonts.iter().find(|f| f.label == r.font)?;
-                let tile = image::open(font.tiles.join(tile_name(r))).ok()?.to_rgb8();
-                Some((tile, (r.worst_x, r.worst_y)))
+            .map(|r| {
+                fonts
+                    .iter()
+                    .find(|f| f.label == r.font)
+                    .and_then(|font| image::open(font.tiles.join(tile_name(r))).ok())
+                    .map_or_else(
+                        || {
+                            (
+                                image::RgbImage::from_pixel(9, 9, image::Rgb([128, 128, 128])),
+                                (0, 0),
+                            )
+                        },
+                        |tile| (tile.to_rgb8(), (r.worst_x, r.worst_y)),
+                    )
             })
             .collect();
         if tiles.is_empty() {
@@ -379,6 +391,13 @@ fn markdown(
             let glyph = r.glyph.map_or(String::new(), |g| format!(" glyph {g}"));
             let _ = writeln!(md, "- {}{glyph}: {}", font_cell(r), r.reason);
         }
+        if unreadable.len() > BROKEN_LISTED {
+            let _ = writeln!(
+                md,
+                "- … and {} more in survey.csv",
+                unreadable.len() - BROKEN_LISTED
+            );
+        }
     }
     let _ = writeln!(md, "\n## Broken claims ({})\n", broken.len());
     if broken.is_empty() {
@@ -448,12 +467,12 @@ fn verdict_word(v: Verdict) -> String {
         .unwrap_or_default()
 }
 
-/// The tiles, each magnified to about 160 px tall (2× to 8×, whole pixels), five to a
+/// The tiles, each magnified to about 160 px tall (1× to 8×, whole pixels), five to a
 /// row, the worst pixel framed in both halves of each.
 fn contact_sheet(tiles: &[(image::RgbImage, (u32, u32))]) -> image::RgbImage {
     const COLUMNS: usize = 5;
     const GAP: u32 = 8;
-    let factor = |tile: &image::RgbImage| (160 / tile.height().max(1)).clamp(2, 8);
+    let factor = |tile: &image::RgbImage| (160 / tile.height().max(1)).clamp(1, 8);
     let cell_w = tiles
         .iter()
         .map(|(t, _)| t.width() * factor(t))

@@ -167,6 +167,9 @@ impl Method for Msdf {
             .glyphs
             .par_iter()
             .map(|g| field::generate(&g.outline, g.bounds, upem, &settings.field))
+            .collect::<Vec<_>>()
+            // The first glyph's error, whichever thread met it first: the same every run.
+            .into_iter()
             .collect::<Result<Vec<_>, _>>()?;
         let kind = settings.field.kind;
         let texels = packed.fill(
