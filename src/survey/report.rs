@@ -516,20 +516,12 @@ fn contact_sheet(tiles: &[(image::RgbImage, (u32, u32))]) -> image::RgbImage {
 
 /// An orange frame one pixel outside a block of `side` at (x, y).
 fn frame_block(sheet: &mut image::RgbImage, x: u32, y: u32, side: u32) {
-    let orange = image::Rgb([255, 140, 0]);
     let (x0, y0) = (x.saturating_sub(1), y.saturating_sub(1));
     let (x1, y1) = (x + side, y + side);
-    for i in x0..=x1 {
-        for j in [y0, y1] {
-            if i < sheet.width() && j < sheet.height() {
-                sheet.put_pixel(i, j, orange);
-            }
-        }
-    }
-    for j in y0..=y1 {
-        for i in [x0, x1] {
-            if i < sheet.width() && j < sheet.height() {
-                sheet.put_pixel(i, j, orange);
+    for j in y0..=y1.min(sheet.height() - 1) {
+        for i in x0..=x1.min(sheet.width() - 1) {
+            if i == x0 || i == x1 || j == y0 || j == y1 {
+                sheet.put_pixel(i, j, image::Rgb([255, 140, 0]));
             }
         }
     }

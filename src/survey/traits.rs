@@ -23,7 +23,7 @@
 
 use glam::{DMat3, DVec2};
 
-use crate::geometry::{Outline, Segment, project};
+use crate::geometry::{Outline, Quad, Segment, line_as_quad, project, winding_number};
 use crate::methods::info::Trait;
 
 /// The largest distance between consecutive samples along the outline, pixels.
@@ -247,27 +247,17 @@ fn crossing_near(
         .iter()
         .position(|s| s.contour == contour)
         .unwrap_or(0);
+    // Its polygon, as the project's winding number takes curves.
     let ring: Vec<DVec2> = samples[first..]
         .iter()
         .take_while(|s| s.contour == contour)
         .map(|s| s.at)
         .collect();
-    inside(&ring, samples[before].at) != inside(&ring, samples[after].at)
-}
-
-/// Whether `p` has a nonzero winding number around the closed polygon `ring`.
-fn inside(ring: &[DVec2], p: DVec2) -> bool {
-    let mut winding = 0;
-    for (k, &a) in ring.iter().enumerate() {
-        let b = ring[(k + 1) % ring.len()];
-        if (a.y <= p.y) != (b.y <= p.y) {
-            let x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
-            if x > p.x {
-                winding += if b.y > a.y { 1 } else { -1 };
-            }
-        }
-    }
-    winding != 0
+    let edges: Vec<Quad> = (0..ring.len())
+        .map(|k| line_as_quad(ring[k], ring[(k + 1) % ring.len()]))
+        .collect();
+    let inside = |p: DVec2| winding_number(p, &edges) != 0;
+    inside(samples[before].at) != inside(samples[after].at)
 }
 
 /// Whether some contour is less than a pixel's diagonal across: its width, the least
