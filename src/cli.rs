@@ -147,7 +147,7 @@ pub struct BenchArgs {
     #[arg(long)]
     pub quick: bool,
     /// Scenes to run, comma-separated (default: all): page, tiny, headlines, edge,
-    /// rotated, latin-modern, inter-900, bengali, and the scaling series glyph-count
+    /// rotated, latin-modern, inter-900, bengali, arabic, and the scaling series glyph-count
     /// (100 → 30 000 glyphs of the page) and px-per-em (one word at 4 → 4 096 px/em).
     #[arg(long, value_delimiter = ',')]
     pub scenes: Vec<String>,

@@ -23,8 +23,8 @@ use crate::Error;
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
 use crate::geometry::{
-    DEFAULT_QUAD_TOLERANCE_EM, Outline, Rect, Segment, jacobian_bound, project, segment_points,
-    signed_area,
+    DEFAULT_QUAD_TOLERANCE_EM, Outline, Rect, Segment, jacobian_bound, overlapping_groups, project,
+    segment_points, signed_area,
 };
 use crate::scene::Scene;
 
@@ -62,7 +62,8 @@ pub fn rasterize_with_tolerance(
     }
     let mut image = CoverageImage::new(camera.width, camera.height);
     let mut rows = RowBuffers::default();
-    for cluster in overlapping_clusters(&placed) {
+    let bounds: Vec<Rect> = placed.iter().map(|p| p.bounds).collect();
+    for cluster in overlapping_groups(&bounds) {
         let mut edges = Vec::new();
         let mut bounds: Option<Rect> = None;
         for &i in &cluster {
@@ -105,36 +106,6 @@ struct Placed {
     glyph: usize,
     to_image: DMat3,
     bounds: Rect,
-}
-
-/// Groups instances whose image bounds overlap, transitively (union-find).
-fn overlapping_clusters(placed: &[Placed]) -> Vec<Vec<usize>> {
-    let mut parent: Vec<usize> = (0..placed.len()).collect();
-    fn root(parent: &mut [usize], mut i: usize) -> usize {
-        while parent[i] != i {
-            parent[i] = parent[parent[i]];
-            i = parent[i];
-        }
-        i
-    }
-    let mut by_x: Vec<usize> = (0..placed.len()).collect();
-    by_x.sort_by(|&a, &b| placed[a].bounds.min.x.total_cmp(&placed[b].bounds.min.x));
-    for (k, &a) in by_x.iter().enumerate() {
-        for &b in &by_x[k + 1..] {
-            if placed[b].bounds.min.x >= placed[a].bounds.max.x {
-                break;
-            }
-            if placed[a].bounds.overlaps(&placed[b].bounds) {
-                let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
-                parent[ra] = rb;
-            }
-        }
-    }
-    let mut groups: std::collections::BTreeMap<usize, Vec<usize>> = Default::default();
-    for i in 0..placed.len() {
-        groups.entry(root(&mut parent, i)).or_default().push(i);
-    }
-    groups.into_values().collect()
 }
 
 /// A straight edge in image space with y0 < y1 and the winding direction it carries.

@@ -16,6 +16,7 @@ use crate::methods::registry;
 use crate::metrics;
 use crate::outline_overlay;
 use crate::reference;
+use crate::scene::JoinCounts;
 use crate::view_args::ViewArgs;
 
 /// What to draw, with which method, and what to write.
@@ -92,6 +93,9 @@ pub struct Rendered {
     pub stats: RenderStats,
     /// The magnifier's picture and the pixels it shows, when one was asked for.
     pub picture: Option<(image::RgbImage, Window)>,
+    /// The scene's instances whose ink overlaps, as `between=union` joins them: a fact of
+    /// the scene, whichever method drew it.
+    pub ink_overlaps: JoinCounts,
 }
 
 /// Renders what `options` describe (nothing is written).
@@ -166,6 +170,7 @@ pub fn render(options: &RenderOptions) -> Result<Rendered, Error> {
         reference,
         stats,
         picture,
+        ink_overlaps: scene.with_overlapping_instances_joined().1,
     })
 }
 
@@ -197,10 +202,12 @@ pub fn run(options: &RenderOptions) -> Result<(), Error> {
             stats: &'a RenderStats,
             #[serde(skip_serializing_if = "Option::is_none")]
             magnified: Option<Window>,
+            ink_overlaps: JoinCounts,
         }
         let written = Written {
             stats: &rendered.stats,
             magnified: rendered.picture.as_ref().map(|(_, window)| *window),
+            ink_overlaps: rendered.ink_overlaps,
         };
         let json = serde_json::to_string_pretty(&written).expect("stats serialize");
         std::fs::write(path, json + "\n")

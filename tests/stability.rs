@@ -108,7 +108,9 @@ fn limitations_show_their_numbers() {
     assert!(estimate.artifact_pixels > 0, "{estimate:?}");
     assert!(!estimate.breaks_claim());
     // Where the touching point is an end or a straight edge, the fills' wedges keep the
-    // estimate within the bound it claims elsewhere (set before these cases existed).
+    // estimate within the bound it claimed elsewhere when they were written (0.65, set
+    // before these cases existed; withdrawn since, when ordinary glyphs broke it).
+    const WEDGES_BOUND: f64 = 0.65;
     for case in [
         "touching-contours",
         "hole-touching-edge",
@@ -116,10 +118,7 @@ fn limitations_show_their_numbers() {
     ] {
         let touching = find(case, "sdf-cells");
         assert!(touching.limitation, "{case}");
-        assert!(
-            touching.max <= claimed_max("sdf-cells").unwrap(),
-            "{touching:?}"
-        );
+        assert!(touching.max <= WEDGES_BOUND, "{touching:?}");
         let exact = find(case, "sdf-cells exact");
         assert!(!exact.limitation && !exact.breaks_claim(), "{exact:?}");
     }
@@ -134,15 +133,12 @@ fn limitations_show_their_numbers() {
     );
     assert!(!exact.breaks_claim(), "{exact:?}");
     for case in ["overlapping-same-direction", "figure-8"] {
-        for variant in ["sdf-cells", "sdf-cells exact"] {
-            let merged = find(case, variant);
-            assert!(
-                !merged.limitation,
-                "{variant}: {case} is claimed once merged"
-            );
-            assert_eq!(merged.bound.map(|b| b.max), claimed_max(variant));
-            assert!(!merged.breaks_claim(), "{merged:?}");
-        }
+        let merged = find(case, "sdf-cells exact");
+        assert!(!merged.limitation, "{case} is claimed once merged");
+        assert_eq!(merged.bound.map(|b| b.max), claimed_max("sdf-cells exact"));
+        assert!(!merged.breaks_claim(), "{merged:?}");
+        // Merged, the estimate reads them as it reads any glyph without overlaps.
+        assert!(find(case, "sdf-cells").max <= WEDGES_BOUND, "{case}");
     }
 }
 
@@ -272,9 +268,16 @@ fn every_claim_rejects_coverage_rounded_to_0_or_1_and_nan() {
         }
     }
     for (variant, broken) in variants.iter().zip(&broken_by_rounding) {
-        // A peer is observed: glyphscope claims nothing of it, so nothing can break.
-        if registry::find(variant.method).is_ok_and(|m| m.is_peer()) {
-            assert_eq!(*broken, 0, "{}: a peer's row broke a claim", variant.label);
+        // A peer is observed, and so is a setting that claims nothing (its statement
+        // says so: `every_method_claims_a_bound_where_it_is_meant_to_work`): nothing
+        // can break.
+        let claims_nothing = variant.claim.bound.is_none() && variant.claim.limitation.is_none();
+        if registry::find(variant.method).is_ok_and(|m| m.is_peer()) || claims_nothing {
+            assert_eq!(
+                *broken, 0,
+                "{}: an observed row broke a claim",
+                variant.label
+            );
             continue;
         }
         println!(
@@ -289,22 +292,39 @@ fn every_claim_rejects_coverage_rounded_to_0_or_1_and_nan() {
     }
 }
 
-/// Every claimed setting of glyphscope's methods bounds something on the outlines it
-/// is meant for — the estimate, `sdf-cells`' default, on text without overlapping or
-/// touching contours — and a bound on the maximum comes with one on the mean. A peer
-/// claims nothing anywhere.
+/// Every one of glyphscope's methods bounds its error on ordinary text in some claimed
+/// setting, and a bound on the maximum comes with one on the mean; a setting that claims
+/// nothing (`sdf-cells`' estimate, whose bound ordinary glyphs broke) says so in its
+/// statement. A peer claims nothing anywhere.
 #[test]
-fn every_setting_claims_a_bound_where_it_is_meant_to_work() {
+fn every_method_claims_a_bound_where_it_is_meant_to_work() {
     let ordinary = hard_cases::by_name("latin-modern-cubics").unwrap();
+    let mut bounded: Vec<&str> = Vec::new();
+    let mut methods: Vec<&str> = Vec::new();
     for variant in claims::variants() {
         if registry::find(variant.method).is_ok_and(|m| m.is_peer()) {
             assert_eq!(variant.claim.bound, None, "{}", variant.label);
             assert_eq!(variant.claim.limitation, None, "{}", variant.label);
             continue;
         }
-        let bound = variant.claim.bound(ordinary.traits);
-        let bound = bound.unwrap_or_else(|| panic!("{} claims nothing", variant.label));
-        assert!(bound.max < 1.0 && bound.mae_255 > 0.0, "{}", variant.label);
+        methods.push(variant.method);
+        match variant.claim.bound(ordinary.traits) {
+            Some(bound) => {
+                assert!(bound.max < 1.0 && bound.mae_255 > 0.0, "{}", variant.label);
+                bounded.push(variant.method);
+            }
+            None => assert!(
+                variant.claim.statement.contains("no bound"),
+                "{} claims nothing and does not say so",
+                variant.label
+            ),
+        }
+    }
+    for method in methods {
+        assert!(
+            bounded.contains(&method),
+            "{method} claims nothing in any setting"
+        );
     }
 }
 

@@ -39,6 +39,7 @@ pub const SCENE_NAMES: &[&str] = &[
     "latin-modern",
     "inter-900",
     "bengali",
+    "arabic",
 ];
 
 /// The scene called `name`.
@@ -112,10 +113,20 @@ pub fn scene(name: &str) -> Result<BenchScene, Error> {
                 32.0,
             ),
         ),
+        "arabic" => (
+            "an Arabic paragraph (DejaVu Sans) at 24 px/em: letters joined, their ink \
+             overlapping the next's",
+            text_args(None, ARABIC_PARAGRAPH, 24.0),
+        ),
         _ => return Err(unknown()),
     };
     Ok(BenchScene { name, about, args })
 }
+
+/// The `arabic` scene's text: the `arabic-line` hard case's line, then two more.
+const ARABIC_PARAGRAPH: &str = "بسم الله الرحمن الرحيم — السلام عليكم ورحمة الله\n\
+    العلم نور والجهل ظلام، ومن جد وجد ومن زرع حصد\n\
+    تكتب العربية من اليمين إلى اليسار وتتصل حروفها في الكلمة الواحدة";
 
 /// The scene's view after caching: zoomed by [`MOVED_ZOOM`] about the image centre and
 /// turned by [`MOVED_ROTATION_DEG`], same image size and tilt. `camera` is the scene's

@@ -21,12 +21,12 @@ mod segment;
 pub use cubic::{DEFAULT_QUAD_TOLERANCE_EM, cubic_to_quadratics, max_distance_to_cubic};
 pub use distance::{distance_between_segments, distance_to_segment};
 pub use outline::{Contour, Outline, kurbo_path};
-pub use overlaps::merge_overlaps;
+pub use overlaps::{inks_overlap, merge_overlaps};
 pub use projection::{jacobian_bound, keeps_axes, project, steps_lean_apart};
 pub use quadratic::{
     Quad, blossom_value, integral_x_dy, line_as_quad, monomial, monotone_pieces, point_at,
     signed_area, subcurve, t_at, winding_number,
 };
-pub use rect::Rect;
+pub use rect::{Rect, groups_where, overlapping_groups};
 pub use segment::{Segment, segment_points};
 pub(crate) use segment::{from_lyon, lyon_cubic, lyon_quad, to_lyon};

@@ -14,6 +14,25 @@ pub struct Contour {
     pub segments: Vec<Segment>,
 }
 
+impl Contour {
+    /// The contour traversed the other way: the same curves, each reversed, in reverse
+    /// order (under the nonzero rule, a hole instead of a fill).
+    pub fn reversed(&self) -> Contour {
+        Contour {
+            segments: self
+                .segments
+                .iter()
+                .rev()
+                .map(|s| match *s {
+                    Segment::Line(a, b) => Segment::Line(b, a),
+                    Segment::Quad(a, b, c) => Segment::Quad(c, b, a),
+                    Segment::Cubic(a, b, c, d) => Segment::Cubic(d, c, b, a),
+                })
+                .collect(),
+        }
+    }
+}
+
 /// A glyph outline: closed contours, filled by the nonzero rule.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Outline {

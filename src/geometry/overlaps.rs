@@ -77,6 +77,29 @@ pub fn merge_overlaps(outline: &Outline, units_per_em: f64) -> Result<Option<Out
     }))
 }
 
+/// Whether the areas the nonzero rule fills in `a` and in `b` share more than rounding
+/// (the same [`SAME_AREA_EM2`] as [`merge_overlaps`]): two glyphs whose ink overlaps,
+/// whose coverages therefore do not add. Touching along an edge or at a point shares no
+/// area and is not an overlap (box-filter coverage of the two adds exactly there).
+pub fn inks_overlap(a: &Outline, b: &Outline, units_per_em: f64) -> Result<bool, String> {
+    if a.is_empty() || b.is_empty() {
+        return Ok(false);
+    }
+    let both = linesweeper::binary_op(
+        &kurbo_path(&a.contours),
+        &kurbo_path(&b.contours),
+        FillRule::NonZero,
+        BinaryOp::Intersection,
+    )
+    .map_err(|e| format!("the outlines' intersection failed: {e}"))?;
+    // Each contour of the result bounds area or, nested in one, a hole.
+    let area: f64 = both
+        .into_contours()
+        .map(|c| c.path.area().abs() * if c.outer { 1.0 } else { -1.0 })
+        .sum();
+    Ok(area > SAME_AREA_EM2 * units_per_em * units_per_em)
+}
+
 fn vec(p: kurbo::Point) -> DVec2 {
     DVec2::new(p.x, p.y)
 }
@@ -162,20 +185,32 @@ mod tests {
     /// its own union: kept as it is.
     #[test]
     fn a_glyph_with_a_hole_is_kept_as_it_is() {
-        let mut hole = square(25.0, 25.0, 50.0);
-        hole.segments = hole
-            .segments
-            .iter()
-            .rev()
-            .map(|s| match *s {
-                Segment::Line(a, b) => Segment::Line(b, a),
-                other => other,
-            })
-            .collect();
+        let hole = square(25.0, 25.0, 50.0).reversed();
         let outline = Outline {
             contours: vec![square(0.0, 0.0, 100.0), hole],
         };
         assert_eq!(merge_overlaps(&outline, 1000.0).unwrap(), None);
+    }
+
+    /// Two glyphs' ink overlaps where their fills share area: a corner overlap does;
+    /// squares side by side sharing an edge, squares apart, and a square inside
+    /// another's hole (wound the other way) do not.
+    #[test]
+    fn inks_overlap_where_fills_share_area() {
+        let one = |c: Contour| Outline { contours: vec![c] };
+        let a = one(square(0.0, 0.0, 100.0));
+        let overlaps = |b: &Outline| inks_overlap(&a, b, 1000.0).unwrap();
+        assert!(overlaps(&one(square(50.0, 50.0, 100.0))));
+        assert!(!overlaps(&one(square(100.0, 0.0, 100.0))));
+        assert!(!overlaps(&one(square(300.0, 0.0, 100.0))));
+        let hole = square(25.0, 25.0, 100.0).reversed();
+        // The ring: the square -100..300 with the hole 25..125 on both axes.
+        let ring = Outline {
+            contours: vec![square(-100.0, -100.0, 400.0), hole],
+        };
+        let inside = one(square(50.0, 50.0, 50.0));
+        assert!(!inks_overlap(&ring, &inside, 1000.0).unwrap());
+        assert!(inks_overlap(&ring, &a, 1000.0).unwrap());
     }
 
     /// Curves survive the union as curves: a square with a quadratic bump, overlapped by

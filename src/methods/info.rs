@@ -182,6 +182,10 @@ pub enum Trait {
     /// Contours overlap or cross themselves: a distance to the outline is not a
     /// distance to the filled area's boundary.
     Overlapping,
+    /// The ink of neighbouring glyphs overlaps (letters joining, vowel signs over their
+    /// bases, box-drawing characters meeting, a kerned pair): a method that draws glyph
+    /// by glyph and composites them counts the shared ink twice.
+    OverlappingGlyphs,
     /// Separate contours meet at a point or along an edge without overlapping: the
     /// outline's boundary there is made of two contours' edges.
     TouchingContours,

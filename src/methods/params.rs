@@ -22,6 +22,20 @@ pub struct ParamSpec {
     pub help: &'static str,
 }
 
+/// `between`, the one row two methods share (`winding` and `sdf-cells`, which draw
+/// instance by instance from outlines): how instances whose ink overlaps are drawn.
+pub const BETWEEN: ParamSpec = ParamSpec {
+    key: "between",
+    choices: &["union", "add"],
+    numbers: None,
+    help: "union (the default under the nonzero rule): instances whose ink overlaps \
+           (joined letters, vowel signs over their bases, box-drawing characters meeting, \
+           a kerned pair) are drawn as one glyph whose fill is their union \
+           (Scene::with_overlapping_instances_joined), so shared ink counts once, as in \
+           the reference; add: each instance alone, their coverages added, so shared ink \
+           counts twice (what per-glyph compositing gives).",
+};
+
 /// The numbers a parameter accepts besides its choices.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Numbers {

@@ -117,6 +117,11 @@ pub fn all() -> Vec<HardCase> {
         traits: &[Trait::SubpixelDetail, Trait::CrowdedPixels],
         ..case
     };
+    // The ink of neighbouring glyphs overlaps.
+    let between_glyphs = |case: HardCase| HardCase {
+        traits: &[Trait::OverlappingGlyphs],
+        ..case
+    };
     let default_font = Font::default_font();
     let text = |text: &str| Scene::from_text(&default_font, text).expect("DejaVu shapes it");
     let glyph_o = text("o");
@@ -255,7 +260,7 @@ pub fn all() -> Vec<HardCase> {
              inside",
             vec![
                 polygon(&rect(2.0, 2.0, 18.0, 18.0)),
-                reversed(polygon(&[(6.0, 8.0), (14.0, 8.0), (10.0, 18.0)])),
+                polygon(&[(6.0, 8.0), (14.0, 8.0), (10.0, 18.0)]).reversed(),
             ],
         )),
         touching(synthetic(
@@ -318,7 +323,7 @@ pub fn all() -> Vec<HardCase> {
             "reversed-outer",
             "a ring whose outer contour is clockwise and its hole counter-clockwise",
             vec![
-                reversed(polygon(&octagon(11.0, 11.0, 9.0))),
+                polygon(&octagon(11.0, 11.0, 9.0)).reversed(),
                 polygon(&octagon(11.0, 11.0, 4.5)),
             ],
         ),
@@ -508,19 +513,57 @@ pub fn all() -> Vec<HardCase> {
              off the side before it: its direction rounds to almost anything in f32",
             slanted_ulp_segments(),
         ),
+        // Scripts and layouts whose glyphs' ink overlaps, as shaped (docs/methods/
+        // winding.md measured them drawn glyph by glyph: 0.11 to 0.34 off).
+        between_glyphs(real(
+            "arabic-line",
+            "an Arabic line in DejaVu Sans at 24 px/em: each letter's ink runs into the \
+             next's where they join",
+            text(ARABIC_LINE),
+            24.0,
+        )),
+        between_glyphs(real(
+            "bengali-line",
+            "a Bengali line in Lohit Bengali at 32 px/em: conjuncts, vowel signs over and \
+             around their bases, the headline running from letter to letter",
+            Scene::from_text(&Font::shipped(3), BENGALI_LINE).expect("Lohit shapes it"),
+            32.0,
+        )),
+        between_glyphs(real(
+            "box-drawing",
+            "DejaVu Sans double-line box-drawing characters meeting at 20 px/em: \
+             their lines run past the advance into the next character's",
+            text("╔═╦═╗\n╠═╬═╣\n╚═╩═╝"),
+            20.0,
+        )),
+        between_glyphs(real(
+            "kerned-overlap",
+            "DejaVu Sans 'fT' at 48 px/em: kerned so close that the f's bar runs into \
+             the T's",
+            text("fT"),
+            48.0,
+        )),
         synthetic(
             "opposite-wound-contours",
             "separate contours wound opposite ways, both filled under nonzero: squares side \
              by side, and a counter-clockwise ring with a clockwise hole",
             vec![
                 polygon(&rect(2.0, 2.0, 12.0, 12.0)),
-                reversed(polygon(&rect(15.0, 2.0, 21.0, 12.0))),
+                polygon(&rect(15.0, 2.0, 21.0, 12.0)).reversed(),
                 polygon(&octagon(31.0, 7.0, 6.0)),
-                reversed(polygon(&octagon(31.0, 7.0, 3.0))),
+                polygon(&octagon(31.0, 7.0, 3.0)).reversed(),
             ],
         ),
     ]
 }
+
+/// The Arabic line of the `arabic-line` case: a basmala and a greeting, letters joined
+/// as the script writes them.
+pub const ARABIC_LINE: &str = "بسم الله الرحمن الرحيم — السلام عليكم ورحمة الله";
+
+/// The Bengali line of the `bengali-line` case: conjuncts (ক্ষ, ত্য, স্কৃ) and vowel signs
+/// before, after and over their bases.
+pub const BENGALI_LINE: &str = "ক্ষমা বাংলা ভাষা সাহিত্য সংস্কৃতি";
 
 /// A sun symbol (a CFF glyph, 1000 units per em, advance 800), the
 /// outline of a real symbol font's U+263C-like glyph: at 48 px/em with the origin at a
@@ -608,22 +651,6 @@ fn octagon(cx: f64, cy: f64, r: f64) -> Vec<(f64, f64)> {
             (cx + r * a.cos(), cy + r * a.sin())
         })
         .collect()
-}
-
-/// The contour traversed the other way.
-fn reversed(contour: Contour) -> Contour {
-    Contour {
-        segments: contour
-            .segments
-            .iter()
-            .rev()
-            .map(|s| match *s {
-                Segment::Line(a, b) => Segment::Line(b, a),
-                Segment::Quad(a, b, c) => Segment::Quad(c, b, a),
-                Segment::Cubic(a, b, c, d) => Segment::Cubic(d, c, b, a),
-            })
-            .collect(),
-    }
 }
 
 /// Zero-length lines and quadratics and repeated points inside one contour.
@@ -826,7 +853,7 @@ fn near_tangent_vertices(transpose: bool) -> Vec<Contour> {
                     // Mirroring or transposing alone turns the contour clockwise: turn
                     // it back, as a font winds every contour of a glyph alike.
                     contours.push(if mirror != transpose {
-                        reversed(contour)
+                        contour.reversed()
                     } else {
                         contour
                     });

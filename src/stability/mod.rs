@@ -114,7 +114,7 @@ pub fn long_table(outcomes: &[Outcome]) -> String {
         let claim = match (o.limitation, o.bound) {
             (false, Some(b)) => format!("≤ {}, ≤ {}", b.max, b.mae_255),
             (true, Some(b)) => format!("limitation, ≤ {}, ≤ {}", b.max, b.mae_255),
-            (_, None) if o.observed => "none (a peer, observed)".to_owned(),
+            (_, None) if o.observed => "none (observed)".to_owned(),
             (_, None) => "limitation".to_owned(),
         };
         if let (Some(reason), 0) = (&o.refused, o.frames) {

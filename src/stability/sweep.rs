@@ -125,7 +125,9 @@ pub fn run(
             for (method, outcome) in &mut cells {
                 let Some(m) = method else { continue };
                 let image = match frame::render_image(gpu, m.as_mut(), &camera) {
-                    Ok(image) => image,
+                    // As every measurement takes it (`measure`, `motion`): instances
+                    // added past 1 are their union.
+                    Ok(image) => image.clamp_to_union(),
                     // A peer's limit at this camera (glyphon: a turn): said, and the
                     // other cameras still drawn.
                     Err(Error::Refused(reason)) => {

@@ -2,7 +2,7 @@
 
 use super::cells::Mode;
 use crate::methods::Overlay;
-use crate::methods::params::{Numbers, ParamSpec, Params, Value};
+use crate::methods::params::{BETWEEN, Numbers, ParamSpec, Params, Value};
 
 pub const NAME: &str = "sdf-cells";
 
@@ -53,6 +53,7 @@ pub const PARAMS: &[ParamSpec] = &[
                (geometry::merge_overlaps), as kocsis1david's font-demo asks; keep: from \
                the contours as the font has them.",
     },
+    BETWEEN,
     ParamSpec {
         key: "outline",
         choices: &["0", "0.02", "0.05"],
@@ -147,6 +148,8 @@ pub enum Overlaps {
 pub struct Settings {
     pub mode: Mode,
     pub overlaps: Overlaps,
+    /// Draw each group of instances whose ink overlaps as one glyph (`between=union`).
+    pub join_instances: bool,
     pub bias_em: f64,
     pub grid: GridChoice,
     pub encoding: EncodingChoice,
@@ -159,6 +162,7 @@ impl Default for Settings {
         Settings {
             mode: Mode::Estimate,
             overlaps: Overlaps::Merge,
+            join_instances: true,
             bias_em: DEFAULT_BIAS_EM,
             grid: GridChoice::Auto,
             encoding: EncodingChoice::Auto,
@@ -181,6 +185,7 @@ impl Settings {
                 Some("keep") => Overlaps::Keep,
                 _ => Overlaps::Merge,
             },
+            join_instances: params.word("between") != Some("add"),
             bias_em: em("bias", defaults.bias_em),
             grid: match params.get("grid") {
                 Some(Value::Whole(n)) => GridChoice::Fixed(n),
@@ -228,12 +233,14 @@ mod tests {
             ("outline", "0.03"),
             ("glow", "0.1"),
             ("overlay", "purple"),
+            ("between", "add"),
         ])
         .unwrap();
         assert_eq!(s.mode, Mode::Exact);
         assert_eq!(s.grid, GridChoice::Fixed(12));
         assert_eq!(s.encoding, EncodingChoice::List);
         assert_eq!(s.overlay, Some(Overlay::EqualDistance));
+        assert!(!s.join_instances);
         assert!(
             (s.reach_em() - 0.13).abs() < 1e-12,
             "erosion reaches nowhere"
@@ -249,6 +256,7 @@ mod tests {
             ("grid", "65", "1 to 64"),
             ("grid", "2.5", "whole number"),
             ("encoding", "zip", "auto, packed or list"),
+            ("between", "merge", "union or add"),
             ("bias", "-1", "number of em"),
             ("bias", "nan", "number of em"),
             ("glow", "1e400", "number of em"),

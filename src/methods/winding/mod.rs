@@ -32,7 +32,7 @@ pub use bands::{BandCount, GlyphData, Layout, MAX_BANDS};
 
 use super::info::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at, within};
 use super::instances::Instances;
-use super::params::{Numbers, ParamSpec, Params, Value};
+use super::params::{BETWEEN, Numbers, ParamSpec, Params, Value};
 use super::{CurveCost, Method, Overlay};
 use crate::Error;
 use crate::camera::Camera;
@@ -66,6 +66,9 @@ pub const INFO: MethodInfo = MethodInfo {
         bench_at(&[("rays", "1")], false),
         bench_at(&[("rays", "1"), ("samples", "1")], true),
         bench_at(&[("rays", "1"), ("samples", "1"), ("bands", "off")], false),
+        // What joining overlapping instances costs: the same frame with their coverage
+        // added instead (a page without overlaps draws the same instances either way).
+        bench_at(&[("between", "add")], false),
     ],
     // Bounds set by the margin rule (info::Claim) from the sweep before them.
     claims: &[
@@ -185,6 +188,7 @@ pub const PARAMS: &[ParamSpec] = &[
                no sub-pixels there; keep (the default with fill=evenodd): from the \
                contours as the font has them.",
     },
+    BETWEEN,
     ParamSpec {
         key: "overlay",
         choices: &["none", "classes", "cost"],
@@ -239,6 +243,9 @@ pub struct Settings {
     /// Draw each glyph from the nonzero union of its contours (`overlaps=merge`, the
     /// default under the nonzero rule).
     pub merge_overlaps: bool,
+    /// Draw each group of instances whose ink overlaps as one glyph (`between=union`,
+    /// the default under the nonzero rule).
+    pub join_instances: bool,
     /// None: no bands, every curve for every ray.
     pub bands: Option<BandCount>,
     pub overlay: Option<Overlay>,
@@ -252,6 +259,7 @@ impl Default for Settings {
             samples: 0,
             even_odd: false,
             merge_overlaps: true,
+            join_instances: true,
             bands: Some(BandCount::Auto),
             overlay: None,
         }
@@ -303,6 +311,19 @@ impl Settings {
                 ));
             }
             Some(overlaps) => overlaps == "merge",
+            None => !s.even_odd,
+        };
+        // Joined unless the fill is even-odd, under which a group's outlines drawn
+        // together would cancel where they overlap.
+        s.join_instances = match params.given("between").and_then(Value::word) {
+            Some("union") if s.even_odd => {
+                return Err(Error::Input(
+                    "winding: between=union draws overlapping instances as one glyph, \
+                     which fill=evenodd would empty where they overlap"
+                        .into(),
+                ));
+            }
+            Some(between) => between == "union",
             None => !s.even_odd,
         };
         s.bands = match params.get("bands") {
@@ -539,16 +560,17 @@ impl Method for Winding {
             Antialiasing::Rays => Layout::Rays,
             Antialiasing::Area => Layout::Area,
         };
+        let scene = scene.joined_if(self.settings.join_instances);
         let merged;
         let outlines = if self.settings.merge_overlaps {
             merged = scene.with_overlaps_merged();
             &merged
         } else {
-            scene
+            &scene
         };
         let data = GlyphData::of_scene(outlines, band_count, layout);
         gpu.catching_errors("preparing 'winding'", || {
-            let instances = Instances::new(gpu, scene);
+            let instances = Instances::new(gpu, &scene);
             let storage = wgpu::BufferUsages::STORAGE;
             let buffers = [
                 gpu.buffer_of("winding glyphs", &data.glyphs, storage),

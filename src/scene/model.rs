@@ -1,6 +1,5 @@
 //! A scene: glyph instances (which glyph, where) and the set of distinct glyphs they
-//! use. Methods build their GPU data once per distinct glyph and reuse it for every
-//! instance and frame.
+//! use, as shaped text, a glyph by its id or synthetic outlines.
 
 use std::collections::HashMap;
 use std::sync::{Arc, OnceLock};
