@@ -210,6 +210,9 @@ fn every_overlay_toggles_and_draws_or_is_greyed_with_a_reason() {
     for method in gpu_methods() {
         settings.panes[0] = PaneSettings::method(method);
         let mut harness = harness(settings.clone());
+        // Tall enough that the overlay row of the method with the most parameters
+        // (sdf-cells) is on screen, where a click reaches it.
+        harness.set_size(egui::vec2(explorer::SIZE[0], 1000.0));
         let plain = settle(&mut harness);
         // One glyph drawn by its id is not text: glyphon, which lays text out, says so.
         if let Some(problem) = harness.state().pane_problem(0) {
