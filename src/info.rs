@@ -104,7 +104,9 @@ pub fn run(options: &InfoOptions) -> Result<String, Error> {
 /// before it writes figures that measure a CPU.
 pub fn gpu(adapter: Option<&str>, require_hardware: bool) -> Result<String, Error> {
     let gpu = GpuContext::open(adapter)?;
-    let info = gpu.adapter_info();
+    let info = gpu
+        .adapter_info()
+        .ok_or_else(|| Error::Internal("an adapter glyphscope opened has its info".into()))?;
     if require_hardware && info.device_type == wgpu::DeviceType::Cpu {
         return Err(Error::Input(format!(
             "the adapter is a CPU implementation, not a GPU: {} (device type Cpu); \

@@ -27,6 +27,7 @@ pub mod scene;
 pub mod shaping;
 pub mod stability;
 pub mod survey;
+pub mod text;
 pub mod view_args;
 
 /// Every failure the core reports. Each message is one line a user can act on.

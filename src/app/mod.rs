@@ -103,9 +103,11 @@ pub fn wgpu_setup() -> egui_wgpu::WgpuSetup {
 }
 
 /// eframe's setup on a device already open: the app draws on `gpu`'s device (the
-/// tests' one device per test binary).
+/// tests' one device per test binary), which glyphscope opened (so it has its adapter).
 pub fn wgpu_setup_on(gpu: &GpuContext) -> egui_wgpu::WgpuSetup {
-    let (instance, adapter) = gpu.instance_and_adapter();
+    let (instance, adapter) = gpu
+        .instance_and_adapter()
+        .expect("a device glyphscope opened keeps its adapter");
     egui_wgpu::WgpuSetup::Existing(egui_wgpu::WgpuSetupExisting {
         instance: instance.clone(),
         adapter: adapter.clone(),

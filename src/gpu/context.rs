@@ -9,8 +9,9 @@ use crate::Error;
 pub struct GpuContext {
     pub device: wgpu::Device,
     pub queue: wgpu::Queue,
-    adapter: wgpu::Adapter,
-    instance: wgpu::Instance,
+    /// None for a device a library caller gave (`glyphscope::text`): only the device
+    /// and queue are needed to draw.
+    adapter: Option<(wgpu::Instance, wgpu::Adapter)>,
 }
 
 /// The features `time_frames` needs: timestamps written on the command encoder, around
@@ -46,8 +47,7 @@ impl GpuContext {
         Ok(GpuContext {
             device,
             queue,
-            adapter,
-            instance,
+            adapter: Some((instance, adapter)),
         })
     }
 
@@ -75,27 +75,42 @@ impl GpuContext {
         GpuContext {
             device,
             queue,
-            adapter,
-            instance,
+            adapter: Some((instance, adapter)),
+        }
+    }
+
+    /// Wraps a device and queue a library caller opened (`glyphscope::text`): what
+    /// drawing needs, without the adapter a report would name.
+    pub fn from_device_and_queue(device: wgpu::Device, queue: wgpu::Queue) -> Self {
+        GpuContext {
+            device,
+            queue,
+            adapter: None,
         }
     }
 
     /// The instance and adapter the device came from, for handing the same device to
     /// a UI (the app's tests draw the explorer on the device their checks use).
-    pub fn instance_and_adapter(&self) -> (&wgpu::Instance, &wgpu::Adapter) {
-        (&self.instance, &self.adapter)
+    /// None for a device a library caller gave.
+    pub fn instance_and_adapter(&self) -> Option<(&wgpu::Instance, &wgpu::Adapter)> {
+        self.adapter
+            .as_ref()
+            .map(|(instance, adapter)| (instance, adapter))
     }
 
     /// The adapter's name, backend and driver, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)
     /// (Vulkan; driver llvmpipe, Mesa 22.3.6 (LLVM 15.0.6))": every report names it.
     pub fn adapter_name(&self) -> String {
-        describe(&self.adapter)
+        match &self.adapter {
+            Some((_, adapter)) => describe(adapter),
+            None => "the caller's device (adapter not given)".into(),
+        }
     }
 
     /// What the adapter says of itself: its device type tells a CPU implementation
     /// (lavapipe, SwiftShader) from a GPU.
-    pub fn adapter_info(&self) -> wgpu::AdapterInfo {
-        self.adapter.get_info()
+    pub fn adapter_info(&self) -> Option<wgpu::AdapterInfo> {
+        self.adapter.as_ref().map(|(_, adapter)| adapter.get_info())
     }
 
     /// Whether `time_frames` can measure GPU time on this device.

@@ -24,7 +24,27 @@ pub struct GpuInstance {
     to_image: [[f32; 4]; 3],
     to_local: [[f32; 4]; 3],
     glyph: u32,
-    _pad: [u32; 3],
+    /// Premultiplied colour as 16-bit unorm pairs (rg, ba), for text drawn in colour.
+    colour: [u32; 2],
+    _pad: u32,
+}
+
+impl GpuInstance {
+    /// Glyph `glyph` drawn through `to_image` (local font units to image pixels) in
+    /// `colour` (premultiplied rgba, each in 0..=1; a coverage target ignores it).
+    pub fn new(to_image: &DMat3, glyph: u32, colour: [f32; 4]) -> GpuInstance {
+        let unorm = |v: f32| (v.clamp(0.0, 1.0) * 65535.0).round() as u32;
+        GpuInstance {
+            to_image: columns(to_image),
+            to_local: columns(&to_image.inverse()),
+            glyph,
+            colour: [
+                unorm(colour[0]) | unorm(colour[1]) << 16,
+                unorm(colour[2]) | unorm(colour[3]) << 16,
+            ],
+            _pad: 0,
+        }
+    }
 }
 
 fn columns(m: &DMat3) -> [[f32; 4]; 3] {
@@ -53,17 +73,51 @@ impl Instances {
             .iter()
             .map(|i| (i.position, i.glyph, scene.glyphs[i.glyph as usize].bounds))
             .collect();
-        let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("glyph instances"),
-            // A binding cannot be empty.
-            size: (placed.len().max(1) * size_of::<GpuInstance>()) as u64,
-            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
+        Instances::with_room(gpu, scene.units_per_em, placed)
+    }
+
+    /// Instances their caller places itself, each through its own transform (text runs:
+    /// [`write`](Self::write)), with room for `capacity` to start with.
+    pub fn placed_by_caller(gpu: &GpuContext, capacity: usize) -> Instances {
+        let mut instances = Instances::with_room(gpu, 1.0, Vec::new());
+        instances.grow(gpu, capacity);
+        instances
+    }
+
+    fn with_room(
+        gpu: &GpuContext,
+        units_per_em: f64,
+        placed: Vec<(DVec2, u32, Rect)>,
+    ) -> Instances {
         let frame = gpu.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("frame"),
             size: size_of::<[f32; 2]>() as u64,
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let (buffer, bind_group) = Instances::storage(gpu, &frame, placed.len());
+        Instances {
+            units_per_em,
+            staging: Vec::with_capacity(placed.len()),
+            written: Vec::with_capacity(placed.len()),
+            placed,
+            buffer,
+            frame,
+            bind_group,
+        }
+    }
+
+    /// A buffer with room for `count` instances (a binding cannot be empty: at least
+    /// one) and the bind group of it and `frame`.
+    fn storage(
+        gpu: &GpuContext,
+        frame: &wgpu::Buffer,
+        count: usize,
+    ) -> (wgpu::Buffer, wgpu::BindGroup) {
+        let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("glyph instances"),
+            size: (count.max(1) * size_of::<GpuInstance>()) as u64,
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
         let bind_group = kit::bind_group(
@@ -72,15 +126,31 @@ impl Instances {
             &kit::frame_layout(gpu),
             &[frame.as_entire_binding(), buffer.as_entire_binding()],
         );
-        Instances {
-            units_per_em: scene.units_per_em,
-            staging: Vec::with_capacity(placed.len()),
-            written: Vec::with_capacity(placed.len()),
-            placed,
-            buffer,
-            frame,
-            bind_group,
+        (buffer, bind_group)
+    }
+
+    /// Makes room for `count` instances, doubling the buffer when it is too small.
+    fn grow(&mut self, gpu: &GpuContext, count: usize) {
+        let room = self.buffer.size() as usize / size_of::<GpuInstance>();
+        if count > room {
+            let (buffer, bind_group) = Instances::storage(gpu, &self.frame, count.max(2 * room));
+            self.buffer = buffer;
+            self.bind_group = bind_group;
         }
+    }
+
+    /// Writes `items` as the instances to draw and `size` as the target's, for
+    /// instances placed by their caller; returns the bytes uploaded.
+    pub fn write(&mut self, gpu: &GpuContext, size: [u32; 2], items: &[GpuInstance]) -> u64 {
+        self.grow(gpu, items.len());
+        let size = size.map(|v| v as f32);
+        gpu.queue
+            .write_buffer(&self.frame, 0, bytemuck::cast_slice(&size));
+        if !items.is_empty() {
+            gpu.queue
+                .write_buffer(&self.buffer, 0, bytemuck::cast_slice(items));
+        }
+        (size_of_val(&size) + size_of_val(items)) as u64
     }
 
     /// Writes this frame's transforms for the instances whose bounds, grown by `margin`
@@ -110,12 +180,7 @@ impl Instances {
             if !Camera::project_bounds(&to_image, &bounds)?.overlaps(&view) {
                 continue;
             }
-            let instance = GpuInstance {
-                to_image: columns(&to_image),
-                to_local: columns(&to_image.inverse()),
-                glyph,
-                _pad: [0; 3],
-            };
+            let instance = GpuInstance::new(&to_image, glyph, [0.0; 4]);
             keyed.push((key(glyph, &to_image), index, instance));
         }
         // Stable: within a group, instances keep the scene's order.

@@ -27,6 +27,7 @@ pub mod area;
 mod bands;
 pub mod cost;
 mod overlaps;
+pub mod text;
 
 pub use bands::{BandCount, GlyphData, Layout, MAX_BANDS};
 
@@ -37,7 +38,7 @@ use super::{CurveCost, Method, Overlay};
 use crate::Error;
 use crate::camera::Camera;
 use crate::geometry::{Rect, keeps_axes, steps_lean_apart};
-use crate::gpu::kit::{self, PipelineBuilder, Slot};
+use crate::gpu::kit::{self, ColorOut, PipelineBuilder, Slot};
 use crate::gpu::shaders::Shader;
 use crate::gpu::{Channels, CoverageTarget, GpuContext};
 use crate::scene::Scene;
@@ -422,6 +423,8 @@ enum Output {
     /// The cost breakdown's counting passes ([`cost`]).
     CurveTally,
     FragmentTally,
+    /// Premultiplied colour over a caller's target of this format (`text`).
+    Text(wgpu::TextureFormat),
 }
 
 impl Output {
@@ -433,6 +436,7 @@ impl Output {
             Output::CurveCount => 3.0,
             Output::CurveTally => 4.0,
             Output::FragmentTally => 5.0,
+            Output::Text(_) => 6.0,
         }
     }
 }
@@ -502,9 +506,11 @@ impl Winding {
         ];
         let module = SHADER.module(&gpu.device);
         let layout = &self.layout(gpu).1;
-        let pipeline = PipelineBuilder::new(NAME, layout, &module)
-            .constants(&constants)
-            .build(&gpu.device, channels);
+        let mut builder = PipelineBuilder::new(NAME, layout, &module).constants(&constants);
+        if let Output::Text(format) = output {
+            builder = builder.color(ColorOut::Over(format));
+        }
+        let pipeline = builder.build(&gpu.device, channels);
         self.pipelines.push((key, pipeline.clone()));
         pipeline
     }
