@@ -78,7 +78,7 @@ pub fn merge_overlaps(outline: &Outline, units_per_em: f64) -> Result<Option<Out
 }
 
 /// Whether the areas the nonzero rule fills in `a` and in `b` share more than rounding
-/// (the same [`SAME_AREA_EM2`] as [`merge_overlaps`]): two glyphs whose ink overlaps,
+/// (the same tolerance as [`merge_overlaps`], 1e-12 em²): two glyphs whose ink overlaps,
 /// whose coverages therefore do not add. Touching along an edge or at a point shares no
 /// area and is not an overlap (box-filter coverage of the two adds exactly there).
 pub fn inks_overlap(a: &Outline, b: &Outline, units_per_em: f64) -> Result<bool, String> {
