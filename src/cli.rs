@@ -170,6 +170,11 @@ pub struct BenchArgs {
     /// scenes page and tiny unless --scenes names others; no --methods).
     #[arg(long, conflicts_with_all = ["methods", "scaling_points"])]
     pub harness: bool,
+    /// Only what the text library (`glyphscope::text`) costs per frame, beside the
+    /// `winding` row, the atlas and glyphon (library.md; scenes page and rotated unless
+    /// --scenes names others; no --methods)
+    #[arg(long, conflicts_with_all = ["harness", "methods"])]
+    pub library: bool,
     #[command(flatten)]
     pub adapter: AdapterArgs,
 }
@@ -287,6 +292,17 @@ pub fn run_survey(args: &SurveyArgs) -> Result<bool, Error> {
 /// `glyphscope bench`: runs the bench and writes its outputs; the path of the report on
 /// stdout.
 pub fn run_bench(args: &BenchArgs) -> Result<(), Error> {
+    if args.library {
+        let report = crate::bench::library::run_to(
+            &args.scenes,
+            args.quick,
+            args.frames,
+            args.adapter.adapter.as_deref(),
+            &args.out,
+        )?;
+        println!("{}", report.display());
+        return Ok(());
+    }
     if args.harness {
         let report = crate::bench::harness::run_to(
             &args.scenes,

@@ -29,7 +29,8 @@ pub struct ZoomApp {
     pub scene_rect: egui::Rect,
     /// Scene points to screen points, as the last frame drew them.
     pub scene_to_screen: Mat3,
-    /// The target's format, as eframe chose it.
+    /// The target's format, as eframe chose it (its test reads coverage back by it).
+    #[allow(dead_code)]
     pub format: wgpu::TextureFormat,
 }
 

@@ -29,6 +29,7 @@
 //! outline points.
 
 pub mod harness;
+pub mod library;
 pub mod method_settings;
 pub mod motion;
 pub mod numbers;

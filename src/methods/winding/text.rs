@@ -160,6 +160,13 @@ impl TextRenderer {
         Ok(FontId(self.fonts.len() - 1))
     }
 
+    /// Adds a font glyphscope has already read (its variations kept): the bench's way
+    /// to draw its scenes' fonts through the library.
+    pub(crate) fn add_parsed_font(&mut self, font: Font) -> FontId {
+        self.fonts.push(font);
+        FontId(self.fonts.len() - 1)
+    }
+
     /// Lays out and places `runs` for a target of `viewport` pixels, uploading only what
     /// changed since the last call. Bad input — an unknown font, empty content, a glyph
     /// id the font lacks, a size or colour out of range, a transform that is not finite,
