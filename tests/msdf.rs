@@ -28,7 +28,8 @@ const SCREEN_RANGE: f64 = RANGE * SIZE / EM_PX;
 /// - the byte each channel is stored in: sd off by up to 0.5/255;
 /// - the filter's weights, which GPUs hold to 8 bits: up to half of 1/256 of the
 ///   difference between neighbouring texels, 1/RANGE;
-/// each times R, and 1/1000 for the half-float target. Along an axis the ramp one pixel
+///
+/// Each times R, and 1/1000 for the half-float target. Along an axis the ramp one pixel
 /// wide *is* the box filter; at θ to the axes it is not: with d the distance from the
 /// pixel's centre to the edge, the box filter covers (1 + √2 d)²/2 at 45° where the
 /// ramp gives d + 1/2, at most (√2 − 1)²/4 = 0.0429 apart (d = −(√2 − 1)/2).

@@ -132,7 +132,7 @@ impl Explorer {
 
     /// What a first start shows: the default side-by-side (a method beside the
     /// reference) with the text small, magnified on pane A's worst pixel
-    /// ([`OPENING`](super::canvas::OPENING)).
+    /// (`OPENING`).
     pub fn open_as_on_a_first_start(&mut self) {
         self.auto_fit.opening = true;
     }

@@ -127,7 +127,7 @@ pub enum FontChoice {
     /// A .ttf/.otf opened from disk.
     File(PathBuf),
     /// A font given as bytes, with no path: the web page's file picker or a file dropped
-    /// on the page. The bytes are not remembered between runs (see [`sanitize`]).
+    /// on the page. The bytes are not remembered between runs (see `sanitize`).
     Opened {
         name: String,
         #[serde(skip)]

@@ -118,6 +118,9 @@ impl Method for Library {
     }
 }
 
+/// How a case's method is made, anew in each round.
+type MakeMethod = Box<dyn Fn() -> Result<Box<dyn Method>, Error>>;
+
 /// One case measured.
 struct Timed {
     name: &'static str,
@@ -182,10 +185,7 @@ pub fn run_to(
     for bench_scene in &bench_scenes {
         let (scene, camera) = bench_scene.args.build()?;
         let cache = [baseline_cache_param(auto_cache_size(camera.size_px_per_em))];
-        let make: [(
-            &'static str,
-            Box<dyn Fn() -> Result<Box<dyn Method>, Error>>,
-        ); 4] = [
+        let make: [(&'static str, MakeMethod); 4] = [
             (
                 "glyphscope::text",
                 Box::new(|| Ok(Box::new(Library::new()) as Box<dyn Method>)),

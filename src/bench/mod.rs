@@ -13,7 +13,7 @@
 //!   [`motion`] (every method's temporal error as text drifts and turns: page, tiny);
 //! - [`harness`]: `bench --harness` alone, the atlas's frame step by step against
 //!   glyphon's (it names both: it breaks the baseline's frame down);
-//! - [`run`]: measuring the standard scenes through the same function as
+//! - `run`: measuring the standard scenes through the same function as
 //!   `render --stats`, and each section where it applies, with the numbers of
 //!   [`crate::effort::Effort`] that `--quick` picks;
 //! - [`report`] (the Markdown report, its scene tables and each section's part in

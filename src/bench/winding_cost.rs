@@ -1,5 +1,5 @@
 //! Where `winding`'s default (`aa=area`) spends a frame, per scene and view: the counts
-//! behind its cost ([`winding::CostCounts`]) and the time of the shader cut short after each
+//! behind its cost (`winding::CostCounts`) and the time of the shader cut short after each
 //! stage ([`Stage`]), so that each stage's time is the difference from the one before.
 //! Measured in every bench run that includes `winding`; the report's "Where winding's
 //! time goes" section.

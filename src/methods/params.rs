@@ -127,7 +127,8 @@ impl ParamSpec {
     /// What the row accepts, in words: `1 or 4`, `auto, off or a whole number from 1
     /// to 64`, `a number of em from 0 to 0.5`.
     pub fn allowed(&self) -> String {
-        let (mut numbers, words): (Vec<(f64, &str)>, Vec<(f64, &str)>) = self
+        type Parsed<'a> = Vec<(f64, &'a str)>;
+        let (mut numbers, words): (Parsed, Parsed) = self
             .choices
             .iter()
             .map(|c| (c.parse::<f64>().unwrap_or(f64::NAN), *c))

@@ -34,9 +34,9 @@ pub struct CurveLayout {
 impl CurveLayout {
     /// Lays out `outline` (cubics must already be quadratics). Lines become quadratics
     /// with the control point at their midpoint; segments too short in f32 to have a
-    /// direction are merged into the next one ([`contour_quads`]); each contour is
+    /// direction are merged into the next one (`contour_quads`); each contour is
     /// turned so that the fill lies on its right, as font-demo's signed distance assumes
-    /// ([`turn_fill_to_the_right`]).
+    /// (`turn_fill_to_the_right`).
     pub fn new(outline: &Outline) -> CurveLayout {
         let mut contours: Vec<Vec<Quad>> = outline
             .contours

@@ -49,9 +49,9 @@
 //! - left of them G = 0;
 //! - the stretch within P's bounding box, cut out of the curve (blossoming) so that
 //!   every value in it is within a pixel or so of P, adds four ramp integrals, one per
-//!   segment of lo and hi, each over that segment's heights ([`edge_ramp`]): ℓ = u −
+//!   segment of lo and hi, each over that segment's heights (`edge_ramp`): ℓ = u −
 //!   edge(v) is a quadratic in t whose roots cut the heights' stretch into parts of one
-//!   sign, and ∫ ℓ v′ dt over each is a cubic's antiderivative ([`ramp_over`]).
+//!   sign, and ∫ ℓ v′ dt over each is a cubic's antiderivative (`ramp_over`).
 //!
 //! Where P's axes are the image's (no rotation, skew or tilt), P is a rectangle and the
 //! stretch within it is integrated at once ([`across_axis`], the shader's `AXIS`
@@ -354,12 +354,12 @@ fn ramp_over(u: [f64; 3], v: [f64; 3], k: f64, offset: f64, t0: f64, t1: f64) ->
 /// Two 1-forms have P's indicator as their derivative: ω_rows = G dv, the one the bands
 /// need (it vanishes off P's rows and left of P), and ω_square = c(α) c′(β) dβ with c(x)
 /// = clamp(x + ½, 0, 1), P's own. Their difference is closed, so exact: dψ
-/// ([`rows_correction`]), and a curve adds ∫ ω_square + ψ(end) − ψ(start). Where the
+/// (`rows_correction`), and a curve adds ∫ ω_square + ψ(end) − ψ(start). Where the
 /// curve turns in β it adds instead ∫ ω_swapped + φ(end) − φ(start), ω_swapped =
 /// −c(β) c′(α) dα and φ = c(α) c(β), since ω_square − ω_swapped = dφ. A curve monotone
 /// in x and y turns in α or in β, not both, when P's steps lean apart (its tangent
 /// stays in one quadrant, and only one step's line runs through it), so the form it is
-/// integrated by keeps its edge coordinate monotone ([`clamp_term`]).
+/// integrated by keeps its edge coordinate monotone (`clamp_term`).
 pub fn across_square(c: Quad, f: &PixelFrame) -> f64 {
     let square = c.map(|p| DVec2::new(f.alpha_of.dot(p), f.beta_of.dot(p)));
     let (alpha, beta) = (square.map(|p| p.x), square.map(|p| p.y));

@@ -74,7 +74,7 @@ pub enum Layout {
     /// For rays: its horizontal bands, its vertical bands, then one band listing all its
     /// curves (brute force, and the class overlay).
     Rays,
-    /// For `aa=area`: its horizontal bands, each reaching [`AREA_REACH`] bands beyond its
+    /// For `aa=area`: its horizontal bands, each reaching `AREA_REACH` bands beyond its
     /// boundaries; the band of all its curves; then the coarser levels, each with bands
     /// twice as tall (and as far apart) as the last, down to a single band.
     Area,

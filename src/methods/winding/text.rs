@@ -387,10 +387,10 @@ fn check_run(k: usize, run: &TextRun<'_>, fonts: usize) -> Result<DMat3, Error> 
             run.transform.to_cols_array()
         )));
     }
-    if let Content::Glyphs(glyphs) = run.content {
-        if !glyphs.iter().all(|g| g.x.is_finite() && g.y.is_finite()) {
-            return Err(bad("a glyph's position is not finite".into()));
-        }
+    if let Content::Glyphs(glyphs) = run.content
+        && !glyphs.iter().all(|g| g.x.is_finite() && g.y.is_finite())
+    {
+        return Err(bad("a glyph's position is not finite".into()));
     }
     Ok(m)
 }
