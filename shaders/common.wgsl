@@ -17,10 +17,6 @@ struct GlyphInstance {
     to_local: mat3x3<f32>,
     // Index of the distinct glyph this instance draws.
     glyph: u32,
-    // Its colour, premultiplied, as 16-bit unorm pairs (rg, ba): read only where text is
-    // drawn in colour (`glyphscope::text`); coverage targets leave it 0.
-    colour_rg: u32,
-    colour_ba: u32,
 }
 
 struct Frame {

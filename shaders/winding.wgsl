@@ -100,7 +100,6 @@ struct WindingQuad {
     // band_count_h, band_count_v, first_band
     @location(4) @interpolate(flat) bands: vec3<u32>,
     @location(5) @interpolate(flat) units_per_em: f32,
-    @location(6) @interpolate(flat) colour: vec4<f32>,
 }
 
 // One quad per instance over the glyph's control-point bounds.
@@ -110,8 +109,7 @@ fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u
     let g = glyphs[inst.glyph];
     let q = glyph_quad(inst, g.bounds.xy, g.bounds.zw, vertex, frame.size, true);
     let counts = vec3<u32>(g.band_count_h, g.band_count_v, g.first_band);
-    let colour = vec4<f32>(unpack2x16unorm(inst.colour_rg), unpack2x16unorm(inst.colour_ba));
-    return WindingQuad(q.position, q.to_local_0, q.to_local_1, q.to_local_2, g.bounds, counts, g.units_per_em, colour);
+    return WindingQuad(q.position, q.to_local_0, q.to_local_1, q.to_local_2, g.bounds, counts, g.units_per_em);
 }
 
 // A pixel's coverage, and how many curves it evaluated (the cost overlays).
@@ -187,11 +185,6 @@ fn fs_main(in: WindingQuad) -> @location(0) vec4<f32> {
     }
     if OVERLAY == 5u {
         return vec4<f32>(1.0, f32(coverage == 0.0), f32(coverage == 1.0), f32(breakdown_tally.z));
-    }
-    // Text in colour (`glyphscope::text`): the instance's premultiplied colour times the
-    // exact coverage, blended over the caller's target.
-    if OVERLAY == 6u {
-        return in.colour * coverage;
     }
     return vec4<f32>(coverage);
 }

@@ -46,7 +46,8 @@ fn encode(l: f64) -> f64 {
 fn draw(text: &mut TextRenderer, runs: &[TextRun<'_>]) -> Vec<u8> {
     let gpu = common::gpu();
     let (device, queue) = (&gpu.device, &gpu.queue);
-    text.prepare([WIDTH, HEIGHT], runs).unwrap();
+    let mut encoder = device.create_command_encoder(&Default::default());
+    text.prepare(&mut encoder, [WIDTH, HEIGHT], runs).unwrap();
     let size = wgpu::Extent3d {
         width: WIDTH,
         height: HEIGHT,
@@ -70,7 +71,6 @@ fn draw(text: &mut TextRenderer, runs: &[TextRun<'_>]) -> Vec<u8> {
         usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
         mapped_at_creation: false,
     });
-    let mut encoder = device.create_command_encoder(&Default::default());
     {
         // The clear colour is linear: the target encodes it.
         let [r, g, b] = BACKGROUND.map(|c| decode(f64::from(c)));
@@ -156,6 +156,13 @@ fn worst_excess(pixels: &[u8], layers: &[(&[f32], [f32; 3])]) -> (f64, usize) {
     (worst, at)
 }
 
+/// An encoder for a `prepare` whose passes the test does not submit.
+fn encoder() -> wgpu::CommandEncoder {
+    common::gpu()
+        .device
+        .create_command_encoder(&Default::default())
+}
+
 fn renderer() -> TextRenderer {
     let gpu = common::gpu();
     TextRenderer::new(&gpu.device, &gpu.queue, FORMAT)
@@ -202,13 +209,35 @@ fn text_over_a_background_is_the_reference_composited() {
     let coverage_b = reference_coverage(&latin, "Quixotic & gjy", 30.0, DVec2::new(12.0, 95.75));
     let (worst, at) = worst_excess(&both, &[(&coverage_a, red), (&coverage_b, yellow)]);
     println!("two runs: the worst pixel is {worst:.2e} from the bound (≤ 0 holds)");
-    // Without the text (the background alone), the check fails: it can.
-    let (blank, _) = worst_excess(&draw(&mut text, &[]), &[(&coverage_a, red)]);
-    assert!(blank > 0.0, "{blank}");
     assert!(
         worst <= 0.0,
         "two runs: pixel {at} past the bound by {worst}"
     );
+    // Small text whose glyphs share pixels (at 9 px/em, "rn" and "ll" meet within one):
+    // each run's coverage adds its glyphs before its colour is blended, so the shared
+    // pixels are their union, not their colours laid over each other.
+    let small = TextRun {
+        content: Content::Text("minimum rnrn illlli wavvy"),
+        size_px: 9.0,
+        transform: Mat3::from_translation(vec2(5.5, 60.25)),
+        ..first
+    };
+    let tight = draw(&mut text, &[small]);
+    let coverage_small = reference_coverage(
+        &dejavu,
+        "minimum rnrn illlli wavvy",
+        9.0,
+        DVec2::new(5.5, 60.25),
+    );
+    let (worst, at) = worst_excess(&tight, &[(&coverage_small, red)]);
+    println!("glyphs sharing pixels: the worst pixel is {worst:.2e} from the bound");
+    assert!(
+        worst <= 0.0,
+        "9 px/em: pixel {at} past the bound by {worst}"
+    );
+    // Without the text (the background alone), the check fails: it can.
+    let (blank, _) = worst_excess(&draw(&mut text, &[]), &[(&coverage_a, red)]);
+    assert!(blank > 0.0, "{blank}");
     // The text is there: the check is not of a blank frame.
     let covered = coverage_a.iter().filter(|&&c| c > 0.5).count();
     assert!(covered > 500, "{covered}");
@@ -230,7 +259,8 @@ fn unchanged_frames_upload_nothing_and_moving_text_only_its_instances() {
         color: [0.0, 0.0, 0.0, 1.0],
     };
     let words = Content::Text("spin spin");
-    text.prepare([WIDTH, HEIGHT], &[run(0.0, words)]).unwrap();
+    text.prepare(&mut encoder(), [WIDTH, HEIGHT], &[run(0.0, words)])
+        .unwrap();
     let first = text.last_uploads();
     assert!(
         first.glyph_bytes > 0 && first.instance_bytes > 0,
@@ -238,22 +268,35 @@ fn unchanged_frames_upload_nothing_and_moving_text_only_its_instances() {
     );
     let glyphs = text.prepared_glyphs();
     assert_eq!(glyphs, 4, "s p i n: each glyph once");
-    text.prepare([WIDTH, HEIGHT], &[run(0.0, words)]).unwrap();
+    text.prepare(&mut encoder(), [WIDTH, HEIGHT], &[run(0.0, words)])
+        .unwrap();
     assert_eq!(text.last_uploads(), Default::default());
     for frame in 1..5 {
-        text.prepare([WIDTH, HEIGHT], &[run(frame as f32 * 0.3, words)])
-            .unwrap();
+        text.prepare(
+            &mut encoder(),
+            [WIDTH, HEIGHT],
+            &[run(frame as f32 * 0.3, words)],
+        )
+        .unwrap();
         let uploads = text.last_uploads();
         assert_eq!(uploads.glyph_bytes, 0, "frame {frame}");
         assert!(uploads.instance_bytes > 0, "frame {frame}");
     }
     // New glyphs are prepared and uploaded; known ones are not prepared again.
-    text.prepare([WIDTH, HEIGHT], &[run(0.0, Content::Text("spins pins"))])
-        .unwrap();
+    text.prepare(
+        &mut encoder(),
+        [WIDTH, HEIGHT],
+        &[run(0.0, Content::Text("spins pins"))],
+    )
+    .unwrap();
     assert_eq!(text.prepared_glyphs(), glyphs, "no new letter");
     assert_eq!(text.last_uploads().glyph_bytes, 0);
-    text.prepare([WIDTH, HEIGHT], &[run(0.0, Content::Text("spun"))])
-        .unwrap();
+    text.prepare(
+        &mut encoder(),
+        [WIDTH, HEIGHT],
+        &[run(0.0, Content::Text("spun"))],
+    )
+    .unwrap();
     assert_eq!(text.prepared_glyphs(), glyphs + 1, "u");
     assert!(text.last_uploads().glyph_bytes > 0);
 }
@@ -340,7 +383,7 @@ fn bad_input_is_an_error_not_a_panic() {
             "behind the eye",
         ),
     ] {
-        match text.prepare([WIDTH, HEIGHT], &[good, run]) {
+        match text.prepare(&mut encoder(), [WIDTH, HEIGHT], &[good, run]) {
             Err(Error::Input(message)) => {
                 assert!(message.contains(expect), "{what}: {message}");
                 assert!(!message.contains('\n'), "{what}: one line");
@@ -349,7 +392,7 @@ fn bad_input_is_an_error_not_a_panic() {
         }
     }
     assert!(
-        text.prepare([0, HEIGHT], &[good]).is_err(),
+        text.prepare(&mut encoder(), [0, HEIGHT], &[good]).is_err(),
         "an empty viewport"
     );
     let unknown = TextRun {
@@ -358,6 +401,10 @@ fn bad_input_is_an_error_not_a_panic() {
             .unwrap(),
         ..good
     };
-    assert!(text.prepare([WIDTH, HEIGHT], &[unknown]).is_ok());
-    text.prepare([WIDTH, HEIGHT], &[good]).unwrap();
+    assert!(
+        text.prepare(&mut encoder(), [WIDTH, HEIGHT], &[unknown])
+            .is_ok()
+    );
+    text.prepare(&mut encoder(), [WIDTH, HEIGHT], &[good])
+        .unwrap();
 }

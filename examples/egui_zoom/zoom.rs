@@ -131,7 +131,7 @@ impl egui_wgpu::CallbackTrait for LibraryLabels {
         _device: &wgpu::Device,
         _queue: &wgpu::Queue,
         screen: &egui_wgpu::ScreenDescriptor,
-        _encoder: &mut wgpu::CommandEncoder,
+        encoder: &mut wgpu::CommandEncoder,
         resources: &mut egui_wgpu::CallbackResources,
     ) -> Vec<wgpu::CommandBuffer> {
         let Some(library) = resources.get_mut::<Library>() else {
@@ -154,7 +154,7 @@ impl egui_wgpu::CallbackTrait for LibraryLabels {
                 }
             })
             .collect();
-        if let Err(e) = library.text.prepare(screen.size_in_pixels, &runs) {
+        if let Err(e) = library.text.prepare(encoder, screen.size_in_pixels, &runs) {
             eprintln!("egui_zoom: {e}");
         }
         Vec::new()

@@ -87,7 +87,8 @@ impl Drawing {
             transform,
             color: [0.08, 0.08, 0.12, 1.0],
         };
-        self.text.prepare([w, h], &[run])?;
+        let mut encoder = self.device.create_command_encoder(&Default::default());
+        self.text.prepare(&mut encoder, [w, h], &[run])?;
         let frame = match self.surface.get_current_texture() {
             wgpu::CurrentSurfaceTexture::Success(frame) => frame,
             wgpu::CurrentSurfaceTexture::Suboptimal(frame) => {
@@ -101,7 +102,6 @@ impl Drawing {
             }
         };
         let view = frame.texture.create_view(&Default::default());
-        let mut encoder = self.device.create_command_encoder(&Default::default());
         let ops = wgpu::Operations {
             load: wgpu::LoadOp::Clear(wgpu::Color {
                 r: 0.93,

@@ -2,9 +2,13 @@
 //! else's app, beside the atlas baseline and glyphon (what people ship) in one run, on
 //! the bench's scenes.
 //!
-//! The library is driven as an app drives it: each frame its runs are prepared (the
-//! same runs: nothing uploaded) and drawn into a pass, white text over black, into the
-//! bench's coverage target, where premultiplied white over black is the coverage itself
+//! The library is driven as an app drives it: each frame its runs are prepared and
+//! composited in a pass, white text over black, into the bench's coverage target. Two
+//! ways: text *still* (the same runs as the last frame's: nothing uploaded or drawn but
+//! the composite, as in an app whose text does not move) and text *moving* (the run
+//! shifted by 1/64 px every other frame: its coverage drawn anew each frame, what the
+//! `winding` row does every frame). Premultiplied white over black is the coverage
+//! itself, where premultiplied white over black is the coverage itself
 //! (so its error is measured as every method's is). The `winding` row, the same shader
 //! drawing coverage, is timed beside it: the difference is the library's own harness.
 
@@ -35,6 +39,9 @@ pub const DEFAULT_SCENES: &[&str] = &["page", "rotated"];
 
 /// `glyphscope::text` as a method: the scene's glyphs as one run, placed by the camera.
 struct Library {
+    /// Shift the run a little every other frame, so that each frame draws coverage.
+    moving: bool,
+    frame: u64,
     text: Option<(TextRenderer, FontId)>,
     glyphs: Vec<PositionedGlyph>,
     font: Option<crate::font::Font>,
@@ -42,8 +49,10 @@ struct Library {
 }
 
 impl Library {
-    fn new() -> Library {
+    fn new(moving: bool) -> Library {
         Library {
+            moving,
+            frame: 0,
             text: None,
             glyphs: Vec::new(),
             font: None,
@@ -54,7 +63,7 @@ impl Library {
 
 impl Method for Library {
     fn name(&self) -> &'static str {
-        "glyphscope::text"
+        if self.moving { MOVING } else { STILL }
     }
 
     fn prepare(&mut self, _gpu: &GpuContext, scene: &Scene) -> Result<(), Error> {
@@ -98,7 +107,14 @@ impl Method for Library {
         };
         // The camera's map of glyph space, from the run's text space (font units, y
         // down): flip y back.
-        let to_image = camera.glyph_to_image(self.units_per_em, glam::DVec2::ZERO)
+        self.frame += 1;
+        let shift = if self.moving && self.frame % 2 == 1 {
+            1.0 / 64.0
+        } else {
+            0.0
+        };
+        let to_image = DMat3::from_translation(glam::DVec2::new(shift, 0.0))
+            * camera.glyph_to_image(self.units_per_em, glam::DVec2::ZERO)
             * DMat3::from_cols(DVec3::X, -DVec3::Y, DVec3::Z);
         let run = TextRun {
             font: *font,
@@ -107,7 +123,7 @@ impl Method for Library {
             transform: Mat3::from_cols_array(&to_image.to_cols_array().map(|v| v as f32)),
             color: [1.0; 4],
         };
-        text.prepare([camera.width, camera.height], &[run])?;
+        text.prepare(encoder, [camera.width, camera.height], &[run])?;
         let mut pass = target.clearing_pass(encoder, "glyphscope::text");
         text.render(&mut pass);
         Ok(())
@@ -117,6 +133,9 @@ impl Method for Library {
         0
     }
 }
+
+const STILL: &str = "glyphscope::text, text still";
+const MOVING: &str = "glyphscope::text, text moving";
 
 /// How a case's method is made, anew in each round.
 type MakeMethod = Box<dyn Fn() -> Result<Box<dyn Method>, Error>>;
@@ -185,10 +204,14 @@ pub fn run_to(
     for bench_scene in &bench_scenes {
         let (scene, camera) = bench_scene.args.build()?;
         let cache = [baseline_cache_param(auto_cache_size(camera.size_px_per_em))];
-        let make: [(&'static str, MakeMethod); 4] = [
+        let make: [(&'static str, MakeMethod); 5] = [
             (
-                "glyphscope::text",
-                Box::new(|| Ok(Box::new(Library::new()) as Box<dyn Method>)),
+                STILL,
+                Box::new(|| Ok(Box::new(Library::new(false)) as Box<dyn Method>)),
+            ),
+            (
+                MOVING,
+                Box::new(|| Ok(Box::new(Library::new(true)) as Box<dyn Method>)),
             ),
             ("winding", Box::new(|| winding::INFO.create(&[]))),
             ("atlas", Box::new(move || atlas::INFO.create(&cache))),
@@ -231,7 +254,8 @@ pub fn run_to(
                         let times = times.expect("the device has timestamps: checked above");
                         gpu_ms.extend(metrics::median(times.iter().map(|t| t.gpu_ms)));
                         cpu_ms.extend(metrics::median(times.iter().map(|t| t.cpu_ms)));
-                        if timed.error.is_none() {
+                        // The moving run is 1/64 px off the view on every other frame.
+                        if timed.error.is_none() && timed.name != MOVING {
                             let image = frame::render_image(&gpu, method.as_mut(), &camera)?;
                             timed.error =
                                 Some(metrics::compare(&image.clamp_to_union(), &expected)?);

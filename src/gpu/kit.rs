@@ -114,10 +114,6 @@ pub enum ColorOut {
     /// Writes the channels of the mask (a picture's: alpha is coverage), replacing what
     /// was there.
     Replace(wgpu::ColorWrites),
-    /// Premultiplied colour blended over what a caller's target of this format holds
-    /// (text in colour, `glyphscope::text`): the target's kind is the caller's, not a
-    /// coverage target's.
-    Over(wgpu::TextureFormat),
 }
 
 /// One render pipeline drawing into a coverage target (or its multisampled twin). By
@@ -211,11 +207,6 @@ impl<'a> PipelineBuilder<'a> {
                 format: channels.format(),
                 blend: None,
                 write_mask: channels.write_mask(mask),
-            },
-            ColorOut::Over(format) => wgpu::ColorTargetState {
-                format,
-                blend: Some(wgpu::BlendState::PREMULTIPLIED_ALPHA_BLENDING),
-                write_mask: wgpu::ColorWrites::ALL,
             },
         };
         device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {

@@ -24,25 +24,17 @@ pub struct GpuInstance {
     to_image: [[f32; 4]; 3],
     to_local: [[f32; 4]; 3],
     glyph: u32,
-    /// Premultiplied colour as 16-bit unorm pairs (rg, ba), for text drawn in colour.
-    colour: [u32; 2],
-    _pad: u32,
+    _pad: [u32; 3],
 }
 
 impl GpuInstance {
-    /// Glyph `glyph` drawn through `to_image` (local font units to image pixels) in
-    /// `colour` (premultiplied rgba, each in 0..=1; a coverage target ignores it).
-    pub fn new(to_image: &DMat3, glyph: u32, colour: [f32; 4]) -> GpuInstance {
-        let unorm = |v: f32| (v.clamp(0.0, 1.0) * 65535.0).round() as u32;
+    /// Glyph `glyph` drawn through `to_image` (local font units to image pixels).
+    pub fn new(to_image: &DMat3, glyph: u32) -> GpuInstance {
         GpuInstance {
             to_image: columns(to_image),
             to_local: columns(&to_image.inverse()),
             glyph,
-            colour: [
-                unorm(colour[0]) | unorm(colour[1]) << 16,
-                unorm(colour[2]) | unorm(colour[3]) << 16,
-            ],
-            _pad: 0,
+            _pad: [0; 3],
         }
     }
 }
@@ -180,7 +172,7 @@ impl Instances {
             if !Camera::project_bounds(&to_image, &bounds)?.overlaps(&view) {
                 continue;
             }
-            let instance = GpuInstance::new(&to_image, glyph, [0.0; 4]);
+            let instance = GpuInstance::new(&to_image, glyph);
             keyed.push((key(glyph, &to_image), index, instance));
         }
         // Stable: within a group, instances keep the scene's order.

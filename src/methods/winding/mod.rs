@@ -38,7 +38,7 @@ use super::{CurveCost, Method, Overlay};
 use crate::Error;
 use crate::camera::Camera;
 use crate::geometry::{Rect, keeps_axes, steps_lean_apart};
-use crate::gpu::kit::{self, ColorOut, PipelineBuilder, Slot};
+use crate::gpu::kit::{self, PipelineBuilder, Slot};
 use crate::gpu::shaders::Shader;
 use crate::gpu::{Channels, CoverageTarget, GpuContext};
 use crate::scene::Scene;
@@ -128,8 +128,12 @@ pub const INFO: MethodInfo = MethodInfo {
 };
 
 pub const NAME: &str = "winding";
-const SHADER: Shader =
-    crate::method_shader!("winding.wgsl", "winding_rays.wgsl", "winding_area.wgsl");
+const SHADER: Shader = crate::method_shader!(
+    "winding.wgsl",
+    "winding_rays.wgsl",
+    "winding_area.wgsl",
+    "winding_text.wgsl"
+);
 
 /// The overlays `winding` draws.
 pub const OVERLAYS: &[Overlay] = &[Overlay::CurveClasses, Overlay::CostHeatMap];
@@ -423,8 +427,6 @@ enum Output {
     /// The cost breakdown's counting passes ([`cost`]).
     CurveTally,
     FragmentTally,
-    /// Premultiplied colour over a caller's target of this format (`text`).
-    Text(wgpu::TextureFormat),
 }
 
 impl Output {
@@ -436,7 +438,6 @@ impl Output {
             Output::CurveCount => 3.0,
             Output::CurveTally => 4.0,
             Output::FragmentTally => 5.0,
-            Output::Text(_) => 6.0,
         }
     }
 }
@@ -506,11 +507,9 @@ impl Winding {
         ];
         let module = SHADER.module(&gpu.device);
         let layout = &self.layout(gpu).1;
-        let mut builder = PipelineBuilder::new(NAME, layout, &module).constants(&constants);
-        if let Output::Text(format) = output {
-            builder = builder.color(ColorOut::Over(format));
-        }
-        let pipeline = builder.build(&gpu.device, channels);
+        let pipeline = PipelineBuilder::new(NAME, layout, &module)
+            .constants(&constants)
+            .build(&gpu.device, channels);
         self.pipelines.push((key, pipeline.clone()));
         pipeline
     }

@@ -4,10 +4,12 @@
 //!
 //! One implementation: the explorer's `winding` row and this renderer prepare glyphs
 //! with the same [`GlyphData::push`], join overlapping instances and merge overlapping
-//! contours the same way (`between=union`, `overlaps=merge`), and draw with the same
-//! shader and pipelines. The row writes coverage into its own target; here the shader's
-//! `Text` output writes each instance's premultiplied colour times that coverage, blended
-//! over the caller's target, and the caller places each run with its own transform.
+//! contours the same way (`between=union`, `overlaps=merge`), and draw coverage with the
+//! same shader and pipelines into the same kind of half-float target, one layer a run,
+//! its instances added (so glyphs sharing a pixel sum to their union's coverage, as in
+//! the row). `render` then blends each run's colour over the caller's target through its
+//! coverage (`winding_text.wgsl`), once. The caller places each run with its own
+//! transform.
 //!
 //! What is kept between frames: every glyph prepared (per font and outline, so a glyph
 //! met again in any run is not prepared again), every run's layout (per font and
@@ -87,7 +89,7 @@ type RunLayout = Vec<(u32, DVec2)>;
 /// Draws text with `winding`'s exact box-filter coverage into a caller's render pass.
 ///
 /// ```no_run
-/// # fn demo(device: &wgpu::Device, queue: &wgpu::Queue, pass: &mut wgpu::RenderPass<'_>) -> Result<(), glyphscope::Error> {
+/// # fn demo(device: &wgpu::Device, queue: &wgpu::Queue, encoder: &mut wgpu::CommandEncoder, pass: &mut wgpu::RenderPass<'_>) -> Result<(), glyphscope::Error> {
 /// use glyphscope::text::{Content, TextRenderer, TextRun};
 /// let mut text = TextRenderer::new(device, queue, wgpu::TextureFormat::Bgra8UnormSrgb);
 /// let font = text.add_font(std::fs::read("fonts/DejaVuSans.ttf").unwrap())?;
@@ -98,7 +100,7 @@ type RunLayout = Vec<(u32, DVec2)>;
 ///     transform: glam::Mat3::from_translation(glam::vec2(20.0, 60.0)),
 ///     color: [0.1, 0.1, 0.1, 1.0],
 /// };
-/// text.prepare([800, 600], &[run])?;
+/// text.prepare(encoder, [800, 600], &[run])?;
 /// text.render(pass);
 /// # Ok(()) }
 /// ```
@@ -115,10 +117,22 @@ pub struct TextRenderer {
     glyph_group: Option<wgpu::BindGroup>,
     layouts: HashMap<(usize, LayoutKey), RunLayout>,
     instances: Instances,
-    /// What the instance buffer holds: the instances and the target size.
-    written: (Vec<GpuInstance>, [u32; 2]),
-    draws: Vec<(wgpu::RenderPipeline, Range<u32>)>,
+    /// What the instance buffer holds: the instances, the target size and the runs'
+    /// colours.
+    written: (Vec<GpuInstance>, [u32; 2], Vec<[f32; 4]>),
+    /// Each run's coverage, a layer a run, and the composite's bind group over it.
+    layers: Option<Layers>,
+    composite: Option<(wgpu::BindGroupLayout, wgpu::RenderPipeline)>,
     uploads: Uploads,
+}
+
+/// The runs' coverage layers and colours as the composite reads them.
+struct Layers {
+    size: [u32; 2],
+    count: u32,
+    views: Vec<wgpu::TextureView>,
+    colours: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
 }
 
 /// A run's content as a layout cache key: the string, or the glyphs with their positions
@@ -146,8 +160,9 @@ impl TextRenderer {
             glyph_group: None,
             layouts: HashMap::new(),
             instances,
-            written: (Vec::new(), [0, 0]),
-            draws: Vec::new(),
+            written: (Vec::new(), [0, 0], Vec::new()),
+            layers: None,
+            composite: None,
             uploads: Uploads::default(),
         }
     }
@@ -168,11 +183,19 @@ impl TextRenderer {
     }
 
     /// Lays out and places `runs` for a target of `viewport` pixels, uploading only what
-    /// changed since the last call. Bad input — an unknown font, empty content, a glyph
+    /// changed since the last call, and records into `encoder` the passes that draw each
+    /// run's coverage into the renderer's own target (submit it before, or with, the
+    /// encoder of the pass given to [`render`](Self::render); an unchanged frame records
+    /// none). Bad input — an unknown font, empty content, a glyph
     /// id the font lacks, a size or colour out of range, a transform that is not finite,
     /// cannot be inverted or puts text behind the eye — is an [`Error::Input`], and the
     /// last prepared frame stays as it was.
-    pub fn prepare(&mut self, viewport: [u32; 2], runs: &[TextRun<'_>]) -> Result<(), Error> {
+    pub fn prepare(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        viewport: [u32; 2],
+        runs: &[TextRun<'_>],
+    ) -> Result<(), Error> {
         if viewport.contains(&0) {
             return Err(Error::Input(format!(
                 "the viewport is {}×{} pixels: nothing can be drawn into it",
@@ -184,13 +207,14 @@ impl TextRenderer {
             min: DVec2::ZERO,
             max: DVec2::new(f64::from(viewport[0]), f64::from(viewport[1])),
         };
-        let mut staged: Vec<(Variant, GpuInstance)> = Vec::new();
+        let mut staged: Vec<((usize, Variant), GpuInstance)> = Vec::new();
+        let mut colours = Vec::with_capacity(runs.len());
         for (k, run) in runs.iter().enumerate() {
             let to_text = check_run(k, run, self.fonts.len())?;
             let units_per_em = self.fonts[run.font.0].units_per_em();
             let layout = self.layout(run)?;
             let s = f64::from(run.size_px) / units_per_em;
-            let colour = premultiplied(run.color, self.format.is_srgb());
+            colours.push(premultiplied(run.color, self.format.is_srgb()));
             for &(glyph, pen) in &layout {
                 // Font units (y up) to text space (pixels, y down), then the run's map.
                 let local = DMat3::from_cols(
@@ -204,16 +228,16 @@ impl TextRenderer {
                 })?;
                 let marked = self.glyphs.marked[glyph as usize];
                 let variant = self.winding.settings.variant(marked, &to_image, &view);
-                staged.push((variant, GpuInstance::new(&to_image, glyph, colour)));
+                staged.push(((k, variant), GpuInstance::new(&to_image, glyph)));
             }
         }
-        // One draw per variant, runs in order within it.
-        staged.sort_by_key(|&(variant, _)| variant);
-        let mut groups: Vec<(Variant, Range<u32>)> = Vec::new();
-        for (index, &(variant, _)) in (0u32..).zip(&staged) {
+        // Per run, one draw per variant.
+        staged.sort_by_key(|&(key, _)| key);
+        let mut groups: Vec<((usize, Variant), Range<u32>)> = Vec::new();
+        for (index, &(key, _)) in (0u32..).zip(&staged) {
             match groups.last_mut() {
-                Some((last, range)) if *last == variant => range.end = index + 1,
-                _ => groups.push((variant, index..index + 1)),
+                Some((last, range)) if *last == key => range.end = index + 1,
+                _ => groups.push((key, index..index + 1)),
             }
         }
         let instances: Vec<GpuInstance> = staged.into_iter().map(|(_, i)| i).collect();
@@ -226,22 +250,202 @@ impl TextRenderer {
             }
             let same = bytemuck::cast_slice::<_, u8>(&instances)
                 == bytemuck::cast_slice::<_, u8>(&self.written.0)
-                && viewport == self.written.1;
-            if !same {
-                self.uploads.instance_bytes = self.instances.write(&gpu, viewport, &instances);
-                self.written = (instances, viewport);
+                && viewport == self.written.1
+                && colours == self.written.2
+                && self.uploads.glyph_bytes == 0;
+            if same {
+                return Ok(());
             }
-            self.draws = groups
-                .into_iter()
-                .map(|(variant, range)| {
-                    let output = Output::Text(self.format);
-                    let pipeline = self
-                        .winding
-                        .pipeline(&gpu, output, variant, Channels::Coverage);
-                    (pipeline, range)
-                })
-                .collect();
+            self.uploads.instance_bytes = self.instances.write(&gpu, viewport, &instances);
+            let layers = self.layers(viewport, runs.len() as u32);
+            gpu.queue
+                .write_buffer(&layers.colours, 0, bytemuck::cast_slice(&colours));
+            self.uploads.instance_bytes += size_of_val(colours.as_slice()) as u64;
+            self.draw_coverage(encoder, &groups, runs.len());
+            self.written = (instances, viewport, colours);
             Ok(())
+        })
+    }
+
+    /// The coverage layers for `count` runs on a target of `size`, made anew when they
+    /// no longer fit.
+    fn layers(&mut self, size: [u32; 2], count: u32) -> &Layers {
+        let fits = self
+            .layers
+            .as_ref()
+            .is_some_and(|l| l.size == size && l.count >= count.max(1));
+        if !fits {
+            self.composite();
+            let device = &self.gpu.device;
+            let count = count.max(1).next_power_of_two();
+            let texture = device.create_texture(&wgpu::TextureDescriptor {
+                label: Some("text coverage"),
+                size: wgpu::Extent3d {
+                    width: size[0],
+                    height: size[1],
+                    depth_or_array_layers: count,
+                },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format: Channels::Coverage.format(),
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+                    | wgpu::TextureUsages::TEXTURE_BINDING,
+                view_formats: &[],
+            });
+            let layer_view = |layer| {
+                texture.create_view(&wgpu::TextureViewDescriptor {
+                    dimension: Some(wgpu::TextureViewDimension::D2),
+                    base_array_layer: layer,
+                    array_layer_count: Some(1),
+                    ..Default::default()
+                })
+            };
+            let views = (0..count).map(layer_view).collect();
+            let array = texture.create_view(&wgpu::TextureViewDescriptor {
+                dimension: Some(wgpu::TextureViewDimension::D2Array),
+                ..Default::default()
+            });
+            let colours = device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("text colours"),
+                size: u64::from(count) * 16,
+                usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            let layout = &self.composite.as_ref().expect("made above").0;
+            let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("text composite"),
+                layout,
+                entries: &[
+                    wgpu::BindGroupEntry {
+                        binding: 0,
+                        resource: wgpu::BindingResource::TextureView(&array),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 1,
+                        resource: colours.as_entire_binding(),
+                    },
+                ],
+            });
+            self.layers = Some(Layers {
+                size,
+                count,
+                views,
+                colours,
+                bind_group,
+            });
+        }
+        self.layers.as_ref().expect("made above")
+    }
+
+    /// Records each run's coverage into its layer, its instances added as the `winding`
+    /// row adds them.
+    fn draw_coverage(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        groups: &[((usize, Variant), Range<u32>)],
+        runs: usize,
+    ) {
+        let gpu = self.gpu.clone();
+        let pipelines: Vec<_> = groups
+            .iter()
+            .map(|&((_, variant), _)| {
+                self.winding
+                    .pipeline(&gpu, Output::Coverage, variant, Channels::Coverage)
+            })
+            .collect();
+        let (Some(layers), Some(glyphs)) = (&self.layers, &self.glyph_group) else {
+            return;
+        };
+        for run in 0..runs {
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("text coverage"),
+                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                    view: &layers.views[run],
+                    depth_slice: None,
+                    resolve_target: None,
+                    ops: wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                        store: wgpu::StoreOp::Store,
+                    },
+                })],
+                ..Default::default()
+            });
+            pass.set_bind_group(0, self.instances.bind_group(), &[]);
+            pass.set_bind_group(1, glyphs, &[]);
+            for (((k, _), range), pipeline) in groups.iter().zip(&pipelines) {
+                if *k == run {
+                    pass.set_pipeline(pipeline);
+                    pass.draw(0..4, range.clone());
+                }
+            }
+        }
+    }
+
+    /// The composite's layout and pipeline, for the caller's format.
+    fn composite(&mut self) -> &(wgpu::BindGroupLayout, wgpu::RenderPipeline) {
+        let (gpu, format) = (&self.gpu, self.format);
+        self.composite.get_or_insert_with(|| {
+            let device = &gpu.device;
+            let entry = |binding, ty| wgpu::BindGroupLayoutEntry {
+                binding,
+                visibility: wgpu::ShaderStages::FRAGMENT,
+                ty,
+                count: None,
+            };
+            let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                label: Some("text composite"),
+                entries: &[
+                    entry(
+                        0,
+                        wgpu::BindingType::Texture {
+                            sample_type: wgpu::TextureSampleType::Float { filterable: false },
+                            view_dimension: wgpu::TextureViewDimension::D2Array,
+                            multisampled: false,
+                        },
+                    ),
+                    entry(
+                        1,
+                        wgpu::BindingType::Buffer {
+                            ty: wgpu::BufferBindingType::Storage { read_only: true },
+                            has_dynamic_offset: false,
+                            min_binding_size: None,
+                        },
+                    ),
+                ],
+            });
+            let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+                label: Some("text composite"),
+                bind_group_layouts: &[None, None, Some(&layout)],
+                immediate_size: 0,
+            });
+            let module = super::SHADER.module(device);
+            let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some("text composite"),
+                layout: Some(&pipeline_layout),
+                vertex: wgpu::VertexState {
+                    module: &module,
+                    entry_point: Some("vs_composite"),
+                    compilation_options: Default::default(),
+                    buffers: &[],
+                },
+                primitive: wgpu::PrimitiveState::default(),
+                depth_stencil: None,
+                multisample: wgpu::MultisampleState::default(),
+                fragment: Some(wgpu::FragmentState {
+                    module: &module,
+                    entry_point: Some("fs_composite"),
+                    compilation_options: Default::default(),
+                    targets: &[Some(wgpu::ColorTargetState {
+                        format,
+                        blend: Some(wgpu::BlendState::PREMULTIPLIED_ALPHA_BLENDING),
+                        write_mask: wgpu::ColorWrites::ALL,
+                    })],
+                }),
+                multiview_mask: None,
+                cache: None,
+            });
+            (layout, pipeline)
         })
     }
 
@@ -250,15 +454,12 @@ impl TextRenderer {
     /// [`prepare`](Self::prepare) (the pass's default viewport). Draws nothing before
     /// the first `prepare`.
     pub fn render(&self, pass: &mut wgpu::RenderPass<'_>) {
-        let Some(glyphs) = &self.glyph_group else {
+        let (Some(layers), Some((_, pipeline))) = (&self.layers, &self.composite) else {
             return;
         };
-        pass.set_bind_group(0, self.instances.bind_group(), &[]);
-        pass.set_bind_group(1, glyphs, &[]);
-        for (pipeline, range) in &self.draws {
-            pass.set_pipeline(pipeline);
-            pass.draw(0..4, range.clone());
-        }
+        pass.set_pipeline(pipeline);
+        pass.set_bind_group(2, &layers.bind_group, &[]);
+        pass.draw(0..3, 0..self.written.2.len() as u32);
     }
 
     /// What the last [`prepare`](Self::prepare) uploaded.
