@@ -16,6 +16,8 @@
 //! content), and the instances last written. A frame whose runs are the same as the last
 //! frame's uploads nothing; a frame that only moves, turns or recolours its runs uploads
 //! only the instances ([`TextRenderer::last_uploads`] counts both).
+// What other apps call: every public item says what it is.
+#![deny(missing_docs)]
 
 use std::collections::HashMap;
 use std::collections::hash_map::DefaultHasher;
@@ -41,8 +43,11 @@ pub struct FontId(usize);
 /// text space (pixels at the run's size, x right, y down, the run's origin at 0, 0).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PositionedGlyph {
+    /// The glyph's id in the run's font.
     pub id: u16,
+    /// Its pen position, text-space pixels right of the run's origin.
     pub x: f32,
+    /// Its pen position, text-space pixels below the run's origin (y down).
     pub y: f32,
 }
 
@@ -59,7 +64,9 @@ pub enum Content<'a> {
 /// One run of text: a font, what it draws, at what size, where and in what colour.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TextRun<'a> {
+    /// The font, as [`TextRenderer::add_font`] returned it.
     pub font: FontId,
+    /// The text or glyphs drawn.
     pub content: Content<'a>,
     /// Pixels per em in the run's text space.
     pub size_px: f32,
