@@ -143,3 +143,28 @@ fn at_20x_the_library_is_sharp_where_egui_magnifies_a_bitmap() {
         "{theirs:?}"
     );
 }
+
+/// Writes `screenshots/egui-zoom.png`: the two columns at 5×, the end of egui's labels
+/// beside the start of the library's (`cargo test --release --test egui_zoom --
+/// --ignored screenshot`).
+#[test]
+#[ignore = "writes the README's picture"]
+fn screenshot() {
+    let mut harness = Harness::builder()
+        .with_size(SIZE)
+        .renderer(WgpuTestRenderer::from_setup(
+            glyphscope::app::wgpu_setup_on(common::gpu()),
+        ))
+        .build_eframe(|cc| ZoomApp::new(cc).unwrap());
+    harness.step();
+    harness.state_mut().scene_rect =
+        egui::Rect::from_center_size(egui::pos2(190.0, 22.0), egui::vec2(192.0, 72.0));
+    for _ in 0..3 {
+        harness.step();
+    }
+    harness
+        .render()
+        .unwrap()
+        .save("screenshots/egui-zoom.png")
+        .unwrap();
+}
