@@ -37,8 +37,8 @@ fn decode(c: f64) -> f64 {
     }
 }
 
-/// The app zoomed to 20× on `centre` (scene points); the screen as coverage.
-fn coverage_at(centre: egui::Pos2) -> (CoverageImage, glam::Mat3) {
+/// The app showing `size` scene points about `centre` (egui fits them to the screen).
+fn zoomed(centre: egui::Pos2, size: egui::Vec2) -> Harness<'static, ZoomApp> {
     let mut harness = Harness::builder()
         .with_size(SIZE)
         .renderer(WgpuTestRenderer::from_setup(
@@ -46,12 +46,16 @@ fn coverage_at(centre: egui::Pos2) -> (CoverageImage, glam::Mat3) {
         ))
         .build_eframe(|cc| ZoomApp::new(cc).unwrap());
     harness.step();
-    // The scene's rect at 20× the screen: egui fits it into the scene's area.
-    let half = egui::vec2(SIZE[0], SIZE[1]) / (2.0 * ZOOM);
-    harness.state_mut().scene_rect = egui::Rect::from_center_size(centre, 2.0 * half);
+    harness.state_mut().scene_rect = egui::Rect::from_center_size(centre, size);
     for _ in 0..3 {
         harness.step();
     }
+    harness
+}
+
+/// The app zoomed to 20× on `centre` (scene points); the screen as coverage.
+fn coverage_at(centre: egui::Pos2) -> (CoverageImage, glam::Mat3) {
+    let mut harness = zoomed(centre, egui::vec2(SIZE[0], SIZE[1]) / ZOOM);
     let screen = harness.render().unwrap();
     let srgb = harness.state().format.is_srgb();
     let lin = |v: u8| {
@@ -150,18 +154,7 @@ fn at_20x_the_library_is_sharp_where_egui_magnifies_a_bitmap() {
 #[test]
 #[ignore = "writes the README's picture"]
 fn screenshot() {
-    let mut harness = Harness::builder()
-        .with_size(SIZE)
-        .renderer(WgpuTestRenderer::from_setup(
-            glyphscope::app::wgpu_setup_on(common::gpu()),
-        ))
-        .build_eframe(|cc| ZoomApp::new(cc).unwrap());
-    harness.step();
-    harness.state_mut().scene_rect =
-        egui::Rect::from_center_size(egui::pos2(190.0, 22.0), egui::vec2(192.0, 72.0));
-    for _ in 0..3 {
-        harness.step();
-    }
+    let mut harness = zoomed(egui::pos2(190.0, 22.0), egui::vec2(192.0, 72.0));
     harness
         .render()
         .unwrap()
