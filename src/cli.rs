@@ -4,7 +4,7 @@
 //! printed here or turned into the exit code; `--quick` picks an [`Effort`] here,
 //! once. The binary dispatches to the `run_*` functions.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use clap::{Args, Parser, Subcommand};
 
@@ -292,19 +292,18 @@ pub fn run_survey(args: &SurveyArgs) -> Result<bool, Error> {
 /// `glyphscope bench`: runs the bench and writes its outputs; the path of the report on
 /// stdout.
 pub fn run_bench(args: &BenchArgs) -> Result<(), Error> {
-    if args.library {
-        let report = crate::bench::library::run_to(
-            &args.scenes,
-            args.quick,
-            args.frames,
-            args.adapter.adapter.as_deref(),
-            &args.out,
-        )?;
-        println!("{}", report.display());
-        return Ok(());
-    }
-    if args.harness {
-        let report = crate::bench::harness::run_to(
+    // The side runs: one report each, the same options.
+    type SideRun =
+        fn(&[String], bool, Option<usize>, Option<&str>, &Path) -> Result<PathBuf, Error>;
+    let side_run: Option<SideRun> = if args.library {
+        Some(crate::bench::library::run_to)
+    } else if args.harness {
+        Some(crate::bench::harness::run_to)
+    } else {
+        None
+    };
+    if let Some(run_to) = side_run {
+        let report = run_to(
             &args.scenes,
             args.quick,
             args.frames,

@@ -12,11 +12,9 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use super::method_settings::baseline_cache_param;
-use super::run::rounds;
-use super::scenes;
+use super::side_run::{SideRun, write_report};
 use crate::Error;
-use crate::effort::Effort;
-use crate::gpu::{Channels, CoverageTarget, GpuContext};
+use crate::gpu::{Channels, CoverageTarget};
 use crate::methods::atlas::{self, Atlas, Stage, auto_cache_size};
 use crate::methods::peers::glyphon;
 use crate::methods::{Method, frame};
@@ -107,30 +105,19 @@ pub fn run_to(
     adapter: Option<&str>,
     out: &Path,
 ) -> Result<std::path::PathBuf, Error> {
-    let names: Vec<&str> = if scene_names.is_empty() {
-        DEFAULT_SCENES.to_vec()
-    } else {
-        scene_names.iter().map(String::as_str).collect()
-    };
-    let bench_scenes = names
-        .iter()
-        .map(|name| scenes::scene(name))
-        .collect::<Result<Vec<_>, _>>()?;
-    let cannot =
-        |e: std::io::Error| Error::Output(format!("cannot write into '{}': {e}", out.display()));
-    std::fs::create_dir_all(out).map_err(cannot)?;
-    let effort = Effort::of(quick);
-    if frames == Some(0) {
-        return Err(Error::Input("--frames must be at least 1".into()));
-    }
-    let timing = rounds(&effort, frames);
-    let gpu = GpuContext::open(adapter)?;
-    if !gpu.has_timestamps() {
-        return Err(Error::Gpu(format!(
-            "'{}' has no timestamp queries: the harness breakdown times GPU passes",
-            gpu.adapter_name()
-        )));
-    }
+    let SideRun {
+        scenes: bench_scenes,
+        timing,
+        gpu,
+        scenes_flag,
+    } = SideRun::open(
+        scene_names,
+        DEFAULT_SCENES,
+        quick,
+        frames,
+        adapter,
+        "the harness breakdown times GPU passes",
+    )?;
     let mut md = format!(
         "# Where the atlas's time goes\n\n\
          Device: **{}**. `glyphscope bench --harness{}{}`: each case prepared anew in \
@@ -140,11 +127,7 @@ pub fn run_to(
          CPU per frame over glyphon's in the same run.\n",
         gpu.adapter_name(),
         if quick { " --quick" } else { "" },
-        if scene_names.is_empty() {
-            String::new()
-        } else {
-            format!(" --scenes {}", names.join(","))
-        },
+        scenes_flag,
         timing.rounds,
         timing.per_round.warmup,
     );
@@ -190,9 +173,7 @@ pub fn run_to(
             &timed,
         );
     }
-    let path = out.join("harness.md");
-    std::fs::write(&path, md).map_err(cannot)?;
-    Ok(path)
+    write_report(out, "harness.md", &md)
 }
 
 /// One scene's table.

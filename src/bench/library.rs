@@ -18,11 +18,9 @@ use std::path::{Path, PathBuf};
 use glam::{DMat3, DVec3, Mat3};
 
 use super::method_settings::baseline_cache_param;
-use super::run::rounds;
-use super::scenes;
+use super::side_run::{SideRun, write_report};
 use crate::Error;
 use crate::camera::Camera;
-use crate::effort::Effort;
 use crate::gpu::{Channels, CoverageTarget, GpuContext};
 use crate::methods::atlas::{self, auto_cache_size};
 use crate::methods::peers::glyphon;
@@ -159,29 +157,19 @@ pub fn run_to(
     adapter: Option<&str>,
     out: &Path,
 ) -> Result<PathBuf, Error> {
-    let names: Vec<&str> = if scene_names.is_empty() {
-        DEFAULT_SCENES.to_vec()
-    } else {
-        scene_names.iter().map(String::as_str).collect()
-    };
-    let bench_scenes = names
-        .iter()
-        .map(|name| scenes::scene(name))
-        .collect::<Result<Vec<_>, _>>()?;
-    let cannot =
-        |e: std::io::Error| Error::Output(format!("cannot write into '{}': {e}", out.display()));
-    std::fs::create_dir_all(out).map_err(cannot)?;
-    if frames == Some(0) {
-        return Err(Error::Input("--frames must be at least 1".into()));
-    }
-    let timing = rounds(&Effort::of(quick), frames);
-    let gpu = GpuContext::open(adapter)?;
-    if !gpu.has_timestamps() {
-        return Err(Error::Gpu(format!(
-            "'{}' has no timestamp queries: the library's frames are timed by them",
-            gpu.adapter_name()
-        )));
-    }
+    let SideRun {
+        scenes: bench_scenes,
+        timing,
+        gpu,
+        scenes_flag,
+    } = SideRun::open(
+        scene_names,
+        DEFAULT_SCENES,
+        quick,
+        frames,
+        adapter,
+        "the library's frames are timed by them",
+    )?;
     let mut md = format!(
         "# The library's frame\n\n\
          Device: **{}**. `glyphscope bench --library{}{}`: `glyphscope::text` as an app \
@@ -193,11 +181,7 @@ pub fn run_to(
          GPU + CPU per frame over theirs in the same run. Error against the reference.\n",
         gpu.adapter_name(),
         if quick { " --quick" } else { "" },
-        if scene_names.is_empty() {
-            String::new()
-        } else {
-            format!(" --scenes {}", names.join(","))
-        },
+        scenes_flag,
         timing.rounds,
         timing.per_round.warmup,
     );
@@ -277,9 +261,7 @@ pub fn run_to(
             .collect();
         write_scene(&mut md, bench_scene.name, &timed);
     }
-    let path = out.join("library.md");
-    std::fs::write(&path, md).map_err(cannot)?;
-    Ok(path)
+    write_report(out, "library.md", &md)
 }
 
 /// One scene's table.

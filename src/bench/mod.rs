@@ -39,6 +39,7 @@ pub mod result;
 pub mod run;
 pub mod scaling;
 pub mod scenes;
+pub mod side_run;
 pub mod winding_cost;
 
 use std::path::Path;

@@ -23,6 +23,7 @@ use std::collections::HashMap;
 use std::collections::hash_map::DefaultHasher;
 use std::hash::{Hash, Hasher};
 use std::ops::Range;
+use std::sync::Arc;
 
 use glam::{DMat3, DVec2, DVec3, Mat3};
 
@@ -90,8 +91,9 @@ pub struct Uploads {
     pub instance_bytes: u64,
 }
 
-/// A run's layout in font units: (prepared glyph, pen position) per instance.
-type RunLayout = Vec<(u32, DVec2)>;
+/// A run's layout in font units: (prepared glyph, pen position) per instance, shared
+/// by the cache and each frame that draws it.
+type RunLayout = Arc<[(u32, DVec2)]>;
 
 /// Draws text with `winding`'s exact box-filter coverage into a caller's render pass.
 ///
@@ -222,7 +224,7 @@ impl TextRenderer {
             let layout = self.layout(run)?;
             let s = f64::from(run.size_px) / units_per_em;
             colours.push(premultiplied(run.color, self.format.is_srgb()));
-            for &(glyph, pen) in &layout {
+            for &(glyph, pen) in layout.iter() {
                 // Font units (y up) to text space (pixels, y down), then the run's map.
                 let local = DMat3::from_cols(
                     DVec3::new(s, 0.0, 0.0),
@@ -519,7 +521,8 @@ impl TextRenderer {
             .instances
             .iter()
             .map(|i| (glyph_indices[i.glyph as usize], i.position))
-            .collect();
+            .collect::<Vec<_>>()
+            .into();
         self.layouts.insert((font_index, key), layout.clone());
         Ok(layout)
     }
