@@ -960,7 +960,7 @@ fn swiftshader_manifest() {
     assert!(
         std::path::Path::new(manifest).is_file(),
         "{manifest} is missing: SwiftShader's Vulkan driver comes with Debian's chromium \
-         package (apt-get install chromium; .ci/run installs it)"
+         package (apt-get install chromium; tools/test.sh installs it)"
     );
 }
 

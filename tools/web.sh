@@ -9,20 +9,36 @@
 set -eu
 cd "$(dirname "$0")/.."
 out=target/web
+# Where `cargo install` puts wasm-bindgen, whether or not the shell's PATH has it yet.
+PATH="${CARGO_HOME:-$HOME/.cargo}/bin:$PATH"
 # The wasm-bindgen version the lockfile resolves, and the installed CLI's.
 want=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/[^0-9.]/, ""); print; exit }' Cargo.lock)
 have=$(wasm-bindgen --version 2>/dev/null | awk '{ print $2 }') || true
+say() { echo "web.sh: $*"; }
+fail() { echo "web.sh: error: $*" >&2; exit 2; }
 case "${1:-}" in
 setup)
-    rustup target list --installed | grep -qx wasm32-unknown-unknown \
-        || rustup target add wasm32-unknown-unknown
-    # Without --locked: with it, cargo fails on a pinned dependency the registry lacks.
-    [ "$have" = "$want" ] || cargo install --quiet wasm-bindgen-cli --version "$want"
+    if [ -d "$(rustc --print sysroot)/lib/rustlib/wasm32-unknown-unknown" ]; then
+        say "wasm32: the wasm32-unknown-unknown target is installed"
+    else
+        command -v rustup >/dev/null \
+            || fail "no wasm32-unknown-unknown target and no rustup to add it: install Rust through https://rustup.rs"
+        say "wasm32: adding the wasm32-unknown-unknown target, which the page compiles to"
+        rustup target add wasm32-unknown-unknown >/dev/null 2>&1 \
+            || fail "rustup could not add the target (no network?): rustup target add wasm32-unknown-unknown"
+    fi
+    if [ "$have" = "$want" ]; then
+        say "wasm-bindgen: wasm-bindgen-cli $want is installed"
+    else
+        say "wasm-bindgen: building wasm-bindgen-cli $want, Cargo.lock's version (have: ${have:-none}; about 5 minutes on 2 cores)"
+        # Without --locked: with it, cargo fails on a pinned dependency the registry lacks.
+        cargo install --quiet wasm-bindgen-cli --version "$want" \
+            || fail "cargo could not build wasm-bindgen-cli (above): cargo install wasm-bindgen-cli --version $want"
+    fi
     ;;
 build)
     if [ "$have" != "$want" ]; then
-        echo "error: wasm-bindgen-cli $want is needed (have: ${have:-none}): tools/web.sh setup" >&2
-        exit 2
+        fail "wasm-bindgen-cli $want is needed (have: ${have:-none}): tools/web.sh setup"
     fi
     # The library as a cdylib, for the web only: the native build stays an rlib.
     cargo rustc --lib --release --target wasm32-unknown-unknown --crate-type cdylib
@@ -33,8 +49,8 @@ build)
     echo "$out/index.html"
     ;;
 serve)
-    [ -f "$out/index.html" ] || { echo "error: no page yet: tools/web.sh build" >&2; exit 2; }
-    command -v python3 >/dev/null || { echo "error: serving needs python3 (apt-get install python3)" >&2; exit 2; }
+    [ -f "$out/index.html" ] || fail "no page yet: tools/web.sh build"
+    command -v python3 >/dev/null || fail "serving needs python3 (apt-get install python3)"
     echo "http://127.0.0.1:8000"
     exec python3 -m http.server 8000 --bind 127.0.0.1 --directory "$out"
     ;;
