@@ -1,0 +1,119 @@
+#!/bin/sh
+# README's set-up, checked on a fresh machine: a minimal Debian 12 (debootstrap
+# --variant=minbase) in a chroot under DIR, with this repository's HEAD cloned into it.
+#
+#   tools/fresh-machine.sh test [DIR]     rustup's minimal Rust 1.95 and nothing else (no
+#                                         apt packages, no crate cache, no wasm-bindgen);
+#                                         runs tools/test.sh as root; prints its time
+#   tools/fresh-machine.sh nonroot [DIR]  the same machine, tools/test.sh as a user
+#                                         without sudo, then with sudo but no rights:
+#                                         each must stop with one line and exit 2
+#   tools/fresh-machine.sh window [DIR]   this working tree's explorer (target/release/
+#                                         glyphscope, built here) with none of the
+#                                         window's libraries (one line, exit 2), then with
+#                                         README's X11 list and lavapipe: a screenshot
+#                                         after 30 s, DIR/window.png
+#
+# Needs root, debootstrap and a network; `window` needs Xvfb, xwd and ImageMagick (apt-get
+# install debootstrap xvfb x11-apps imagemagick). The host's extra CA certificates go into
+# the chroot, for networks behind a proxy of their own.
+set -eu
+mode=${1:-}
+root=${2:-/tmp/glyphscope-fresh}
+repo=$(cd "$(dirname "$0")/.." && pwd)
+case "$mode" in test | nonroot | window) ;; *)
+    echo "usage: tools/fresh-machine.sh test|nonroot|window [DIR]" >&2
+    exit 2
+    ;;
+esac
+[ "$(id -u)" = 0 ] || { echo "error: a chroot needs root" >&2; exit 2; }
+command -v debootstrap >/dev/null || { echo "error: apt-get install debootstrap" >&2; exit 2; }
+
+in_root() { chroot "$root" env -i HOME=/root TERM=dumb \
+    PATH=/root/.cargo/bin:/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin "$@"; }
+unmount() { for m in dev sys proc; do umount -R "$root/$m" 2>/dev/null || true; done; }
+trap unmount EXIT
+
+echo "fresh-machine: Debian 12 minbase in $root"
+unmount
+rm -rf --one-file-system "$root"
+debootstrap --variant=minbase bookworm "$root" http://deb.debian.org/debian >"$root.log" 2>&1
+# What a Debian 12 installation has and debootstrap leaves out: the updates and security
+# suites, and localhost (chromedriver reaches Chromium's DevTools by that name).
+rm -f "$root/etc/apt/sources.list"
+cat >"$root/etc/apt/sources.list.d/debian.sources" <<SOURCES
+Types: deb
+URIs: http://deb.debian.org/debian
+Suites: bookworm bookworm-updates
+Components: main
+Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
+
+Types: deb
+URIs: http://deb.debian.org/debian-security
+Suites: bookworm-security
+Components: main
+Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
+SOURCES
+printf '127.0.0.1\tlocalhost\n::1\tlocalhost ip6-localhost ip6-loopback\n' >"$root/etc/hosts"
+cp /etc/resolv.conf "$root/etc/"
+cp /usr/local/share/ca-certificates/*.crt "$root/usr/local/share/ca-certificates/" 2>/dev/null || true
+mount -t proc proc "$root/proc"
+mount --rbind /sys "$root/sys"
+mount --rbind /dev "$root/dev"
+in_root sh -c 'apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
+    --no-install-recommends ca-certificates curl git >/dev/null 2>&1 && update-ca-certificates >/dev/null'
+
+if [ "$mode" = window ]; then
+    app="$repo/target/release/glyphscope"
+    [ -x "$app" ] || { echo "error: no $app: cargo build --release" >&2; exit 2; }
+    cp "$app" "$root/usr/local/bin/"
+    mkdir -p "$root/tmp/.X11-unix"
+    mount --bind /tmp/.X11-unix "$root/tmp/.X11-unix"
+    Xvfb :96 -screen 0 1280x860x24 >/dev/null 2>&1 &
+    xvfb=$!
+    trap 'kill $xvfb; umount "$root/tmp/.X11-unix"; unmount' EXIT
+    sleep 2
+    explorer() { in_root env DISPLAY=:96 XDG_RUNTIME_DIR=/tmp timeout "$1" glyphscope; }
+    echo "fresh-machine: the explorer with none of its libraries:"
+    code=0; explorer 30 || code=$?
+    echo "fresh-machine: exit $code"
+    echo "fresh-machine: with README's X11 libraries and lavapipe:"
+    in_root sh -c 'DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+        libx11-6 libx11-xcb1 libxcursor1 libxrandr2 libxi6 libxkbcommon-x11-0 \
+        mesa-vulkan-drivers libvulkan1 >/dev/null 2>&1'
+    explorer 40 &
+    sleep 30
+    DISPLAY=:96 xwd -root -silent | convert xwd:- "$root/window.png"
+    code=0; wait $! || code=$?
+    echo "fresh-machine: exit $code (124: still open after 40 s, as it should be); $root/window.png"
+    exit 0
+fi
+
+echo "fresh-machine: rustup, Rust 1.95 (minimal profile); the clone of HEAD"
+in_root sh -c 'curl -sSf https://static.rust-lang.org/rustup/dist/x86_64-unknown-linux-gnu/rustup-init \
+    -o /tmp/rustup-init && chmod +x /tmp/rustup-init \
+    && /tmp/rustup-init -y -q --profile minimal --default-toolchain 1.95.0 >/dev/null 2>&1'
+git clone -q "$repo" "$root/root/glyphscope"
+
+if [ "$mode" = nonroot ]; then
+    # The user runs root's toolchain, read-only; its crates would go to its own home.
+    chmod 755 "$root/root"
+    in_root useradd -m tester
+    as_tester() { in_root su tester -c "cd /root/glyphscope && RUSTUP_HOME=/root/.rustup \
+        CARGO_HOME=/home/tester/.cargo PATH=/root/.cargo/bin:/usr/bin:/bin tools/test.sh"; }
+    for sudo in none no-rights; do
+        if [ $sudo = no-rights ]; then
+            in_root sh -c 'DEBIAN_FRONTEND=noninteractive apt-get install -y -qq sudo >/dev/null 2>&1'
+        fi
+        echo "fresh-machine: tools/test.sh as a user, sudo: $sudo"
+        code=0; as_tester || code=$?
+        echo "fresh-machine: exit $code; built: $([ -d "$root/root/glyphscope/target" ] && echo yes || echo no)"
+    done
+    exit 0
+fi
+
+echo "fresh-machine: tools/test.sh"
+start=$(date +%s)
+code=0; in_root sh -c 'cd /root/glyphscope && tools/test.sh' || code=$?
+echo "fresh-machine: tools/test.sh exit $code after $(( $(date +%s) - start )) s"
+exit $code
