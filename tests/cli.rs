@@ -738,6 +738,26 @@ fn magnified_picture_draws_error_outline_and_refuses_bad_input() {
     fails("overlay name", &with(&["--overlay", "sparkles"]), "overlay");
 }
 
+/// The explorer where there is no display (ssh, CI): one line saying what it needs, the
+/// window's libraries named, and exit 2; never a panic.
+#[cfg(feature = "app")]
+#[test]
+fn the_explorer_without_a_display_says_so_in_one_line() {
+    let result = bin()
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .env_remove("WAYLAND_SOCKET")
+        .output()
+        .expect("the binary runs");
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert_eq!(result.status.code(), Some(2), "{stderr}");
+    assert_eq!(stderr.lines().count(), 1, "one line: {stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    for named in ["needs a display", "libxkbcommon-x11-0", "libwayland-client0"] {
+        assert!(stderr.contains(named), "names {named}: {stderr}");
+    }
+}
+
 /// A headless command opens no display: with no display in the environment (as on CI or
 /// over ssh) a GPU render says nothing of one. Mesa's device-select layer, which wgpu's
 /// window-system extensions wake, used to print "XDG_RUNTIME_DIR is invalid or not set"

@@ -67,6 +67,8 @@ use crate::gpu::GpuContext;
 /// the explorer its own way (`web`).
 #[cfg(not(target_arch = "wasm32"))]
 pub fn run(view: Option<&str>) -> Result<(), crate::Error> {
+    #[cfg(target_os = "linux")]
+    check_keyboard_library()?;
     let view = view.map(str::to_owned);
     let options = eframe::NativeOptions {
         renderer: eframe::Renderer::Wgpu,
@@ -91,7 +93,51 @@ pub fn run(view: Option<&str>) -> Result<(), crate::Error> {
             Ok(Box::new(app))
         }),
     )
-    .map_err(|e| crate::Error::Gpu(format!("cannot open the window: {e}")))
+    .map_err(|e| {
+        let hint = match e {
+            eframe::Error::WinitEventLoop(_) => format!(
+                " (it needs a display and, on X11, apt-get install {X11_LIBRARIES}; on \
+                 Wayland, {WAYLAND_LIBRARIES})"
+            ),
+            eframe::Error::Wgpu(_) => format!(" (no Vulkan or GL driver: {DRIVERS})"),
+            _ => String::new(),
+        };
+        crate::Error::Gpu(format!("cannot open the window: {e}{hint}"))
+    })
+}
+
+/// What the window loads when it opens and a minimal Debian 12 lacks (checked there by
+/// `tools/fresh-machine.sh window`; README's set-up lists them too). Wayland's are winit's
+/// list, not checked.
+const X11_LIBRARIES: &str = "libx11-6 libx11-xcb1 libxcursor1 libxrandr2 libxi6 libxkbcommon-x11-0";
+const WAYLAND_LIBRARIES: &str = "libwayland-client0 libwayland-cursor0 libxkbcommon0";
+const DRIVERS: &str =
+    "apt-get install mesa-vulkan-drivers, or for GL libegl1 libegl-mesa0 libgl1-mesa-dri";
+
+/// winit reads the keyboard through libxkbcommon and panics where it cannot load it
+/// (xkbcommon-dl's loaders `expect` the library), so the explorer loads it first, through
+/// the same loader, and names the libraries to install. With no display at all, winit's
+/// own error says so.
+#[cfg(target_os = "linux")]
+fn check_keyboard_library() -> Result<(), crate::Error> {
+    let set = |name| std::env::var_os(name).is_some_and(|v| !v.is_empty());
+    let wayland = set("WAYLAND_DISPLAY") || set("WAYLAND_SOCKET");
+    let (library, packages) = if wayland {
+        (xkbcommon_dl::xkbcommon_option().is_some(), WAYLAND_LIBRARIES)
+    } else if set("DISPLAY") {
+        let loaded = xkbcommon_dl::xkbcommon_option().is_some()
+            && xkbcommon_dl::x11::xkbcommon_x11_option().is_some();
+        (loaded, X11_LIBRARIES)
+    } else {
+        (true, "")
+    };
+    if library {
+        return Ok(());
+    }
+    Err(crate::Error::Gpu(format!(
+        "cannot open the window: no libxkbcommon, which winit reads the keyboard with \
+         (apt-get install {packages})"
+    )))
 }
 
 /// The device the explorer asks for (in eframe, headless and in tests): what the methods
