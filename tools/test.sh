@@ -55,7 +55,7 @@ if [ -n "$packages" ]; then
         sudo="sudo"
         say "apt: not root: installing through sudo"
     else
-        fail "not root and no sudo rights to install$packages: sudo $install (or run this as root)"
+        fail "installing$packages needs root, and this user has no sudo rights: as root, $install"
     fi
     log=$(mktemp)
     say "apt: installing$packages (its output: $log)"
