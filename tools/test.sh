@@ -25,8 +25,15 @@ command -v cargo >/dev/null || fail "no cargo on the PATH: install Rust (https:/
 
 # What apt has to install, and why.
 packages=""
-if ls /usr/share/vulkan/icd.d/*.json /etc/vulkan/icd.d/*.json >/dev/null 2>&1 \
-    && ldconfig -p 2>/dev/null | grep -q 'libvulkan\.so\.1 '; then
+# A driver is a manifest in one of the loader's folders (a glob that matches nothing stays
+# as written, and -e rejects it).
+vulkan_driver() {
+    for manifest in /usr/share/vulkan/icd.d/*.json /etc/vulkan/icd.d/*.json; do
+        [ -e "$manifest" ] && return 0
+    done
+    return 1
+}
+if vulkan_driver && ldconfig -p 2>/dev/null | grep -q 'libvulkan\.so\.1 '; then
     say "vulkan: a driver is installed"
 else
     say "vulkan: no Vulkan driver: lavapipe, Mesa's software Vulkan, will render the GPU tests"
