@@ -37,7 +37,7 @@ trap unmount EXIT
 echo "fresh-machine: Debian 12 minbase in $root"
 unmount
 rm -rf --one-file-system "$root"
-debootstrap --variant=minbase bookworm "$root" http://deb.debian.org/debian >"$root.log" 2>&1
+debootstrap --variant=minbase bookworm "$root" http://deb.debian.org/debian >"$root-debootstrap.log" 2>&1
 # What a Debian 12 installation has and debootstrap leaves out: the updates and security
 # suites, and localhost (chromedriver reaches Chromium's DevTools by that name).
 rm -f "$root/etc/apt/sources.list"
