@@ -24,8 +24,8 @@ setup)
         command -v rustup >/dev/null \
             || fail "no wasm32-unknown-unknown target and no rustup to add it: install Rust through https://rustup.rs"
         say "wasm32: adding the wasm32-unknown-unknown target, which the page compiles to"
-        rustup target add wasm32-unknown-unknown >/dev/null 2>&1 \
-            || fail "rustup could not add the target (no network?): rustup target add wasm32-unknown-unknown"
+        why=$(rustup target add wasm32-unknown-unknown 2>&1 >/dev/null) \
+            || fail "rustup target add wasm32-unknown-unknown failed: $(echo "$why" | tail -n 1)"
     fi
     if [ "$have" = "$want" ]; then
         say "wasm-bindgen: wasm-bindgen-cli $want is installed"
