@@ -10,6 +10,7 @@
 #   linker        a C toolchain for cargo to link with (apt: gcc libc6-dev), where missing
 #   wasm32        the wasm32-unknown-unknown target (rustup)        } tools/web.sh setup
 #   wasm-bindgen  wasm-bindgen-cli at Cargo.lock's version (cargo)  }
+#   crates        every crate Cargo.lock names for this machine and the page (cargo fetch)
 #
 # The apt packages need root: as another user the script uses sudo and says so. Where
 # neither works, or the network does not answer, it prints one line naming what is
@@ -33,7 +34,9 @@ vulkan_driver() {
     done
     return 1
 }
-if vulkan_driver && ldconfig -p 2>/dev/null | grep -q 'libvulkan\.so\.1 '; then
+# ldconfig lives in /usr/sbin, which a user's PATH leaves out.
+if vulkan_driver && PATH="$PATH:/usr/sbin:/sbin" ldconfig -p 2>/dev/null \
+    | grep -q 'libvulkan\.so\.1 '; then
     say "vulkan: a driver is installed"
 else
     say "vulkan: no Vulkan driver: lavapipe, Mesa's software Vulkan, will render the GPU tests"
@@ -61,6 +64,10 @@ if [ -n "$packages" ]; then
     elif command -v sudo >/dev/null && sudo -n true 2>/dev/null; then
         sudo="sudo"
         say "apt: not root: installing through sudo"
+    elif command -v sudo >/dev/null && [ -t 0 ] \
+        && say "apt: not root: installing through sudo, which asks for your password" \
+        && sudo -v; then
+        sudo="sudo"
     else
         fail "installing$packages needs root, and this user has no sudo rights: as root, $install"
     fi
@@ -76,6 +83,14 @@ fi
 
 # The web page's tools live beside its build: one place says how they are installed.
 sh tools/web.sh setup
+
+# Every crate the build and the page's build need, fetched now, so that no network stops
+# the build halfway with cargo's many lines.
+host=$(rustc -vV | sed -n 's/^host: //p')
+log=$(mktemp)
+say "crates: fetching what Cargo.lock names for $host and the page's wasm32 (its output: $log)"
+cargo fetch --target "$host" --target wasm32-unknown-unknown >"$log" 2>&1 \
+    || fail "cargo fetch failed (no network?), see $log: cargo fetch"
 
 say "tests: cargo test --release $*"
 exec cargo test --release "$@"

@@ -34,8 +34,10 @@ setup)
         # Without --locked: with it, cargo fails on a pinned dependency the registry lacks.
         # The page needs the one binary, and it downloads nothing: no TLS stack (the test
         # runner's, for fetching browser drivers), 9% less to build.
-        cargo install --quiet wasm-bindgen-cli --version "$want" --bin wasm-bindgen --no-default-features \
-            || fail "cargo could not build wasm-bindgen-cli (above): cargo install wasm-bindgen-cli --version $want --bin wasm-bindgen --no-default-features"
+        log=$(mktemp)
+        cargo install --quiet wasm-bindgen-cli --version "$want" --bin wasm-bindgen \
+            --no-default-features >"$log" 2>&1 \
+            || fail "cargo could not build wasm-bindgen-cli (no network?), see $log: cargo install wasm-bindgen-cli --version $want"
     fi
     ;;
 build)
