@@ -31,12 +31,26 @@ command -v debootstrap >/dev/null || { echo "error: apt-get install debootstrap"
 
 in_root() { chroot "$root" env -i HOME=/root TERM=dumb \
     PATH=/root/.cargo/bin:/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin "$@"; }
-unmount() { for m in dev sys proc; do umount -R "$root/$m" 2>/dev/null || true; done; }
+unmount() {
+    for m in tmp/.X11-unix dev sys proc; do umount -R "$root/$m" 2>/dev/null || true; done
+}
 trap unmount EXIT
+trap 'exit 130' INT TERM HUP
 
 echo "fresh-machine: Debian 12 minbase in $root"
-unmount
-rm -rf --one-file-system "$root"
+# Only a folder this script made is removed, and only with nothing mounted in it.
+marker="$root/.glyphscope-fresh-machine"
+if [ -e "$root" ]; then
+    [ -e "$marker" ] || { echo "error: $root exists and is not a chroot of this script's" >&2; exit 2; }
+    unmount
+    if grep -q " $root/" /proc/mounts; then
+        echo "error: something is still mounted under $root" >&2
+        exit 2
+    fi
+    rm -rf --one-file-system "$root"
+fi
+mkdir -p "$root"
+touch "$marker"
 debootstrap --variant=minbase bookworm "$root" http://deb.debian.org/debian >"$root-debootstrap.log" 2>&1
 # What a Debian 12 installation has and debootstrap leaves out: the updates and security
 # suites, and localhost (chromedriver reaches Chromium's DevTools by that name).
@@ -59,8 +73,11 @@ cp /etc/resolv.conf "$root/etc/"
 mkdir -p "$root/usr/local/share/ca-certificates"
 cp /usr/local/share/ca-certificates/*.crt "$root/usr/local/share/ca-certificates/" 2>/dev/null || true
 mount -t proc proc "$root/proc"
+# Slaves: unmounting them later must not reach the host's own /dev/pts or /dev/shm.
 mount --rbind /sys "$root/sys"
+mount --make-rslave "$root/sys"
 mount --rbind /dev "$root/dev"
+mount --make-rslave "$root/dev"
 in_root sh -c 'apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
     --no-install-recommends ca-certificates curl git >/dev/null 2>&1 && update-ca-certificates >/dev/null'
 
@@ -72,7 +89,7 @@ if [ "$mode" = window ]; then
     mount --bind /tmp/.X11-unix "$root/tmp/.X11-unix"
     Xvfb :96 -screen 0 1280x860x24 >/dev/null 2>&1 &
     xvfb=$!
-    trap 'kill $xvfb; umount "$root/tmp/.X11-unix"; unmount' EXIT
+    trap 'kill $xvfb 2>/dev/null || true; unmount' EXIT
     sleep 2
     explorer() { in_root env DISPLAY=:96 XDG_RUNTIME_DIR=/tmp timeout "$1" glyphscope; }
     echo "fresh-machine: the explorer with none of its libraries:"
@@ -97,9 +114,11 @@ in_root sh -c 'curl -sSf https://static.rust-lang.org/rustup/dist/x86_64-unknown
 git clone -q "$repo" "$root/root/glyphscope"
 
 if [ "$mode" = nonroot ]; then
-    # The user runs root's toolchain, read-only; its crates would go to its own home.
+    # The user runs root's toolchain, read-only, on a clone of its own: it could build
+    # there, so "built: no" means test.sh stopped first.
     chmod 755 "$root/root"
     in_root useradd -m tester
+    in_root chown -R tester /root/glyphscope
     as_tester() { in_root su tester -c "cd /root/glyphscope && RUSTUP_HOME=/root/.rustup \
         CARGO_HOME=/home/tester/.cargo PATH=/root/.cargo/bin:/usr/bin:/bin tools/test.sh"; }
     for sudo in none no-rights; do
@@ -108,7 +127,12 @@ if [ "$mode" = nonroot ]; then
         fi
         echo "fresh-machine: tools/test.sh as a user, sudo: $sudo"
         code=0; as_tester || code=$?
-        echo "fresh-machine: exit $code; built: $([ -d "$root/root/glyphscope/target" ] && echo yes || echo no)"
+        built=no; [ -d "$root/root/glyphscope/target" ] && built=yes
+        echo "fresh-machine: exit $code; built: $built"
+        if [ "$code" != 2 ] || [ $built = yes ]; then
+            echo "fresh-machine: FAILED: exit 2 before building expected" >&2
+            exit 1
+        fi
     done
     exit 0
 fi
