@@ -740,7 +740,7 @@ fn magnified_picture_draws_error_outline_and_refuses_bad_input() {
 
 /// The explorer where there is no display (ssh, CI): one line saying what it needs, the
 /// window's libraries named, and exit 2; never a panic.
-#[cfg(feature = "app")]
+#[cfg(all(feature = "app", target_os = "linux"))]
 #[test]
 fn the_explorer_without_a_display_says_so_in_one_line() {
     let result = bin()

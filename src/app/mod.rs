@@ -67,7 +67,7 @@ use crate::gpu::GpuContext;
 /// the explorer its own way (`web`).
 #[cfg(not(target_arch = "wasm32"))]
 pub fn run(view: Option<&str>) -> Result<(), crate::Error> {
-    #[cfg(target_os = "linux")]
+    #[cfg(all(unix, not(any(target_os = "macos", target_os = "ios", target_os = "android"))))]
     check_keyboard_library()?;
     let view = view.map(str::to_owned);
     let options = eframe::NativeOptions {
@@ -94,7 +94,9 @@ pub fn run(view: Option<&str>) -> Result<(), crate::Error> {
         }),
     )
     .map_err(|e| {
+        // Debian's packages, where they are the answer.
         let hint = match e {
+            _ if !cfg!(target_os = "linux") => String::new(),
             eframe::Error::WinitEventLoop(_) => format!(
                 " (it needs a display and, on X11, apt-get install {X11_LIBRARIES}; on \
                  Wayland, {WAYLAND_LIBRARIES})"
@@ -118,25 +120,25 @@ const DRIVERS: &str =
 /// (xkbcommon-dl's loaders `expect` the library), so the explorer loads it first, through
 /// the same loader, and names the libraries to install. With no display at all, winit's
 /// own error says so.
-#[cfg(target_os = "linux")]
+#[cfg(all(unix, not(any(target_os = "macos", target_os = "ios", target_os = "android"))))]
 fn check_keyboard_library() -> Result<(), crate::Error> {
     let set = |name| std::env::var_os(name).is_some_and(|v| !v.is_empty());
     let wayland = set("WAYLAND_DISPLAY") || set("WAYLAND_SOCKET");
-    let (library, packages) = if wayland {
+    let (loaded, packages) = if wayland {
         (xkbcommon_dl::xkbcommon_option().is_some(), WAYLAND_LIBRARIES)
     } else if set("DISPLAY") {
-        let loaded = xkbcommon_dl::xkbcommon_option().is_some()
+        let both = xkbcommon_dl::xkbcommon_option().is_some()
             && xkbcommon_dl::x11::xkbcommon_x11_option().is_some();
-        (loaded, X11_LIBRARIES)
+        (both, X11_LIBRARIES)
     } else {
         (true, "")
     };
-    if library {
+    if loaded {
         return Ok(());
     }
     Err(crate::Error::Gpu(format!(
         "cannot open the window: no libxkbcommon, which winit reads the keyboard with \
-         (apt-get install {packages})"
+         (Debian: apt-get install {packages})"
     )))
 }
 
