@@ -95,6 +95,7 @@ if [ "$mode" = window ]; then
     echo "fresh-machine: the explorer with none of its libraries:"
     code=0; explorer 30 || code=$?
     echo "fresh-machine: exit $code"
+    [ "$code" = 2 ] || { echo "fresh-machine: FAILED: exit 2 expected" >&2; exit 1; }
     echo "fresh-machine: with README's X11 libraries and lavapipe:"
     in_root sh -c 'DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
         libx11-6 libx11-xcb1 libxcursor1 libxrandr2 libxi6 libxkbcommon-x11-0 \
@@ -104,6 +105,7 @@ if [ "$mode" = window ]; then
     DISPLAY=:96 xwd -root -silent | convert xwd:- "$root/window.png"
     code=0; wait $! || code=$?
     echo "fresh-machine: exit $code (124: still open after 40 s, as it should be); $root/window.png"
+    [ "$code" = 124 ] || { echo "fresh-machine: FAILED: the explorer closed" >&2; exit 1; }
     exit 0
 fi
 
