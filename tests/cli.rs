@@ -980,7 +980,7 @@ fn swiftshader_manifest() {
     assert!(
         std::path::Path::new(manifest).is_file(),
         "{manifest} is missing: SwiftShader's Vulkan driver comes with Debian's chromium \
-         package (apt-get install chromium; tools/test.sh installs it)"
+         package (apt-get install chromium; tools/setup.sh installs it)"
     );
 }
 

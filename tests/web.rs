@@ -14,7 +14,7 @@
 //!
 //! Needs Chromium and its driver (`apt-get install chromium chromium-driver`), the
 //! wasm32 target and wasm-bindgen-cli (`tools/web.sh build` says which version);
-//! `tools/test.sh` installs them. Without them these tests fail with the message saying so.
+//! `tools/setup.sh` installs them. Without them these tests fail with the message saying so.
 
 mod common;
 #[path = "common/explorer.rs"]
@@ -125,7 +125,7 @@ fn chromium() -> String {
         .map(|dir| dir.join("chromium"))
         .find(|path| path.is_file())
         .unwrap_or_else(|| {
-            panic!("no chromium on the PATH: apt-get install chromium (tools/test.sh does)")
+            panic!("no chromium on the PATH: apt-get install chromium (tools/setup.sh does)")
         })
         .display()
         .to_string()
@@ -157,7 +157,7 @@ impl Browser {
             .spawn()
             .unwrap_or_else(|e| {
                 panic!(
-                    "chromedriver cannot start ({e}): apt-get install chromium chromium-driver (tools/test.sh does)"
+                    "chromedriver cannot start ({e}): apt-get install chromium chromium-driver (tools/setup.sh does)"
                 )
             });
         let mut browser = Browser {

@@ -4,8 +4,8 @@
 #
 #   tools/fresh-machine.sh test [DIR]     rustup's minimal Rust 1.95 and nothing else (no
 #                                         apt packages, no crate cache, no wasm-bindgen);
-#                                         runs tools/test.sh as root; prints its time
-#   tools/fresh-machine.sh nonroot [DIR]  the same machine, tools/test.sh as a user
+#                                         runs README's test command as root; its time
+#   tools/fresh-machine.sh nonroot [DIR]  the same machine, the test command as a user
 #                                         without sudo, then with sudo but no rights:
 #                                         each must stop with one line and exit 2
 #   tools/fresh-machine.sh window [DIR]   this working tree's explorer (target/release/
@@ -117,17 +117,18 @@ git clone -q "$repo" "$root/root/glyphscope"
 
 if [ "$mode" = nonroot ]; then
     # The user runs root's toolchain, read-only, on a clone of its own: it could build
-    # there, so "built: no" means test.sh stopped first.
+    # there, so "built: no" means setup.sh stopped first.
     chmod 755 "$root/root"
     in_root useradd -m tester
     in_root chown -R tester /root/glyphscope
     as_tester() { in_root su tester -c "cd /root/glyphscope && RUSTUP_HOME=/root/.rustup \
-        CARGO_HOME=/home/tester/.cargo PATH=/root/.cargo/bin:/usr/bin:/bin tools/test.sh"; }
+        CARGO_HOME=/home/tester/.cargo PATH=/root/.cargo/bin:/usr/bin:/bin \
+        tools/setup.sh && cargo test --release"; }
     for sudo in none no-rights; do
         if [ $sudo = no-rights ]; then
             in_root sh -c 'DEBIAN_FRONTEND=noninteractive apt-get install -y -qq sudo >/dev/null 2>&1'
         fi
-        echo "fresh-machine: tools/test.sh as a user, sudo: $sudo"
+        echo "fresh-machine: the test command as a user, sudo: $sudo"
         code=0; as_tester || code=$?
         built=no; [ -d "$root/root/glyphscope/target" ] && built=yes
         echo "fresh-machine: exit $code; built: $built"
@@ -139,8 +140,9 @@ if [ "$mode" = nonroot ]; then
     exit 0
 fi
 
-echo "fresh-machine: tools/test.sh"
+echo "fresh-machine: tools/setup.sh && cargo test --release"
 start=$(date +%s)
-code=0; in_root sh -c 'cd /root/glyphscope && tools/test.sh' || code=$?
-echo "fresh-machine: tools/test.sh exit $code after $(( $(date +%s) - start )) s"
+code=0; in_root sh -c 'cd /root/glyphscope && tools/setup.sh && cargo test --release' \
+    || code=$?
+echo "fresh-machine: the test command: exit $code after $(( $(date +%s) - start )) s"
 exit $code

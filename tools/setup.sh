@@ -1,7 +1,7 @@
 #!/bin/sh
-# The test command. Sets up what a fresh Debian machine lacks for the tests, one line
-# per step, each step skipped when what it gives is already there; then runs
-# `cargo test --release` (further arguments go to it: tools/test.sh --test winding).
+# The first half of README's test command, `tools/setup.sh && cargo test --release`: sets
+# up what a fresh Debian machine lacks for the tests, one line per step, each step
+# skipped when what it gives is already there.
 #
 #   vulkan        a Vulkan driver for the GPU tests: the loader and lavapipe, Mesa's
 #                 software Vulkan (apt: libvulkan1 mesa-vulkan-drivers), where none exists
@@ -19,8 +19,8 @@
 set -eu
 cd "$(dirname "$0")/.."
 
-say() { echo "test.sh: $*"; }
-fail() { echo "test.sh: error: $*" >&2; exit 2; }
+say() { echo "setup.sh: $*"; }
+fail() { echo "setup.sh: error: $*" >&2; exit 2; }
 
 command -v cargo >/dev/null || fail "no cargo on the PATH: install Rust (https://rustup.rs)"
 
@@ -91,6 +91,3 @@ log=$(mktemp)
 say "crates: fetching what Cargo.lock names for $host and the page's wasm32 (its output: $log)"
 cargo fetch --target "$host" --target wasm32-unknown-unknown >"$log" 2>&1 \
     || fail "cargo fetch failed (no network?), see $log: cargo fetch"
-
-say "tests: cargo test --release $*"
-exec cargo test --release "$@"
