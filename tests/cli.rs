@@ -753,7 +753,11 @@ fn the_explorer_without_a_display_says_so_in_one_line() {
     assert_eq!(result.status.code(), Some(2), "{stderr}");
     assert_eq!(stderr.lines().count(), 1, "one line: {stderr}");
     assert!(!stderr.contains("panicked"), "{stderr}");
-    for named in ["needs a display", "libxkbcommon-x11-0", "libwayland-client0"] {
+    for named in [
+        "needs a display",
+        "libxkbcommon-x11-0",
+        "libwayland-client0",
+    ] {
         assert!(stderr.contains(named), "names {named}: {stderr}");
     }
 }

@@ -67,7 +67,10 @@ use crate::gpu::GpuContext;
 /// the explorer its own way (`web`).
 #[cfg(not(target_arch = "wasm32"))]
 pub fn run(view: Option<&str>) -> Result<(), crate::Error> {
-    #[cfg(all(unix, not(any(target_os = "macos", target_os = "ios", target_os = "android"))))]
+    #[cfg(all(
+        unix,
+        not(any(target_os = "macos", target_os = "ios", target_os = "android"))
+    ))]
     check_keyboard_library()?;
     let view = view.map(str::to_owned);
     let options = eframe::NativeOptions {
@@ -120,12 +123,18 @@ const DRIVERS: &str =
 /// (xkbcommon-dl's loaders `expect` the library), so the explorer loads it first, through
 /// the same loader, and names the libraries to install. With no display at all, winit's
 /// own error says so.
-#[cfg(all(unix, not(any(target_os = "macos", target_os = "ios", target_os = "android"))))]
+#[cfg(all(
+    unix,
+    not(any(target_os = "macos", target_os = "ios", target_os = "android"))
+))]
 fn check_keyboard_library() -> Result<(), crate::Error> {
     let set = |name| std::env::var_os(name).is_some_and(|v| !v.is_empty());
     let wayland = set("WAYLAND_DISPLAY") || set("WAYLAND_SOCKET");
     let (loaded, packages) = if wayland {
-        (xkbcommon_dl::xkbcommon_option().is_some(), WAYLAND_LIBRARIES)
+        (
+            xkbcommon_dl::xkbcommon_option().is_some(),
+            WAYLAND_LIBRARIES,
+        )
     } else if set("DISPLAY") {
         let both = xkbcommon_dl::xkbcommon_option().is_some()
             && xkbcommon_dl::x11::xkbcommon_x11_option().is_some();
