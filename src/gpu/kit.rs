@@ -197,10 +197,6 @@ impl<'a> PipelineBuilder<'a> {
     /// The pipeline, for targets of `channels` (a frame's target decides: see
     /// [`PerTarget`]).
     pub fn build(&self, device: &wgpu::Device, channels: Channels) -> wgpu::RenderPipeline {
-        let options = wgpu::PipelineCompilationOptions {
-            constants: self.constants,
-            ..Default::default()
-        };
         let target = match self.color {
             ColorOut::Add => channels.additive(),
             ColorOut::Replace(mask) => wgpu::ColorTargetState {
@@ -208,6 +204,20 @@ impl<'a> PipelineBuilder<'a> {
                 blend: None,
                 write_mask: channels.write_mask(mask),
             },
+        };
+        self.build_into(device, target)
+    }
+
+    /// The pipeline, drawing into a target that is not a coverage target (a caller's
+    /// colour target, `target` saying its format and blending).
+    pub fn build_into(
+        &self,
+        device: &wgpu::Device,
+        target: wgpu::ColorTargetState,
+    ) -> wgpu::RenderPipeline {
+        let options = wgpu::PipelineCompilationOptions {
+            constants: self.constants,
+            ..Default::default()
         };
         device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some(self.label),

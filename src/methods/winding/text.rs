@@ -429,31 +429,18 @@ impl TextRenderer {
                 immediate_size: 0,
             });
             let module = super::SHADER.module(device);
-            let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some("text composite"),
-                layout: Some(&pipeline_layout),
-                vertex: wgpu::VertexState {
-                    module: &module,
-                    entry_point: Some("vs_composite"),
-                    compilation_options: Default::default(),
-                    buffers: &[],
-                },
-                primitive: wgpu::PrimitiveState::default(),
-                depth_stencil: None,
-                multisample: wgpu::MultisampleState::default(),
-                fragment: Some(wgpu::FragmentState {
-                    module: &module,
-                    entry_point: Some("fs_composite"),
-                    compilation_options: Default::default(),
-                    targets: &[Some(wgpu::ColorTargetState {
+            // Each run's colour, premultiplied, over what the caller drew.
+            let pipeline = kit::PipelineBuilder::new("text composite", &pipeline_layout, &module)
+                .entry_points("vs_composite", "fs_composite")
+                .topology(wgpu::PrimitiveTopology::TriangleList)
+                .build_into(
+                    device,
+                    wgpu::ColorTargetState {
                         format,
                         blend: Some(wgpu::BlendState::PREMULTIPLIED_ALPHA_BLENDING),
                         write_mask: wgpu::ColorWrites::ALL,
-                    })],
-                }),
-                multiview_mask: None,
-                cache: None,
-            });
+                    },
+                );
             (layout, pipeline)
         })
     }
