@@ -1,11 +1,25 @@
 // `glyphscope::text`'s composite: each run's exact coverage, accumulated by `winding`
-// in its own layer of a half-float array (instances added, as the row adds them, so
-// glyphs sharing a pixel sum to their union), blended once in the run's colour over
-// the caller's target. Drawn as one fullscreen triangle per run, in order.
+// in its own rectangle of a half-float page (instances added, as the row adds them, so
+// glyphs sharing a pixel sum to their union; rectangles packed apart, so runs never
+// add into each other), blended once in the run's colour over the caller's target.
+// One quad per run, over the run's own pixels only, in the runs' order: colour over
+// colour where runs overlap.
+
+struct CompositeRun {
+    // The run's pixels in the caller's target: min.xy, max.xy (whole pixels).
+    screen: vec4<f32>,
+    // Where its coverage lies: page texel = target pixel + offset.
+    offset: vec2<i32>,
+    page: u32,
+    _pad: u32,
+    // Premultiplied.
+    colour: vec4<f32>,
+}
 
 @group(2) @binding(0) var run_coverage: texture_2d_array<f32>;
-// Per run, its premultiplied colour.
-@group(2) @binding(1) var<storage, read> run_colours: array<vec4<f32>>;
+@group(2) @binding(1) var<storage, read> runs: array<CompositeRun>;
+// The caller's target size in pixels.
+@group(2) @binding(2) var<uniform> target_size: vec4<f32>;
 
 struct CompositeVertex {
     @builtin(position) position: vec4<f32>,
@@ -14,14 +28,18 @@ struct CompositeVertex {
 
 @vertex
 fn vs_composite(@builtin(vertex_index) vertex: u32, @builtin(instance_index) run: u32) -> CompositeVertex {
-    // One triangle covering the viewport: (-1, -1), (3, -1), (-1, 3).
-    let xy = vec2<f32>(f32((vertex << 1u) & 2u), f32(vertex & 2u)) * 2.0 - 1.0;
-    return CompositeVertex(vec4<f32>(xy, 0.0, 1.0), run);
+    let r = runs[run];
+    // Strip corners 0..3: (min, min), (max, min), (min, max), (max, max).
+    let pick = vec2<f32>(f32(vertex & 1u), f32(vertex >> 1u));
+    let xy = mix(r.screen.xy, r.screen.zw, pick);
+    let clip = vec2<f32>(2.0 * xy.x / target_size.x - 1.0, 1.0 - 2.0 * xy.y / target_size.y);
+    return CompositeVertex(vec4<f32>(clip, 0.0, 1.0), run);
 }
 
 @fragment
 fn fs_composite(in: CompositeVertex) -> @location(0) vec4<f32> {
-    let pixel = vec2<i32>(in.position.xy);
-    let coverage = min(textureLoad(run_coverage, pixel, i32(in.run), 0).r, 1.0);
-    return run_colours[in.run] * coverage;
+    let r = runs[in.run];
+    let texel = vec2<i32>(floor(in.position.xy)) + r.offset;
+    let coverage = min(textureLoad(run_coverage, texel, i32(r.page), 0).r, 1.0);
+    return r.colour * coverage;
 }

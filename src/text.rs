@@ -9,5 +9,5 @@
 #![doc = include_str!("../docs/library.md")]
 
 pub use crate::methods::winding::text::{
-    Content, FontId, PositionedGlyph, TextRenderer, TextRun, Uploads,
+    Content, FontId, Held, PositionedGlyph, TextRenderer, TextRun, Uploads,
 };

@@ -18,7 +18,9 @@ use std::path::{Path, PathBuf};
 use glam::{DMat3, DVec3, Mat3};
 
 use super::method_settings::baseline_cache_param;
+use super::result::Rounds;
 use super::side_run::{SideRun, write_report};
+use super::ui;
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::{Channels, CoverageTarget, GpuContext};
@@ -132,24 +134,122 @@ impl Method for Library {
     }
 }
 
+/// `glyphscope::text` as an app draws a UI with it: a run per label, prepared and
+/// rendered every frame, then trimmed (the `ui` scene). Moving, the labels scroll down
+/// by 0.37 px a frame.
+struct LibraryLabels {
+    font: crate::font::Font,
+    labels: std::sync::Arc<Vec<ui::Label>>,
+    moving: bool,
+    frame: u64,
+    text: Option<(TextRenderer, FontId)>,
+}
+
+impl Method for LibraryLabels {
+    fn name(&self) -> &'static str {
+        if self.moving { UI_MOVING } else { UI_STILL }
+    }
+
+    fn prepare(&mut self, _gpu: &GpuContext, _scene: &Scene) -> Result<(), Error> {
+        self.text = None;
+        Ok(())
+    }
+
+    fn encode(
+        &mut self,
+        gpu: &GpuContext,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &CoverageTarget,
+        _camera: &Camera,
+    ) -> Result<(), Error> {
+        let (text, font) = match &mut self.text {
+            Some(text) => text,
+            none => {
+                let mut text = TextRenderer::new(&gpu.device, &gpu.queue, target.channels.format());
+                let id = text.add_parsed_font(self.font.clone());
+                none.insert((text, id))
+            }
+        };
+        self.frame += 1;
+        let scroll = if self.moving {
+            0.37 * self.frame as f32
+        } else {
+            0.0
+        };
+        let runs: Vec<TextRun<'_>> = self
+            .labels
+            .iter()
+            .map(|label| TextRun {
+                font: *font,
+                content: Content::Text(&label.text),
+                size_px: label.size_px,
+                transform: Mat3::from_translation(glam::vec2(label.x, label.y + scroll)),
+                color: [1.0; 4],
+            })
+            .collect();
+        text.prepare(encoder, [target.width, target.height], &runs)?;
+        let mut pass = target.clearing_pass(encoder, "glyphscope::text");
+        text.render(&mut pass);
+        drop(pass);
+        text.trim();
+        Ok(())
+    }
+
+    fn gpu_bytes(&self) -> u64 {
+        self.text
+            .as_ref()
+            .map_or(0, |(text, _)| text.held().total())
+    }
+}
+
+const UI_STILL: &str = "glyphscope::text, labels still";
+const UI_MOVING: &str = "glyphscope::text, labels moving";
+
 const STILL: &str = "glyphscope::text, text still";
 const MOVING: &str = "glyphscope::text, text moving";
 
 /// How a case's method is made, anew in each round.
 type MakeMethod = Box<dyn Fn() -> Result<Box<dyn Method>, Error>>;
 
+/// A case: its name, whether its text moves (its error is not measured: a moving
+/// frame is not the reference's view), the glyphon case it is compared with, and how
+/// it is made.
+struct Case {
+    name: &'static str,
+    moving: bool,
+    glyphon: &'static str,
+    make: MakeMethod,
+}
+
+impl Case {
+    fn new(name: &'static str, moving: bool, glyphon: &'static str, make: MakeMethod) -> Case {
+        Case {
+            name,
+            moving,
+            glyphon,
+            make,
+        }
+    }
+}
+
 /// One case measured.
 struct Timed {
     name: &'static str,
+    glyphon: &'static str,
     gpu_ms: f64,
     cpu_ms: f64,
     error: Option<metrics::ErrorStats>,
     refused: Option<String>,
+    /// What it held on the GPU after its frames, where it can say.
+    held_bytes: Option<u64>,
 }
 
+/// The scene of a UI's labels (`bench::ui`): timed with `--scenes ui`.
+pub const UI_SCENE: &str = "ui";
+
 /// Times the library, the `winding` row, the atlas and glyphon on `scene_names` (their
-/// own views), interleaved in rounds; writes `library.md` into `out` and returns its
-/// path.
+/// own views), and on `ui` the library and glyphon drawing a UI's labels, interleaved
+/// in rounds; writes `library.md` into `out` and returns its path.
 pub fn run_to(
     scene_names: &[String],
     quick: bool,
@@ -157,19 +257,31 @@ pub fn run_to(
     adapter: Option<&str>,
     out: &Path,
 ) -> Result<PathBuf, Error> {
+    let ui_named = scene_names.iter().any(|n| n == UI_SCENE);
+    let others: Vec<String> = scene_names
+        .iter()
+        .filter(|n| *n != UI_SCENE)
+        .cloned()
+        .collect();
+    let defaults: &[&str] = if ui_named { &[] } else { DEFAULT_SCENES };
     let SideRun {
         scenes: bench_scenes,
         timing,
         gpu,
-        scenes_flag,
+        ..
     } = SideRun::open(
-        scene_names,
-        DEFAULT_SCENES,
+        &others,
+        defaults,
         quick,
         frames,
         adapter,
         "the library's frames are timed by them",
     )?;
+    let scenes_flag = if scene_names.is_empty() {
+        String::new()
+    } else {
+        format!(" --scenes {}", scene_names.join(","))
+    };
     let mut md = format!(
         "# The library's frame\n\n\
          Device: **{}**. `glyphscope bench --library{}{}`: `glyphscope::text` as an app \
@@ -188,96 +300,211 @@ pub fn run_to(
     for bench_scene in &bench_scenes {
         let (scene, camera) = bench_scene.args.build()?;
         let cache = [baseline_cache_param(auto_cache_size(camera.size_px_per_em))];
-        let make: [(&'static str, MakeMethod); 5] = [
-            (
+        let cases = [
+            Case::new(
                 STILL,
+                false,
+                glyphon::NAME,
                 Box::new(|| Ok(Box::new(Library::new(false)) as Box<dyn Method>)),
             ),
-            (
+            Case::new(
                 MOVING,
+                true,
+                glyphon::NAME,
                 Box::new(|| Ok(Box::new(Library::new(true)) as Box<dyn Method>)),
             ),
-            ("winding", Box::new(|| winding::INFO.create(&[]))),
-            ("atlas", Box::new(move || atlas::INFO.create(&cache))),
-            ("glyphon", Box::new(|| glyphon::INFO.create(&[]))),
+            Case::new(
+                "winding",
+                false,
+                glyphon::NAME,
+                Box::new(|| winding::INFO.create(&[])),
+            ),
+            Case::new(
+                "atlas",
+                false,
+                glyphon::NAME,
+                Box::new(move || atlas::INFO.create(&cache)),
+            ),
+            Case::new(
+                glyphon::NAME,
+                false,
+                glyphon::NAME,
+                Box::new(|| glyphon::INFO.create(&[])),
+            ),
         ];
-        let target = CoverageTarget::new(&gpu, camera.width, camera.height, Channels::Coverage)?;
-        let expected = reference::rasterize(&scene, &camera)?;
-        let mut cases: Vec<(Timed, Vec<f64>, Vec<f64>)> = make
-            .iter()
-            .map(|(name, _)| {
-                let timed = Timed {
-                    name,
-                    gpu_ms: f64::NAN,
-                    cpu_ms: f64::NAN,
-                    error: None,
-                    refused: None,
-                };
-                (timed, Vec::new(), Vec::new())
-            })
-            .collect();
-        for _ in 0..timing.rounds {
-            for ((_, create), (timed, gpu_ms, cpu_ms)) in make.iter().zip(&mut cases) {
-                if timed.refused.is_some() {
-                    continue;
-                }
-                let mut method = create()?;
-                let drawn = method.prepare(&gpu, &scene).and_then(|()| {
-                    let per_round = timing.per_round;
-                    frame::time_frames(
-                        &gpu,
-                        method.as_mut(),
-                        &target,
-                        &camera,
-                        per_round.warmup,
-                        per_round.frames,
-                    )
-                });
-                match drawn {
-                    Ok(times) => {
-                        let times = times.expect("the device has timestamps: checked above");
-                        gpu_ms.extend(metrics::median(times.iter().map(|t| t.gpu_ms)));
-                        cpu_ms.extend(metrics::median(times.iter().map(|t| t.cpu_ms)));
-                        // The moving run is 1/64 px off the view on every other frame.
-                        if timed.error.is_none() && timed.name != MOVING {
-                            let image = frame::render_image(&gpu, method.as_mut(), &camera)?;
-                            timed.error =
-                                Some(metrics::compare(&image.clamp_to_union(), &expected)?);
-                        }
-                    }
-                    Err(Error::Refused(reason)) => timed.refused = Some(reason),
-                    Err(e) => return Err(e),
-                }
-            }
-        }
-        let median = |v: &[f64]| metrics::median(v.iter().copied()).unwrap_or(f64::NAN);
-        let timed: Vec<Timed> = cases
-            .into_iter()
-            .map(|(timed, gpu_ms, cpu_ms)| Timed {
-                gpu_ms: median(&gpu_ms),
-                cpu_ms: median(&cpu_ms),
-                ..timed
-            })
-            .collect();
-        write_scene(&mut md, bench_scene.name, &timed);
+        let timed = measure(&gpu, &timing, &scene, &camera, &cases)?;
+        let heading = format!(
+            "\n## {}\n\n`glyphscope render --case {}`\n",
+            bench_scene.name, bench_scene.name
+        );
+        write_scene(&mut md, &heading, &timed, false);
+    }
+    if ui_named {
+        let timed = measure_ui(&gpu, &timing)?;
+        let heading = format!(
+            "\n## ui\n\n{} labels of {}–{} px in rows over {}×{} (`bench::ui`, the \
+             labels `examples/ui_labels.rs` draws), a run (a glyphon buffer) per label, \
+             prepared, rendered and trimmed every frame; *moving*: scrolled by 0.37 px a \
+             frame. × glyphon: over glyphon's frame with its labels still or moving alike. \
+             *GPU MB held*: `TextRenderer::held` for the library, `gpu_bytes` for the atlas \
+             (its texture and buffers); glyphon's atlas is not in its API (see the \
+             example's memory figures in docs/library.md).\n",
+            ui::LABELS,
+            10,
+            32,
+            ui::SIZE[0],
+            ui::SIZE[1],
+        );
+        write_scene(&mut md, &heading, &timed, true);
     }
     write_report(out, "library.md", &md)
 }
 
-/// One scene's table.
-fn write_scene(md: &mut String, name: &str, timed: &[Timed]) {
+/// The `ui` scene's cases: the library and glyphon drawing the labels still and
+/// moving, and the atlas drawing them still.
+fn measure_ui(gpu: &GpuContext, timing: &Rounds) -> Result<Vec<Timed>, Error> {
+    let font = crate::font::Font::default_font();
+    let labels = std::sync::Arc::new(ui::labels(&font, ui::LABELS, ui::SIZE)?);
+    if ui::any_overlap(&font, &labels)? {
+        return Err(Error::Internal(
+            "the ui scene's labels overlap: its reference would not be theirs".into(),
+        ));
+    }
+    let scene = ui::scene(&font, &labels)?;
+    let camera = ui::camera();
+    let cache = [baseline_cache_param(auto_cache_size(camera.size_px_per_em))];
+    let library = |moving| -> MakeMethod {
+        let (font, labels) = (font.clone(), labels.clone());
+        Box::new(move || {
+            Ok(Box::new(LibraryLabels {
+                font: font.clone(),
+                labels: labels.clone(),
+                moving,
+                frame: 0,
+                text: None,
+            }) as Box<dyn Method>)
+        })
+    };
+    let glyphon = |moving| -> MakeMethod {
+        let font = font.clone();
+        let labels: Vec<_> = labels
+            .iter()
+            .map(|l| (l.text.clone(), l.size_px, l.x, l.y))
+            .collect();
+        Box::new(move || {
+            Ok(Box::new(glyphon::GlyphonLabels::new(
+                font.clone(),
+                labels.clone(),
+                moving,
+            )) as Box<dyn Method>)
+        })
+    };
+    const GLYPHON_STILL: &str = "glyphon, labels still";
+    const GLYPHON_MOVING: &str = "glyphon, labels moving";
+    let cases = [
+        Case::new(UI_STILL, false, GLYPHON_STILL, library(false)),
+        Case::new(UI_MOVING, true, GLYPHON_MOVING, library(true)),
+        Case::new(
+            "atlas",
+            false,
+            GLYPHON_STILL,
+            Box::new(move || atlas::INFO.create(&cache)),
+        ),
+        Case::new(GLYPHON_STILL, false, GLYPHON_STILL, glyphon(false)),
+        Case::new(GLYPHON_MOVING, true, GLYPHON_MOVING, glyphon(true)),
+    ];
+    measure(gpu, timing, &scene, &camera, &cases)
+}
+
+/// Times `cases` on `scene` through `camera`, interleaved in rounds, each prepared anew
+/// in each round; the error of each still case against the reference.
+fn measure(
+    gpu: &GpuContext,
+    timing: &Rounds,
+    scene: &Scene,
+    camera: &Camera,
+    cases: &[Case],
+) -> Result<Vec<Timed>, Error> {
+    let target = CoverageTarget::new(gpu, camera.width, camera.height, Channels::Coverage)?;
+    let expected = reference::rasterize(scene, camera)?;
+    let mut timed: Vec<(Timed, Vec<f64>, Vec<f64>)> = cases
+        .iter()
+        .map(|case| {
+            let timed = Timed {
+                name: case.name,
+                glyphon: case.glyphon,
+                gpu_ms: f64::NAN,
+                cpu_ms: f64::NAN,
+                error: None,
+                refused: None,
+                held_bytes: None,
+            };
+            (timed, Vec::new(), Vec::new())
+        })
+        .collect();
+    for _ in 0..timing.rounds {
+        for (case, (timed, gpu_ms, cpu_ms)) in cases.iter().zip(&mut timed) {
+            if timed.refused.is_some() {
+                continue;
+            }
+            let mut method = (case.make)()?;
+            let drawn = method.prepare(gpu, scene).and_then(|()| {
+                let per_round = timing.per_round;
+                frame::time_frames(
+                    gpu,
+                    method.as_mut(),
+                    &target,
+                    camera,
+                    per_round.warmup,
+                    per_round.frames,
+                )
+            });
+            match drawn {
+                Ok(times) => {
+                    let times = times.expect("the device has timestamps: checked above");
+                    gpu_ms.extend(metrics::median(times.iter().map(|t| t.gpu_ms)));
+                    cpu_ms.extend(metrics::median(times.iter().map(|t| t.cpu_ms)));
+                    timed.held_bytes = Some(method.gpu_bytes());
+                    if timed.error.is_none() && !case.moving {
+                        let image = frame::render_image(gpu, method.as_mut(), camera)?;
+                        timed.error = Some(metrics::compare(&image.clamp_to_union(), &expected)?);
+                    }
+                }
+                Err(Error::Refused(reason)) => timed.refused = Some(reason),
+                Err(e) => return Err(e),
+            }
+        }
+    }
+    let median = |v: &[f64]| metrics::median(v.iter().copied()).unwrap_or(f64::NAN);
+    Ok(timed
+        .into_iter()
+        .map(|(timed, gpu_ms, cpu_ms)| Timed {
+            gpu_ms: median(&gpu_ms),
+            cpu_ms: median(&cpu_ms),
+            ..timed
+        })
+        .collect())
+}
+
+/// One scene's table, under `heading`; with `memory`, what each case held.
+fn write_scene(md: &mut String, heading: &str, timed: &[Timed], memory: bool) {
     let frame_of = |case: &str| {
         timed
             .iter()
             .find(|t| t.name == case && t.refused.is_none())
             .map(|t| t.gpu_ms + t.cpu_ms)
     };
-    let (atlas, glyphon) = (frame_of("atlas"), frame_of("glyphon"));
+    let atlas = frame_of("atlas");
+    let (memory_head, memory_rule) = if memory {
+        (" GPU MB held |", "---:|")
+    } else {
+        ("", "")
+    };
     let _ = writeln!(
         md,
-        "\n## {name}\n\n`glyphscope render --case {name}`\n\n\
-         | method | GPU ms | CPU ms | × atlas | × glyphon | MAE /255 | edge MAE /255 | max |\n\
-         |---|---:|---:|---:|---:|---:|---:|---:|"
+        "{heading}\n\
+         | method | GPU ms | CPU ms | × atlas | × glyphon | MAE /255 | edge MAE /255 | max |{memory_head}\n\
+         |---|---:|---:|---:|---:|---:|---:|---:|{memory_rule}"
     );
     for t in timed {
         if let Some(reason) = &t.refused {
@@ -299,14 +526,21 @@ fn write_scene(md: &mut String, name: &str, timed: &[Timed]) {
                         format!("{:.3}", e.max),
                     )
                 });
+        let held = match (memory, t.held_bytes) {
+            (false, _) => String::new(),
+            (true, Some(bytes)) if !t.name.starts_with("glyphon") => {
+                format!(" {:.1} |", bytes as f64 / 1e6)
+            }
+            (true, _) => " — |".into(),
+        };
         let _ = writeln!(
             md,
-            "| {} | {:.2} | {:.3} | {} | {} | {mae} | {edge} | {max} |",
+            "| {} | {:.2} | {:.3} | {} | {} | {mae} | {edge} | {max} |{held}",
             t.name,
             t.gpu_ms,
             t.cpu_ms,
             ratio(atlas),
-            ratio(glyphon),
+            ratio(frame_of(t.glyphon)),
         );
     }
 }

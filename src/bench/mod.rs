@@ -40,6 +40,7 @@ pub mod run;
 pub mod scaling;
 pub mod scenes;
 pub mod side_run;
+pub mod ui;
 pub mod winding_cost;
 
 use std::path::Path;

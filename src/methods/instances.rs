@@ -131,6 +131,17 @@ impl Instances {
         }
     }
 
+    /// Gives back room past four times `count` instances (a buffer that grew for frames
+    /// long gone), keeping twice `count`.
+    pub fn shrink_to(&mut self, gpu: &GpuContext, count: usize) {
+        let room = self.buffer.size() as usize / size_of::<GpuInstance>();
+        if room > 4 * count.max(1) {
+            let (buffer, bind_group) = Instances::storage(gpu, &self.frame, 2 * count.max(1));
+            self.buffer = buffer;
+            self.bind_group = bind_group;
+        }
+    }
+
     /// Writes `items` as the instances to draw and `size` as the target's, for
     /// instances placed by their caller; returns the bytes uploaded.
     pub fn write(&mut self, gpu: &GpuContext, size: [u32; 2], items: &[GpuInstance]) -> u64 {

@@ -36,7 +36,7 @@ impl Glyph {
     /// [`crate::geometry::merge_overlaps`] of the outline, once: None where the outline
     /// is its own union, or where the union cannot be taken (the glyph is then drawn as
     /// the font has it).
-    fn union(&self, units_per_em: f64) -> Option<&Outline> {
+    pub(crate) fn union(&self, units_per_em: f64) -> Option<&Outline> {
         self.union
             .get_or_init(|| {
                 crate::geometry::merge_overlaps(&self.outline, units_per_em)

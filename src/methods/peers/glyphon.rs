@@ -246,6 +246,197 @@ impl Prepared {
     }
 }
 
+/// A font system holding `font` alone (no system font to fall back on or be matched
+/// instead), its family name and the weight cosmic-text is to ask for.
+fn font_system_of(font: &crate::font::Font) -> Result<(FontSystem, String, Weight), Error> {
+    let weight = weight_for(&font.variations(), &font.axes())?;
+    let bytes: Arc<dyn AsRef<[u8]> + Send + Sync> = Arc::new(font.data());
+    let mut db = glyphon::fontdb::Database::new();
+    db.load_font_source(glyphon::fontdb::Source::Binary(bytes));
+    let font_system = FontSystem::new_with_locale_and_db("en-US".into(), db);
+    let face = font_system.db().faces().next().ok_or_else(|| {
+        Error::Font(format!(
+            "glyphon's font database cannot read '{}'",
+            font.name()
+        ))
+    })?;
+    let family = face
+        .families
+        .first()
+        .map(|f| f.0.clone())
+        .unwrap_or_default();
+    // A font with no weight axis: the face's own weight, which cosmic-text matches.
+    let weight = weight.unwrap_or(face.weight);
+    Ok((font_system, family, weight))
+}
+
+/// glyphon as an app draws a UI with it: a buffer per label, laid out once, and every
+/// frame a text area per label prepared and rendered (the `ui` scene of `glyphscope
+/// bench --library`). Moving, the labels scroll down by 0.37 px a frame.
+pub struct GlyphonLabels {
+    font: crate::font::Font,
+    /// (text, px per em, first baseline's start x and y in target pixels).
+    labels: Vec<(String, f32, f32, f32)>,
+    moving: bool,
+    frame: u64,
+    state: Option<LabelsState>,
+    image: Option<PeerImage>,
+}
+
+struct LabelsState {
+    font_system: FontSystem,
+    swash: SwashCache,
+    atlas: TextAtlas,
+    viewport: Viewport,
+    renderer: TextRenderer,
+    /// Per label: its buffer and the top of its text area above its first baseline.
+    buffers: Vec<(Buffer, f32)>,
+}
+
+impl GlyphonLabels {
+    pub fn new(
+        font: crate::font::Font,
+        labels: Vec<(String, f32, f32, f32)>,
+        moving: bool,
+    ) -> Self {
+        GlyphonLabels {
+            font,
+            labels,
+            moving,
+            frame: 0,
+            state: None,
+            image: None,
+        }
+    }
+}
+
+impl Method for GlyphonLabels {
+    fn name(&self) -> &'static str {
+        if self.moving {
+            "glyphon, labels moving"
+        } else {
+            "glyphon, labels still"
+        }
+    }
+
+    fn prepare(&mut self, gpu: &GpuContext, _scene: &Scene) -> Result<(), Error> {
+        let line_advance = positive_line_advance(&self.font)? / self.font.units_per_em();
+        let (mut font_system, family, weight) = font_system_of(&self.font)?;
+        let cache = Cache::new(&gpu.device);
+        let mut atlas = TextAtlas::with_color_mode(
+            &gpu.device,
+            &gpu.queue,
+            &cache,
+            super::PEER_FORMAT,
+            ColorMode::Web,
+        );
+        let renderer = TextRenderer::new(
+            &mut atlas,
+            &gpu.device,
+            wgpu::MultisampleState::default(),
+            None,
+        );
+        let viewport = Viewport::new(&gpu.device, &cache);
+        let attrs = Attrs::new().family(Family::Name(&family)).weight(weight);
+        let buffers = self
+            .labels
+            .iter()
+            .map(|(text, size, _, _)| {
+                let metrics = Metrics::new(*size, *size * line_advance as f32);
+                let mut buffer = Buffer::new(&mut font_system, metrics);
+                buffer.set_size(None, None);
+                buffer.set_text(text, &attrs, Shaping::Advanced, None);
+                buffer.shape_until_scroll(&mut font_system, false);
+                let baseline = buffer.layout_runs().next().map_or(0.0, |r| r.line_y);
+                (buffer, baseline)
+            })
+            .collect();
+        self.state = Some(LabelsState {
+            font_system,
+            swash: SwashCache::new(),
+            atlas,
+            viewport,
+            renderer,
+            buffers,
+        });
+        Ok(())
+    }
+
+    fn encode(
+        &mut self,
+        gpu: &GpuContext,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &CoverageTarget,
+        _camera: &Camera,
+    ) -> Result<(), Error> {
+        let state = self.state.as_mut().ok_or_else(|| not_prepared(NAME))?;
+        self.frame += 1;
+        let scroll = if self.moving {
+            0.37 * self.frame as f32
+        } else {
+            0.0
+        };
+        state.viewport.update(
+            &gpu.queue,
+            Resolution {
+                width: target.width,
+                height: target.height,
+            },
+        );
+        let areas =
+            state
+                .buffers
+                .iter()
+                .zip(&self.labels)
+                .map(|((buffer, baseline), (_, _, x, y))| TextArea {
+                    buffer,
+                    left: *x,
+                    top: *y - *baseline + scroll,
+                    scale: 1.0,
+                    bounds: TextBounds::default(),
+                    default_color: Color::rgb(255, 255, 255),
+                    custom_glyphs: &[],
+                });
+        state
+            .renderer
+            .prepare(
+                &gpu.device,
+                &gpu.queue,
+                &mut state.font_system,
+                &mut state.atlas,
+                &state.viewport,
+                areas,
+                &mut state.swash,
+            )
+            .map_err(|e| match e {
+                glyphon::PrepareError::AtlasFull => {
+                    Error::Refused("glyphon's atlas cannot hold the labels' glyphs".into())
+                }
+            })?;
+        let mut image = PeerImage::sized(self.image.take(), gpu, NAME, target.width, target.height);
+        {
+            let mut pass = image.clearing_pass(encoder, NAME);
+            state
+                .renderer
+                .render(&state.atlas, &state.viewport, &mut pass)
+                .map_err(|e| Error::Gpu(format!("glyphon cannot draw: {e}")))?;
+        }
+        state.atlas.trim();
+        image.copy_into(gpu, encoder, target);
+        self.image = Some(image);
+        Ok(())
+    }
+
+    fn peer_gpu_time(&mut self, gpu: &GpuContext) -> Result<Option<PeerGpuTime>, Error> {
+        super::gpu_time(self.image.as_ref(), gpu, 0.0)
+    }
+
+    /// Only the texture glyphon draws into: its atlas's size is not in its API.
+    fn gpu_bytes(&self) -> u64 {
+        self.image.as_ref().map_or(0, PeerImage::bytes)
+    }
+}
+
 impl Method for Glyphon {
     fn name(&self) -> &'static str {
         NAME
@@ -263,26 +454,8 @@ impl Method for Glyphon {
         let Some(text) = &source.text else {
             return refuse("this scene is one glyph drawn by its id, not text");
         };
-        let weight = weight_for(&source.font.variations(), &source.font.axes())?;
+        let (font_system, family, weight) = font_system_of(&source.font)?;
         let line_advance_units = positive_line_advance(&source.font)?;
-        // The scene's font alone: no system font to fall back on or be matched instead.
-        let bytes: Arc<dyn AsRef<[u8]> + Send + Sync> = Arc::new(source.font.data());
-        let mut db = glyphon::fontdb::Database::new();
-        db.load_font_source(glyphon::fontdb::Source::Binary(bytes));
-        let font_system = FontSystem::new_with_locale_and_db("en-US".into(), db);
-        let face = font_system.db().faces().next().ok_or_else(|| {
-            Error::Font(format!(
-                "glyphon's font database cannot read '{}'",
-                source.font.name()
-            ))
-        })?;
-        let family = face
-            .families
-            .first()
-            .map(|f| f.0.clone())
-            .unwrap_or_default();
-        // A font with no weight axis: the face's own weight, which cosmic-text matches.
-        let weight = weight.unwrap_or(face.weight);
         let cache = Cache::new(&gpu.device);
         let mut atlas = TextAtlas::with_color_mode(
             &gpu.device,
