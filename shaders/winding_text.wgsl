@@ -21,9 +21,12 @@ struct CompositeRun {
 // The caller's target size in pixels.
 @group(2) @binding(2) var<uniform> target_size: vec4<f32>;
 
+// The run's record is read once per vertex and handed to its fragments flat: a
+// storage read per fragment costs a software rasterizer more than the blend.
 struct CompositeVertex {
     @builtin(position) position: vec4<f32>,
-    @location(0) @interpolate(flat) run: u32,
+    @location(0) @interpolate(flat) colour: vec4<f32>,
+    @location(1) @interpolate(flat) offset_page: vec3<i32>,
 }
 
 @vertex
@@ -33,13 +36,12 @@ fn vs_composite(@builtin(vertex_index) vertex: u32, @builtin(instance_index) run
     let pick = vec2<f32>(f32(vertex & 1u), f32(vertex >> 1u));
     let xy = mix(r.screen.xy, r.screen.zw, pick);
     let clip = vec2<f32>(2.0 * xy.x / target_size.x - 1.0, 1.0 - 2.0 * xy.y / target_size.y);
-    return CompositeVertex(vec4<f32>(clip, 0.0, 1.0), run);
+    return CompositeVertex(vec4<f32>(clip, 0.0, 1.0), r.colour, vec3<i32>(r.offset, i32(r.page)));
 }
 
 @fragment
 fn fs_composite(in: CompositeVertex) -> @location(0) vec4<f32> {
-    let r = runs[in.run];
-    let texel = vec2<i32>(floor(in.position.xy)) + r.offset;
-    let coverage = min(textureLoad(run_coverage, texel, i32(r.page), 0).r, 1.0);
-    return r.colour * coverage;
+    let texel = vec2<i32>(in.position.xy) + in.offset_page.xy;
+    let coverage = min(textureLoad(run_coverage, texel, in.offset_page.z, 0).r, 1.0);
+    return in.colour * coverage;
 }

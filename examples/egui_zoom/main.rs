@@ -16,7 +16,11 @@ fn main() {
     let result = eframe::run_native(
         "egui_zoom",
         options,
-        Box::new(|cc| Ok(Box::new(zoom::ZoomApp::new(cc)?) as Box<dyn eframe::App>)),
+        Box::new(|cc| {
+            let mut app = zoom::ZoomApp::new(cc)?;
+            app.controls = true;
+            Ok(Box::new(app) as Box<dyn eframe::App>)
+        }),
     );
     if let Err(e) = result {
         eprintln!("egui_zoom: {e}");

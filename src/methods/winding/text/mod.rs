@@ -160,8 +160,9 @@ struct Drawn {
     /// The composite's records, and each one's run.
     records: Vec<CompositeRun>,
     record_runs: Vec<u32>,
-    /// Pages the last drawn frame used.
+    /// Pages the last drawn frame used, and the height of them it used.
     pages_used: u32,
+    height_used: u32,
     instances: usize,
 }
 
@@ -308,7 +309,7 @@ impl TextRenderer {
         }
 
         let page = self.page_size(viewport);
-        let pages_needed = self.place(work, viewport, page)?;
+        let (pages_needed, height_used) = self.place(work, viewport, page)?;
         let gpu = self.gpu.clone();
         let limit = gpu.device.limits().max_texture_array_layers;
         if pages_needed > limit {
@@ -319,7 +320,13 @@ impl TextRenderer {
             )));
         }
         gpu.catching_errors("preparing text", || {
-            self.commit(work, encoder, viewport, page, pages_needed, runs);
+            // One page only as tall as its shelves: clearing and drawing a few labels'
+            // page costs their pixels, not the viewport's.
+            let needed = [
+                page[0],
+                height_used.max(1).next_multiple_of(64).min(page[1]),
+            ];
+            self.commit(work, encoder, viewport, (needed, page), pages_needed, runs);
             Ok(())
         })
     }
@@ -353,9 +360,15 @@ impl TextRenderer {
     }
 
     /// Places every run: each glyph's map into the target, the run's rectangle of
-    /// pixels, and where it goes in the pages; returns the pages needed. Fails, leaving
+    /// pixels, and where it goes in the pages; returns the pages needed and the height
+    /// they use. Fails, leaving
     /// what is drawn as it was, where a transform puts text behind the eye.
-    fn place(&self, work: &mut Work, viewport: [u32; 2], page: [u32; 2]) -> Result<u32, Error> {
+    fn place(
+        &self,
+        work: &mut Work,
+        viewport: [u32; 2],
+        page: [u32; 2],
+    ) -> Result<(u32, u32), Error> {
         work.placed.clear();
         work.glyphs.clear();
         work.rects.clear();
@@ -416,7 +429,7 @@ impl TextRenderer {
         work: &mut Work,
         encoder: &mut wgpu::CommandEncoder,
         viewport: [u32; 2],
-        page: [u32; 2],
+        (page, most): ([u32; 2], [u32; 2]),
         pages_needed: u32,
         runs: &[TextRun<'_>],
     ) {
@@ -435,9 +448,11 @@ impl TextRenderer {
             &gpu,
             composite,
             page,
+            most,
             pages_needed,
             work.rects.len(),
         );
+        let page = pages.size;
 
         // Each glyph in its run's rectangle of the pages: the run's pixels moved there
         // by whole pixels, so that each pixel's coverage is the one it has on screen.
@@ -550,6 +565,7 @@ impl TextRenderer {
         );
         drawn.viewport = viewport;
         drawn.pages_used = pages_needed;
+        drawn.height_used = height_used(&page, pages_needed, &work.placements, &work.rects);
         drawn.instances = work.instances.len();
         drawn.valid = true;
         self.pages = Some(pages);
@@ -595,10 +611,10 @@ impl TextRenderer {
             }
         }
         // The next frame that draws makes smaller pages.
-        self.shrink_pages = self
-            .pages
-            .as_ref()
-            .is_some_and(|p| p.count > 2 * self.drawn.pages_used.max(1));
+        let drawn = &self.drawn;
+        self.shrink_pages = self.pages.as_ref().is_some_and(|p| {
+            p.count > 2 * drawn.pages_used.max(1) || p.size[1] > 2 * drawn.height_used.max(64)
+        });
         let instances = self.drawn.instances.max(256);
         self.instances.shrink_to(&self.gpu, instances);
     }
@@ -661,6 +677,17 @@ impl TextRenderer {
             .insert(font_index, content, layout.clone(), self.frame);
         Ok(layout)
     }
+}
+
+/// The height of the pages `placements` of `rects` use.
+fn height_used(page: &[u32; 2], pages: u32, placements: &[Placement], rects: &[PixelRect]) -> u32 {
+    if pages > 1 {
+        return page[1];
+    }
+    (placements.iter().zip(rects))
+        .map(|(p, r)| p.origin[1] + r.height())
+        .max()
+        .unwrap_or(0)
 }
 
 /// The whole pixels `ink` (a glyph box in target pixels) may touch, grown by one, within

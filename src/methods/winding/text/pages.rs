@@ -34,19 +34,22 @@ pub struct Placement {
 
 /// Packs `rects` (each no larger than `page`) into pages of `page` pixels, in shelves
 /// filled tallest first; writes each one's placement into `placements` (in `rects`'
-/// order) and returns how many pages they take. `order` is scratch space.
+/// order) and returns how many pages they take and how much of the pages' height they
+/// use (the first page's, where there is one; all of it where there are more). `order`
+/// is scratch space.
 pub fn pack(
     rects: &[PixelRect],
     page: [u32; 2],
     order: &mut Vec<u32>,
     placements: &mut Vec<Placement>,
-) -> u32 {
+) -> (u32, u32) {
     order.clear();
     order.extend(0..rects.len() as u32);
     order.sort_by_key(|&i| std::cmp::Reverse(rects[i as usize].height()));
     placements.clear();
     placements.resize(rects.len(), Placement::default());
     let (mut page_index, mut x, mut y, mut shelf) = (0u32, 0u32, 0u32, 0u32);
+    let mut used = 0u32;
     for &i in order.iter() {
         let (w, h) = (rects[i as usize].width(), rects[i as usize].height());
         debug_assert!(w <= page[0] && h <= page[1]);
@@ -63,8 +66,14 @@ pub fn pack(
         };
         x += w;
         shelf = shelf.max(h);
+        used = if page_index > 0 {
+            page[1]
+        } else {
+            used.max(y + h)
+        };
     }
-    if rects.is_empty() { 0 } else { page_index + 1 }
+    let pages = if rects.is_empty() { 0 } else { page_index + 1 };
+    (pages, used)
 }
 
 /// `CompositeRun` of `winding_text.wgsl`: a run's rectangle in the caller's target, where
@@ -114,7 +123,7 @@ impl Composite {
             ty,
             count: None,
         };
-        let both = wgpu::ShaderStages::VERTEX_FRAGMENT;
+        let both = wgpu::ShaderStages::VERTEX;
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("text composite"),
             entries: &[
@@ -181,28 +190,37 @@ pub struct Pages {
 }
 
 impl Pages {
-    /// Pages that hold `count` pages of `size` and `runs` composite records: `current`
-    /// where it does, else made anew (at least twice the records, so that a growing
-    /// UI does not make them every frame).
+    /// Pages that hold `count` pages of at least `size` and `runs` composite records:
+    /// `current` where it does, else made anew (at least twice the records, and twice
+    /// the height up to `most`, so that a growing UI does not make them every frame).
     pub fn fitting(
         current: Option<Pages>,
         gpu: &GpuContext,
         composite: &Composite,
         size: [u32; 2],
+        most: [u32; 2],
         count: u32,
         runs: usize,
     ) -> Pages {
         let room = |p: &Pages| (p.runs.size() as usize) / size_of::<CompositeRun>();
+        let holds = |p: &Pages| p.size[0] >= size[0] && p.size[1] >= size[1];
         match current {
-            Some(p) if p.size == size && p.count >= count && room(&p) >= runs => p,
+            Some(p)
+                if holds(&p) && p.size[0] <= most[0] && p.count >= count && room(&p) >= runs =>
+            {
+                p
+            }
             current => {
                 let runs = match &current {
                     Some(p) if room(p) >= runs => room(p),
                     _ => runs.max(16).next_power_of_two(),
                 };
-                let count = match &current {
-                    Some(p) if p.size == size => count.max(p.count),
-                    _ => count,
+                let (size, count) = match &current {
+                    Some(p) if p.size[0] == size[0] => (
+                        [size[0], size[1].max(2 * p.size[1]).min(most[1])],
+                        count.max(p.count),
+                    ),
+                    _ => (size, count),
                 };
                 Pages::new(gpu, composite, size, count.max(1), runs)
             }
@@ -341,7 +359,8 @@ mod tests {
         };
         let rects: Vec<PixelRect> = (0..200).map(|_| rect(next(40), next(30))).collect();
         let (mut order, mut placements) = (Vec::new(), Vec::new());
-        let pages = pack(&rects, page, &mut order, &mut placements);
+        let (pages, used) = pack(&rects, page, &mut order, &mut placements);
+        assert!(used <= page[1] && (pages <= 1 || used == page[1]));
         let mut owner = vec![None; (pages * 40 * 30) as usize];
         for (i, (r, p)) in rects.iter().zip(&placements).enumerate() {
             assert!(p.page < pages);
@@ -367,9 +386,9 @@ mod tests {
     #[test]
     fn nothing_packs_into_no_pages() {
         let (mut order, mut placements) = (Vec::new(), Vec::new());
-        assert_eq!(pack(&[], [64, 64], &mut order, &mut placements), 0);
-        let one = [rect(64, 64)];
-        assert_eq!(pack(&one, [64, 64], &mut order, &mut placements), 1);
+        assert_eq!(pack(&[], [64, 64], &mut order, &mut placements), (0, 0));
+        let one = [rect(64, 20)];
+        assert_eq!(pack(&one, [64, 64], &mut order, &mut placements), (1, 20));
         assert_eq!(
             placements,
             [Placement {
