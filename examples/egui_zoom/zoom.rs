@@ -104,8 +104,9 @@ impl ZoomApp {
         });
         let panel_bottom = PANEL_TOP + 9.0 * PANEL.div_ceil(PANEL_COLUMNS) as f32;
         Ok(ZoomApp {
+            // Room above the lines for the controls.
             scene_rect: egui::Rect::from_min_max(
-                egui::pos2(-10.0, -10.0),
+                egui::pos2(-10.0, -34.0),
                 egui::pos2(470.0, panel_bottom),
             ),
             scene_to_screen: Mat3::IDENTITY,
@@ -177,6 +178,7 @@ impl eframe::App for ZoomApp {
                     egui::vec2(420.0, 24.0),
                 );
                 ui.scope_builder(egui::UiBuilder::new().max_rect(corner), |ui| {
+                    ui.visuals_mut().override_text_color = Some(egui::Color32::from_gray(40));
                     ui.horizontal(|ui| {
                         ui.checkbox(&mut self.animate, "animate");
                         let ms = ui.ctx().input(|i| i.stable_dt) * 1e3;

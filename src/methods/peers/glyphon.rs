@@ -270,6 +270,27 @@ fn font_system_of(font: &crate::font::Font) -> Result<(FontSystem, String, Weigh
     Ok((font_system, family, weight))
 }
 
+/// glyphon's atlas (in the peers' picture format, blending in linear light as the web
+/// does), its viewport and a renderer, as its examples make them.
+fn atlas_viewport_renderer(gpu: &GpuContext) -> (TextAtlas, Viewport, TextRenderer) {
+    let cache = Cache::new(&gpu.device);
+    let mut atlas = TextAtlas::with_color_mode(
+        &gpu.device,
+        &gpu.queue,
+        &cache,
+        super::PEER_FORMAT,
+        ColorMode::Web,
+    );
+    let renderer = TextRenderer::new(
+        &mut atlas,
+        &gpu.device,
+        wgpu::MultisampleState::default(),
+        None,
+    );
+    let viewport = Viewport::new(&gpu.device, &cache);
+    (atlas, viewport, renderer)
+}
+
 /// glyphon as an app draws a UI with it: a buffer per label, laid out once, and every
 /// frame a text area per label prepared and rendered (the `ui` scene of `glyphscope
 /// bench --library`). Moving, the labels scroll down by 0.37 px a frame.
@@ -322,21 +343,7 @@ impl Method for GlyphonLabels {
     fn prepare(&mut self, gpu: &GpuContext, _scene: &Scene) -> Result<(), Error> {
         let line_advance = positive_line_advance(&self.font)? / self.font.units_per_em();
         let (mut font_system, family, weight) = font_system_of(&self.font)?;
-        let cache = Cache::new(&gpu.device);
-        let mut atlas = TextAtlas::with_color_mode(
-            &gpu.device,
-            &gpu.queue,
-            &cache,
-            super::PEER_FORMAT,
-            ColorMode::Web,
-        );
-        let renderer = TextRenderer::new(
-            &mut atlas,
-            &gpu.device,
-            wgpu::MultisampleState::default(),
-            None,
-        );
-        let viewport = Viewport::new(&gpu.device, &cache);
+        let (atlas, viewport, renderer) = atlas_viewport_renderer(gpu);
         let attrs = Attrs::new().family(Family::Name(&family)).weight(weight);
         let buffers = self
             .labels
@@ -456,21 +463,7 @@ impl Method for Glyphon {
         };
         let (font_system, family, weight) = font_system_of(&source.font)?;
         let line_advance_units = positive_line_advance(&source.font)?;
-        let cache = Cache::new(&gpu.device);
-        let mut atlas = TextAtlas::with_color_mode(
-            &gpu.device,
-            &gpu.queue,
-            &cache,
-            super::PEER_FORMAT,
-            ColorMode::Web,
-        );
-        let renderer = TextRenderer::new(
-            &mut atlas,
-            &gpu.device,
-            wgpu::MultisampleState::default(),
-            None,
-        );
-        let viewport = Viewport::new(&gpu.device, &cache);
+        let (atlas, viewport, renderer) = atlas_viewport_renderer(gpu);
         // No wrapping: each line of the text is one line of the layout.
         let mut buffer = Buffer::new_empty(Metrics::new(1.0, 1.0));
         buffer.set_size(None, None);
