@@ -135,6 +135,7 @@ impl Font {
                 "'{name}' has no outlines glyphscope can draw: {why}"
             ))
         })?;
+        check_axes(&face).map_err(|why| Error::Font(format!("'{name}': {why}")))?;
         // rustybuzz must accept it too, or shaping would fail later with a vaguer message.
         if rustybuzz::Face::from_slice(&data, index).is_none() {
             return Err(Error::Font(format!(
@@ -434,6 +435,55 @@ impl OutlineTable {
 
 /// The sfntVersion of the font's first face (a collection's header points to it).
 /// The sfntVersion of face `index` (a collection's `index`-th table directory).
+/// Checks the variation axes as the font's `fvar` table writes them: each axis's
+/// minimum, default and maximum finite and in that order. ttf-parser reorders them
+/// (its minimum is never above the default), but the other readers a font reaches do
+/// not — the peers' rasterizers clamp each axis between its minimum and maximum, and
+/// Rust's `clamp` panics where the maximum lies below the minimum (glyphon on a corrupt
+/// `fvar`) — so a broken axis is refused here, where every row reads the font.
+fn check_axes(face: &ttf_parser::Face<'_>) -> Result<(), String> {
+    let Some(fvar) = face.raw_face().table(ttf_parser::Tag::from_bytes(b"fvar")) else {
+        return Ok(());
+    };
+    let u16_at = |at: usize| {
+        fvar.get(at..at + 2)
+            .map(|b| u16::from_be_bytes([b[0], b[1]]))
+    };
+    let fixed_at = |at: usize| {
+        fvar.get(at..at + 4)
+            .map(|b| f64::from(i32::from_be_bytes([b[0], b[1], b[2], b[3]])) / 65536.0)
+    };
+    let truncated = || "its fvar table (variation axes) is cut short".to_owned();
+    let (Some(first), Some(count), Some(size)) = (u16_at(4), u16_at(8), u16_at(10)) else {
+        return Err(truncated());
+    };
+    if count > 0 && size < 20 {
+        return Err(format!(
+            "its fvar table's axis records are {size} bytes, under 20"
+        ));
+    }
+    for k in 0..usize::from(count) {
+        let at = usize::from(first) + k * usize::from(size);
+        let tag = fvar
+            .get(at..at + 4)
+            .map(|t| String::from_utf8_lossy(t).into_owned())
+            .ok_or_else(truncated)?;
+        let (Some(min), Some(default), Some(max)) =
+            (fixed_at(at + 4), fixed_at(at + 8), fixed_at(at + 12))
+        else {
+            return Err(truncated());
+        };
+        if !(min <= default && default <= max) {
+            return Err(format!(
+                "its variation axis '{}' is broken: minimum {min}, default {default}, maximum \
+                 {max} (the minimum must not exceed the default, nor the default the maximum)",
+                tag.trim()
+            ));
+        }
+    }
+    Ok(())
+}
+
 fn sfnt_version(data: &[u8], index: u32) -> Option<[u8; 4]> {
     let at = |offset: usize| -> Option<[u8; 4]> { data.get(offset..offset + 4)?.try_into().ok() };
     let version = at(0)?;

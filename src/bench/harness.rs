@@ -93,6 +93,8 @@ struct Timed {
     case: Case,
     gpu_ms: f64,
     cpu_ms: f64,
+    /// Why the case could not be drawn (glyphon on a tilted view): its row says n/a.
+    refused: Option<String>,
 }
 
 /// Measures every case on `scene_names` (their own views) on the adapter named by
@@ -136,34 +138,47 @@ pub fn run_to(
         let cache = auto_cache_size(camera.size_px_per_em);
         let target = |channels| CoverageTarget::new(&gpu, camera.width, camera.height, channels);
         let targets = [target(Channels::Coverage)?, target(Channels::Picture)?];
-        let mut samples: Vec<(Vec<f64>, Vec<f64>)> = vec![Default::default(); CASES.len()];
+        let mut samples: Vec<(Vec<f64>, Vec<f64>, Option<String>)> =
+            vec![Default::default(); CASES.len()];
         for _ in 0..timing.rounds {
-            for (case, (gpu_ms, cpu_ms)) in CASES.iter().zip(&mut samples) {
+            for (case, (gpu_ms, cpu_ms, refused)) in CASES.iter().zip(&mut samples) {
+                if refused.is_some() {
+                    continue;
+                }
                 let mut method = case.method(cache)?;
-                method.prepare(&gpu, &scene)?;
                 let target = &targets[usize::from(case.channels() == Channels::Picture)];
                 let per_round = timing.per_round;
-                let times = frame::time_frames(
-                    &gpu,
-                    method.as_mut(),
-                    target,
-                    &camera,
-                    per_round.warmup,
-                    per_round.frames,
-                )?
-                .expect("the device has timestamps: checked above");
-                gpu_ms.extend(metrics::median(times.iter().map(|t| t.gpu_ms)));
-                cpu_ms.extend(metrics::median(times.iter().map(|t| t.cpu_ms)));
+                let drawn = method.prepare(&gpu, &scene).and_then(|()| {
+                    frame::time_frames(
+                        &gpu,
+                        method.as_mut(),
+                        target,
+                        &camera,
+                        per_round.warmup,
+                        per_round.frames,
+                    )
+                });
+                match drawn {
+                    Ok(times) => {
+                        let times = times.expect("the device has timestamps: checked above");
+                        gpu_ms.extend(metrics::median(times.iter().map(|t| t.gpu_ms)));
+                        cpu_ms.extend(metrics::median(times.iter().map(|t| t.cpu_ms)));
+                    }
+                    // A view the case cannot draw (glyphon: a tilt) is its row's n/a.
+                    Err(Error::Refused(why)) => *refused = Some(why),
+                    Err(e) => return Err(e),
+                }
             }
         }
         let median = |v: &[f64]| metrics::median(v.iter().copied()).unwrap_or(f64::NAN);
         let timed: Vec<Timed> = CASES
             .iter()
             .zip(&samples)
-            .map(|(&case, (gpu_ms, cpu_ms))| Timed {
+            .map(|(&case, (gpu_ms, cpu_ms, refused))| Timed {
                 case,
                 gpu_ms: median(gpu_ms),
                 cpu_ms: median(cpu_ms),
+                refused: refused.clone(),
             })
             .collect();
         write_scene(
@@ -180,7 +195,7 @@ pub fn run_to(
 fn write_scene(md: &mut String, name: &str, command: &str, timed: &[Timed]) {
     let glyphon = timed
         .iter()
-        .find(|t| t.case == Case::Glyphon)
+        .find(|t| t.case == Case::Glyphon && t.refused.is_none())
         .map(|t| t.gpu_ms + t.cpu_ms);
     let _ = writeln!(
         md,
@@ -190,6 +205,15 @@ fn write_scene(md: &mut String, name: &str, command: &str, timed: &[Timed]) {
     );
     let mut before: Option<&Timed> = None;
     for t in timed {
+        if let Some(why) = &t.refused {
+            let _ = writeln!(
+                md,
+                "| {} | {} | n/a — {why} | | | |",
+                t.case.step(),
+                t.case.target()
+            );
+            continue;
+        }
         let same_target = |b: &&Timed| match (b.case, t.case) {
             (Case::Atlas(_, a), Case::Atlas(_, b)) => a == b,
             _ => false,

@@ -79,7 +79,15 @@ impl MethodInfo {
                 self.name
             ))
         })?;
-        constructor(&params)
+        // Behind the net: a panic in the row, now or in any later call, is an error
+        // naming it (`guarded`).
+        let made = super::guarded::catching(|| constructor(&params)).map_err(|cause| {
+            Error::Refused(format!(
+                "{} failed to start (a panic, caught: {cause})",
+                self.name
+            ))
+        })?;
+        made.map(super::guarded::Guarded::wrap)
     }
 }
 

@@ -207,6 +207,7 @@ pub mod atlas;
 pub mod bounds;
 pub mod frame;
 pub mod glyph_atlas;
+pub mod guarded;
 pub mod info;
 pub mod instances;
 pub mod params;

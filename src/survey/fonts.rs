@@ -2,6 +2,7 @@
 //! one sorted list (the unit a shard takes and a resumed run skips), and each file's
 //! faces at the instances asked for.
 
+use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
 use crate::Error;
@@ -19,7 +20,7 @@ pub fn files(paths: &[PathBuf]) -> Result<Vec<PathBuf>, Error> {
         let meta = std::fs::metadata(path)
             .map_err(|e| Error::Input(format!("--fonts: cannot read '{}': {e}", path.display())))?;
         if meta.is_dir() {
-            walk(path, &mut found)?;
+            walk(path, &mut found, &mut HashSet::new())?;
         } else {
             found.push(path.clone());
         }
@@ -40,7 +41,14 @@ pub fn files(paths: &[PathBuf]) -> Result<Vec<PathBuf>, Error> {
     Ok(found)
 }
 
-fn walk(dir: &Path, found: &mut Vec<PathBuf>) -> Result<(), Error> {
+/// The font files under `dir`, each folder visited once by its real path: a link back
+/// to a folder above (or to any folder already walked) is not followed again.
+fn walk(dir: &Path, found: &mut Vec<PathBuf>, visited: &mut HashSet<PathBuf>) -> Result<(), Error> {
+    let real = std::fs::canonicalize(dir)
+        .map_err(|e| Error::Input(format!("--fonts: cannot resolve '{}': {e}", dir.display())))?;
+    if !visited.insert(real) {
+        return Ok(());
+    }
     let entries = std::fs::read_dir(dir)
         .map_err(|e| Error::Input(format!("--fonts: cannot list '{}': {e}", dir.display())))?;
     for entry in entries {
@@ -48,7 +56,7 @@ fn walk(dir: &Path, found: &mut Vec<PathBuf>) -> Result<(), Error> {
             .map_err(|e| Error::Input(format!("--fonts: cannot list '{}': {e}", dir.display())))?
             .path();
         if path.is_dir() {
-            walk(&path, found)?;
+            walk(&path, found, visited)?;
         } else if path
             .extension()
             .and_then(|e| e.to_str())
@@ -155,6 +163,28 @@ pub fn faces(file: &Path, instances: &[Vec<(String, f32)>]) -> (Vec<Face>, bool)
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A folder holding a font, a link back to itself from a subfolder (a loop) and a
+    /// link to nowhere with a font's name: the walk ends, the font is listed once, and
+    /// the broken link is listed for its row to say why it cannot be read.
+    #[cfg(unix)]
+    #[test]
+    fn a_link_to_a_parent_folder_is_walked_once() {
+        let root = std::env::temp_dir().join(format!("glyphscope-loop-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&root);
+        std::fs::create_dir_all(root.join("sub")).unwrap();
+        std::fs::write(root.join("a.ttf"), crate::font::DEFAULT_FONT_BYTES).unwrap();
+        std::os::unix::fs::symlink(&root, root.join("sub").join("up")).unwrap();
+        std::os::unix::fs::symlink(root.join("missing.ttf"), root.join("gone.ttf")).unwrap();
+        let listed = files(std::slice::from_ref(&root));
+        let _ = std::fs::remove_dir_all(&root);
+        let listed = listed.unwrap();
+        let names: Vec<_> = listed
+            .iter()
+            .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
+            .collect();
+        assert_eq!(names, ["a.ttf", "gone.ttf"], "{listed:?}");
+    }
 
     #[test]
     fn shards_split_the_sorted_list_by_place_and_cover_it_once() {
