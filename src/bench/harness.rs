@@ -98,7 +98,7 @@ struct Timed {
 }
 
 /// Measures every case on `scene_names` (their own views) on the adapter named by
-/// `adapter` (see [`GpuContext::open`]) and writes `harness.md` into `out`; returns the
+/// `adapter` (see [`GpuContext::open`](crate::gpu::GpuContext::open)) and writes `harness.md` into `out`; returns the
 /// report's path.
 pub fn run_to(
     scene_names: &[String],

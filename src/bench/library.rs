@@ -97,7 +97,7 @@ impl Method for Library {
             .font
             .as_ref()
             .ok_or_else(|| Error::Internal("not prepared".into()))?;
-        let (text, font) = renderer_made(&mut self.text, gpu, target, font);
+        let (text, font) = renderer_made(&mut self.text, gpu, target, font, winding::Stage::Full);
         // The camera's map of glyph space, from the run's text space (font units, y
         // down): flip y back.
         self.frame += 1;
@@ -127,15 +127,18 @@ impl Method for Library {
     }
 }
 
-/// The renderer in `slot`, made on first use for `target`'s format with `font` added.
+/// The renderer in `slot`, made on first use for `target`'s format with `font` added,
+/// its coverage shader cut after `stage` (`Stage::Full`: the whole shader, as shipped).
 fn renderer_made<'a>(
     slot: &'a mut Option<(TextRenderer, FontId)>,
     gpu: &GpuContext,
     target: &CoverageTarget,
     font: &crate::font::Font,
+    stage: winding::Stage,
 ) -> &'a mut (TextRenderer, FontId) {
     slot.get_or_insert_with(|| {
-        let mut text = TextRenderer::new(&gpu.device, &gpu.queue, target.channels.format());
+        let mut text =
+            TextRenderer::new(&gpu.device, &gpu.queue, target.channels.format()).cut_after(stage);
         let id = text.add_parsed_font(font.clone());
         (text, id)
     })
@@ -148,13 +151,16 @@ struct LibraryLabels {
     font: crate::font::Font,
     labels: std::sync::Arc<Vec<ui::Label>>,
     moving: bool,
+    /// Where its coverage shader stops (the breakdown of a moving frame), and its name.
+    stage: winding::Stage,
+    name: &'static str,
     frame: u64,
     text: Option<(TextRenderer, FontId)>,
 }
 
 impl Method for LibraryLabels {
     fn name(&self) -> &'static str {
-        if self.moving { UI_MOVING } else { UI_STILL }
+        self.name
     }
 
     fn prepare(&mut self, _gpu: &GpuContext, _scene: &Scene) -> Result<(), Error> {
@@ -169,7 +175,7 @@ impl Method for LibraryLabels {
         target: &CoverageTarget,
         _camera: &Camera,
     ) -> Result<(), Error> {
-        let (text, font) = renderer_made(&mut self.text, gpu, target, &self.font);
+        let (text, font) = renderer_made(&mut self.text, gpu, target, &self.font, self.stage);
         self.frame += 1;
         let scroll = if self.moving {
             0.37 * self.frame as f32
@@ -356,6 +362,7 @@ pub fn run_to(
             ui::SIZE[1],
         );
         write_scene(&mut md, &heading, &timed, true);
+        write_stages(&mut md, &timed);
     }
     write_report(out, "library.md", &md)
 }
@@ -373,13 +380,15 @@ fn measure_ui(gpu: &GpuContext, timing: &Rounds) -> Result<Vec<Timed>, Error> {
     let scene = ui::scene(&font, &labels)?;
     let camera = ui::camera();
     let cache = [baseline_cache_param(auto_cache_size(camera.size_px_per_em))];
-    let library = |moving| -> MakeMethod {
+    let library = |moving, stage, name| -> MakeMethod {
         let (font, labels) = (font.clone(), labels.clone());
         Box::new(move || {
             Ok(Box::new(LibraryLabels {
                 font: font.clone(),
                 labels: labels.clone(),
                 moving,
+                stage,
+                name,
                 frame: 0,
                 text: None,
             }) as Box<dyn Method>)
@@ -400,9 +409,20 @@ fn measure_ui(gpu: &GpuContext, timing: &Rounds) -> Result<Vec<Timed>, Error> {
     };
     const GLYPHON_STILL: &str = "glyphon, labels still";
     const GLYPHON_MOVING: &str = "glyphon, labels moving";
-    let cases = [
-        Case::new(UI_STILL, false, GLYPHON_STILL, library(false)),
-        Case::new(UI_MOVING, true, GLYPHON_MOVING, library(true)),
+    let full = winding::Stage::Full;
+    let mut cases = vec![
+        Case::new(
+            UI_STILL,
+            false,
+            GLYPHON_STILL,
+            library(false, full, UI_STILL),
+        ),
+        Case::new(
+            UI_MOVING,
+            true,
+            GLYPHON_MOVING,
+            library(true, full, UI_MOVING),
+        ),
         Case::new(
             "atlas",
             false,
@@ -412,7 +432,69 @@ fn measure_ui(gpu: &GpuContext, timing: &Rounds) -> Result<Vec<Timed>, Error> {
         Case::new(GLYPHON_STILL, false, GLYPHON_STILL, glyphon(false)),
         Case::new(GLYPHON_MOVING, true, GLYPHON_MOVING, glyphon(true)),
     ];
+    // The moving frame with the coverage shader cut short after each stage but the
+    // last (the full one is UI_MOVING): where its time goes.
+    for (stage, name) in winding::Stage::ALL.iter().zip(UI_CUT) {
+        cases.push(Case::new(
+            name,
+            true,
+            GLYPHON_MOVING,
+            library(true, *stage, name),
+        ));
+    }
     measure(gpu, timing, &scene, &camera, &cases)
+}
+
+/// The moving labels with the coverage shader cut after each of `winding::Stage::ALL`
+/// but the last.
+const UI_CUT: [&str; 4] = [
+    "labels moving, shader cut after its quads",
+    "labels moving, cut after its setup",
+    "labels moving, cut after its walk",
+    "labels moving, cut after its right terms",
+];
+
+/// Where a moving frame of the labels goes: the still frame (the composite and the
+/// runs' comparison), then each stage of the coverage pass, each the difference from
+/// the one before, from the cut cases `measure_ui` timed.
+fn write_stages(md: &mut String, timed: &[Timed]) {
+    let frame_of = |name: &str| {
+        timed
+            .iter()
+            .find(|t| t.name == name && t.refused.is_none())
+            .map(|t| t.gpu_ms + t.cpu_ms)
+    };
+    let mut steps = vec![(
+        "the still frame: composite and comparison",
+        frame_of(UI_STILL),
+    )];
+    let parts = [
+        "quads: rasterizing, the pages cleared and blended, the instances' upload",
+        "setup: derivatives, the pixel's frame, its band",
+        "walk: each curve of the band loaded, mapped, sorted into its zone",
+        "right: the terms of curves wholly right of the pixel",
+    ];
+    for (part, name) in parts.iter().zip(UI_CUT) {
+        steps.push((part, frame_of(name)));
+    }
+    steps.push((
+        "across: the terms of curves across the pixel, the fill",
+        frame_of(UI_MOVING),
+    ));
+    let _ = writeln!(
+        md,
+        "\nWhere a moving frame of the labels goes (GPU + CPU ms, each stage the difference \
+         from the row above: the frame with the coverage shader cut short after it, \
+         `STAGE` in shaders/winding.wgsl):\n\n| part | ms | share |\n|---|---:|---:|"
+    );
+    let total = frame_of(UI_MOVING).unwrap_or(f64::NAN);
+    let mut before = 0.0;
+    for (part, ms) in steps {
+        let Some(ms) = ms else { continue };
+        let step = ms - before;
+        let _ = writeln!(md, "| {part} | {step:.2} | {:.0} % |", 100.0 * step / total);
+        before = ms;
+    }
 }
 
 /// Times `cases` on `scene` through `camera`, interleaved in rounds, each prepared anew

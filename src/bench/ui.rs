@@ -124,7 +124,7 @@ impl Sequence {
 /// row's labels at one size, a gap of half an em between labels; when the rows reach
 /// the bottom they start again at the top, 7 px lower and 11 px further right.
 pub fn labels(font: &Font, count: usize, size: [u32; 2]) -> Result<Vec<Label>, Error> {
-    let mut random = Sequence(0x5EED_0F_1AB3_15);
+    let mut random = Sequence(0x5EED_0F1A_B315);
     let [width, height] = size.map(|v| v as f32);
     let (ascender, descender, _) = font.line_metrics();
     let units = font.units_per_em();

@@ -9,7 +9,7 @@
 //! kind of half-float target, its instances added (so glyphs sharing a pixel sum to
 //! their union's coverage, as in the row). Each run's coverage goes into its own
 //! rectangle of pixels — the pixels its glyphs touch, within the viewport — packed with
-//! the other runs' into pages ([`pages`]); `render` then blends each run's colour over
+//! the other runs' into pages (`pages.rs`); `render` then blends each run's colour over
 //! the caller's target through its rectangle (`winding_text.wgsl`), once, in the runs'
 //! order. So a frame's cost grows with the pixels the text covers, as an atlas's does,
 //! and runs are limited by memory alone.
@@ -237,6 +237,13 @@ impl TextRenderer {
             work: Work::default(),
             uploads: Uploads::default(),
         }
+    }
+
+    /// The same renderer with its coverage shader cut short after `stage` (the bench's
+    /// breakdown of a moving frame; what it draws is not text past `Stage::Full`).
+    pub(crate) fn cut_after(mut self, stage: super::Stage) -> Self {
+        self.winding = Winding::staged(Settings::default(), stage);
+        self
     }
 
     /// Reads a font (TrueType, OpenType with CFF or CFF2 outlines, the first face of a
