@@ -433,8 +433,6 @@ impl OutlineTable {
     }
 }
 
-/// The sfntVersion of the font's first face (a collection's header points to it).
-/// The sfntVersion of face `index` (a collection's `index`-th table directory).
 /// Checks the variation axes as the font's `fvar` table writes them: each axis's
 /// minimum, default and maximum finite and in that order. ttf-parser reorders them
 /// (its minimum is never above the default), but the other readers a font reaches do
@@ -484,6 +482,8 @@ fn check_axes(face: &ttf_parser::Face<'_>) -> Result<(), String> {
     Ok(())
 }
 
+/// The sfntVersion of the font's first face (a collection's header points to it).
+/// The sfntVersion of face `index` (a collection's `index`-th table directory).
 fn sfnt_version(data: &[u8], index: u32) -> Option<[u8; 4]> {
     let at = |offset: usize| -> Option<[u8; 4]> { data.get(offset..offset + 4)?.try_into().ok() };
     let version = at(0)?;

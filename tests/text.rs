@@ -424,6 +424,10 @@ fn bad_input_is_an_error_not_a_panic() {
         text.prepare(&mut encoder(), [0, HEIGHT], &[good]).is_err(),
         "an empty viewport"
     );
+    match text.prepare(&mut encoder(), [u32::MAX, HEIGHT], &[good]) {
+        Err(Error::Input(message)) => assert!(message.contains("largest texture"), "{message}"),
+        other => panic!("a viewport past any texture: {other:?}"),
+    }
     let unknown = TextRun {
         font: text
             .add_font(glyphscope::font::DEFAULT_FONT_BYTES.to_vec())

@@ -35,7 +35,8 @@ pub fn catching<T>(work: impl FnOnce() -> T) -> Result<T, String> {
     HOOK.call_once(|| {
         let previous = std::panic::take_hook();
         std::panic::set_hook(Box::new(move |info| {
-            if GUARDED.with(Cell::get) {
+            // try_with: a panic while the thread's locals are torn down is printed.
+            if GUARDED.try_with(Cell::get).unwrap_or(false) {
                 let message = info
                     .payload()
                     .downcast_ref::<&str>()
@@ -48,19 +49,22 @@ pub fn catching<T>(work: impl FnOnce() -> T) -> Result<T, String> {
                     .unwrap_or_default();
                 // One line, whatever the message held.
                 let line = format!("{message}{at}").replace('\n', " ");
-                REPORT.with(|r| *r.borrow_mut() = Some(line));
+                let _ = REPORT.try_with(|r| *r.borrow_mut() = Some(line));
             } else {
                 previous(info);
             }
         }));
     });
+    // A report left by a panic something inside caught itself is not this call's: each
+    // call starts with none, and gives back an enclosing call's when it ends.
     let outer = GUARDED.with(|g| g.replace(true));
+    let enclosing = REPORT.with(|r| r.borrow_mut().take());
     let result = catch_unwind(AssertUnwindSafe(work));
     GUARDED.with(|g| g.set(outer));
+    let report = REPORT.with(|r| std::mem::replace(&mut *r.borrow_mut(), enclosing));
     result.map_err(|_| {
-        REPORT
-            .with(|r| r.borrow_mut().take())
-            .unwrap_or_else(|| "a panic".into())
+        // A panic re-raised from another thread (rayon's workers) passes no hook here.
+        report.unwrap_or_else(|| "a panic on a worker thread, its message printed there".into())
     })
 }
 

@@ -106,6 +106,12 @@ impl PreparedGlyphs {
         self.buffer_bytes
     }
 
+    /// Forgets the upload (one that failed on the GPU): the next frame uploads anew.
+    pub fn forget_upload(&mut self) {
+        self.group = None;
+        self.uploaded = 0;
+    }
+
     /// The glyph buffers' bind group, once uploaded.
     pub fn bind_group(&self) -> Option<&wgpu::BindGroup> {
         self.group.as_ref()

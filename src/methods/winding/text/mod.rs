@@ -268,7 +268,9 @@ impl TextRenderer {
     /// move records none). Runs are drawn in order, each over those before it. Bad input
     /// — an unknown font, empty content, a glyph id the font lacks, a size or colour out
     /// of range, a transform that is not finite, cannot be inverted or puts text behind
-    /// the eye — is an [`Error::Input`], and the last prepared frame stays as it was.
+    /// the eye, a viewport past the device's largest texture — is an [`Error::Input`], and
+    /// the last prepared frame stays as it was. Submit `encoder`: a later frame whose runs
+    /// did not move draws nothing anew and composites what these passes drew.
     pub fn prepare(
         &mut self,
         encoder: &mut wgpu::CommandEncoder,
@@ -278,6 +280,13 @@ impl TextRenderer {
         if viewport.contains(&0) {
             return Err(Error::Input(format!(
                 "the viewport is {}×{} pixels: nothing can be drawn into it",
+                viewport[0], viewport[1]
+            )));
+        }
+        let side = self.gpu.max_texture_side();
+        if viewport.iter().any(|&v| v > side) {
+            return Err(Error::Input(format!(
+                "the viewport is {}×{} pixels: past this device's largest texture, {side} a side",
                 viewport[0], viewport[1]
             )));
         }
@@ -335,6 +344,12 @@ impl TextRenderer {
             ];
             self.commit(work, encoder, viewport, (needed, page), pages_needed, runs);
             Ok(())
+        })
+        .inspect_err(|_| {
+            // What the GPU holds is not what `drawn` says: the next frame draws anew.
+            self.drawn.valid = false;
+            self.pages = None;
+            self.glyphs.forget_upload();
         })
     }
 
