@@ -615,3 +615,65 @@ fn degenerate_contours_draw_nothing_and_do_not_fail() {
     let image = coverage(&[("subdivision", "fsa"), ("steps", "3")], &scene, &camera);
     assert_eq!(image.sum(), 100.0);
 }
+
+/// DejaVu Sans's 𐌔 (U+10314), its ten points as the font has them: a zigzag whose
+/// concave notch on the left (tip at (500, 750)) lies between vertices that pair up at
+/// y = 400, 750 and 1100. lyon's sweep along y filled the triangle (404, 400),
+/// (500, 750), (404, 1100) across the notch (max error 1.0 at 24 and 48 px). Worked by
+/// hand from the points: every triangle's centre inside the zigzag, and the triangles'
+/// areas adding up to the polygon's, 356 300 units² by the shoelace formula.
+#[test]
+fn a_notch_between_vertices_at_equal_heights_is_not_filled() {
+    let points = [
+        (404.0, 1100.0),
+        (754.0, 750.0),
+        (404.0, 400.0),
+        (691.0, 114.0),
+        (563.0, -14.0),
+        (150.0, 400.0),
+        (500.0, 750.0),
+        (150.0, 1100.0),
+        (563.0, 1514.0),
+        (691.0, 1386.0),
+    ];
+    let mut contour = TaggedContour::default();
+    for (x, y) in points {
+        contour.push(DVec2::new(x, y), Tag::On);
+    }
+    let (_, mesh) =
+        glyphscope::methods::tessellation::glyph_mesh(&[contour], 2048.0, Subdivision::Fixed(4))
+            .unwrap();
+    let vertex = |i: u32| {
+        let [x, y] = mesh.vertices[i as usize];
+        DVec2::new(f64::from(x), f64::from(y))
+    };
+    // Inside the zigzag by the even-odd crossing count along +x, written here apart
+    // from the crate's own check.
+    let inside = |p: DVec2| {
+        let mut crossings = 0;
+        for k in 0..points.len() {
+            let (a, b) = (points[k], points[(k + 1) % points.len()]);
+            if (a.1 > p.y) != (b.1 > p.y) {
+                let x = a.0 + (p.y - a.1) / (b.1 - a.1) * (b.0 - a.0);
+                if x > p.x {
+                    crossings += 1;
+                }
+            }
+        }
+        crossings % 2 == 1
+    };
+    let mut area = 0.0;
+    for t in mesh.triangles.chunks_exact(3) {
+        let (a, b, c) = (vertex(t[0]), vertex(t[1]), vertex(t[2]));
+        let centre = (a + b + c) / 3.0;
+        assert!(
+            inside(centre),
+            "a triangle outside the outline: {a} {b} {c}"
+        );
+        area += 0.5 * (b - a).perp_dot(c - a).abs();
+    }
+    assert!(
+        (area - 356_300.0).abs() < 1.0,
+        "the triangles cover {area} units²"
+    );
+}
