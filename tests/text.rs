@@ -733,3 +733,67 @@ fn trimmed_every_frame_dynamic_text_holds_only_what_it_draws() {
         "after compactions: pixel {at} past the bound by {worst}"
     );
 }
+
+/// Two hundred labels scrolled by 0.37 px a frame for eight frames, trimmed after each,
+/// as a scrolling UI draws them (each frame's coverage drawn anew into repacked pages),
+/// and every other frame half of them only recoloured: the last frame equals the
+/// reference of the labels where they are then.
+#[test]
+fn scrolled_labels_are_the_reference_where_they_end() {
+    let font = Font::default_font();
+    let mut text = renderer();
+    let id = text
+        .add_font(glyphscope::font::DEFAULT_FONT_BYTES.to_vec())
+        .unwrap();
+    let labels = labels(200, 11);
+    let at = |frame: usize, transform: Mat3| {
+        Mat3::from_translation(vec2(0.0, 0.37 * frame as f32)) * transform
+    };
+    let runs = |frame: usize| -> Vec<TextRun<'_>> {
+        labels
+            .iter()
+            .enumerate()
+            .map(|(k, (word, size, transform, colour))| {
+                // Odd labels stay put and change colour; even ones scroll.
+                let (transform, shade) = if k % 2 == 0 {
+                    (at(frame, *transform), 1.0)
+                } else {
+                    (*transform, if frame % 2 == 0 { 1.0 } else { 0.6 })
+                };
+                TextRun {
+                    font: id,
+                    content: Content::Text(word),
+                    size_px: *size,
+                    transform,
+                    color: [colour[0] * shade, colour[1] * shade, colour[2] * shade, 1.0],
+                }
+            })
+            .collect()
+    };
+    let last = 8;
+    for frame in 0..last {
+        text.prepare(&mut encoder(), [WIDTH, HEIGHT], &runs(frame))
+            .unwrap();
+        text.trim();
+    }
+    let pixels = draw(&mut text, &runs(last));
+    let coverages: Vec<Vec<f32>> = runs(last)
+        .iter()
+        .zip(&labels)
+        .map(|(run, (word, size, _, _))| reference_of_label(&font, word, *size, run.transform))
+        .collect();
+    let layers: Vec<(&[f32], [f32; 3])> = coverages
+        .iter()
+        .map(Vec::as_slice)
+        .zip(
+            runs(last)
+                .iter()
+                .map(|r| [r.color[0], r.color[1], r.color[2]]),
+        )
+        .collect();
+    let (worst, at) = worst_excess(&pixels, &layers);
+    println!(
+        "200 labels after 8 frames of scrolling: the worst pixel is {worst:.2e} from the bound"
+    );
+    assert!(worst <= 0.0, "pixel {at} past the bound by {worst}");
+}
