@@ -234,7 +234,10 @@ fn main() {
             std::process::exit(2);
         }
     };
-    let font_bytes = std::fs::read("fonts/DejaVuSans.ttf").expect("run from the project's root");
+    let Ok(font_bytes) = std::fs::read("fonts/DejaVuSans.ttf") else {
+        eprintln!("ui_labels: cannot read fonts/DejaVuSans.ttf: run it from the project's root");
+        std::process::exit(2);
+    };
     let font = Font::from_bytes(font_bytes.clone(), "DejaVu Sans").expect("the font reads");
     let labels = ui::labels(&font, count, ui::SIZE).expect("the labels lay out");
     let target = gpu.device.create_texture(&wgpu::TextureDescriptor {

@@ -12,12 +12,12 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use super::method_settings::baseline_cache_param;
-use super::side_run::{SideRun, write_report};
+use super::side_run::{SideRun, time_round, write_report};
 use crate::Error;
 use crate::gpu::{Channels, CoverageTarget};
+use crate::methods::Method;
 use crate::methods::atlas::{self, Atlas, Stage, auto_cache_size};
 use crate::methods::peers::glyphon;
-use crate::methods::{Method, frame};
 use crate::metrics;
 
 /// The scenes measured when none are named: the page and the small text, where glyphon
@@ -147,26 +147,13 @@ pub fn run_to(
                 }
                 let mut method = case.method(cache)?;
                 let target = &targets[usize::from(case.channels() == Channels::Picture)];
-                let per_round = timing.per_round;
-                let drawn = method.prepare(&gpu, &scene).and_then(|()| {
-                    frame::time_frames(
-                        &gpu,
-                        method.as_mut(),
-                        target,
-                        &camera,
-                        per_round.warmup,
-                        per_round.frames,
-                    )
-                });
-                match drawn {
-                    Ok(times) => {
-                        let times = times.expect("the device has timestamps: checked above");
-                        gpu_ms.extend(metrics::median(times.iter().map(|t| t.gpu_ms)));
-                        cpu_ms.extend(metrics::median(times.iter().map(|t| t.cpu_ms)));
+                match time_round(&gpu, &timing, method.as_mut(), &scene, target, &camera)? {
+                    Ok((gpu, cpu)) => {
+                        gpu_ms.push(gpu);
+                        cpu_ms.push(cpu);
                     }
                     // A view the case cannot draw (glyphon: a tilt) is its row's n/a.
-                    Err(Error::Refused(why)) => *refused = Some(why),
-                    Err(e) => return Err(e),
+                    Err(why) => *refused = Some(why),
                 }
             }
         }

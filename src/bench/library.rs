@@ -19,7 +19,7 @@ use glam::{DMat3, DVec3, Mat3};
 
 use super::method_settings::baseline_cache_param;
 use super::result::Rounds;
-use super::side_run::{SideRun, write_report};
+use super::side_run::{SideRun, time_round, write_report};
 use super::ui;
 use crate::Error;
 use crate::camera::Camera;
@@ -529,30 +529,17 @@ fn measure(
                 continue;
             }
             let mut method = (case.make)()?;
-            let drawn = method.prepare(gpu, scene).and_then(|()| {
-                let per_round = timing.per_round;
-                frame::time_frames(
-                    gpu,
-                    method.as_mut(),
-                    &target,
-                    camera,
-                    per_round.warmup,
-                    per_round.frames,
-                )
-            });
-            match drawn {
-                Ok(times) => {
-                    let times = times.expect("the device has timestamps: checked above");
-                    gpu_ms.extend(metrics::median(times.iter().map(|t| t.gpu_ms)));
-                    cpu_ms.extend(metrics::median(times.iter().map(|t| t.cpu_ms)));
+            match time_round(gpu, timing, method.as_mut(), scene, &target, camera)? {
+                Ok((gpu_median, cpu_median)) => {
+                    gpu_ms.push(gpu_median);
+                    cpu_ms.push(cpu_median);
                     timed.held_bytes = Some(method.gpu_bytes());
                     if timed.error.is_none() && !case.moving {
                         let image = frame::render_image(gpu, method.as_mut(), camera)?;
                         timed.error = Some(metrics::compare(&image.clamp_to_union(), &expected)?);
                     }
                 }
-                Err(Error::Refused(reason)) => timed.refused = Some(reason),
-                Err(e) => return Err(e),
+                Err(reason) => timed.refused = Some(reason),
             }
         }
     }

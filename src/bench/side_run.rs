@@ -8,8 +8,12 @@ use super::result::Rounds;
 use super::run::rounds;
 use super::scenes::{self, BenchScene};
 use crate::Error;
+use crate::camera::Camera;
 use crate::effort::Effort;
-use crate::gpu::GpuContext;
+use crate::gpu::{CoverageTarget, GpuContext};
+use crate::methods::{Method, frame};
+use crate::metrics;
+use crate::scene::Scene;
 
 /// A side run's scenes, rounds and device.
 pub struct SideRun {
@@ -72,4 +76,40 @@ pub fn write_report(out: &Path, file: &str, report: &str) -> Result<PathBuf, Err
     let path = out.join(file);
     std::fs::write(&path, report).map_err(cannot)?;
     Ok(path)
+}
+
+/// One round of a side run's case: `method` prepared for `scene`, then its frames timed
+/// through `camera` into `target` after the round's warm-up; the medians of its GPU and
+/// CPU milliseconds, or `Err(reason)` where it refuses the view (glyphon: a tilt),
+/// which its row shows as n/a. Any other error ends the run.
+pub fn time_round(
+    gpu: &GpuContext,
+    timing: &Rounds,
+    method: &mut dyn Method,
+    scene: &Scene,
+    target: &CoverageTarget,
+    camera: &Camera,
+) -> Result<Result<(f64, f64), String>, Error> {
+    let per_round = timing.per_round;
+    let drawn = method.prepare(gpu, scene).and_then(|()| {
+        frame::time_frames(
+            gpu,
+            method,
+            target,
+            camera,
+            per_round.warmup,
+            per_round.frames,
+        )
+    });
+    match drawn {
+        Ok(times) => {
+            let times = times.expect("side runs open devices with timestamps");
+            let median = |ms: &dyn Fn(&frame::FrameTime) -> f64| {
+                metrics::median(times.iter().map(ms)).unwrap_or(f64::NAN)
+            };
+            Ok(Ok((median(&|t| t.gpu_ms), median(&|t| t.cpu_ms))))
+        }
+        Err(Error::Refused(why)) => Ok(Err(why)),
+        Err(e) => Err(e),
+    }
 }

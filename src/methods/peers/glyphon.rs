@@ -291,6 +291,32 @@ fn atlas_viewport_renderer(gpu: &GpuContext) -> (TextAtlas, Viewport, TextRender
     (atlas, viewport, renderer)
 }
 
+/// Renders what glyphon prepared into its picture (`image`, made or resized for
+/// `target`), trims its atlas as glyphon's own examples do after each frame (glyphs not
+/// drawn in it may be evicted, so the atlas does not fill up with every size and bin ever
+/// drawn), and copies the picture into `target`.
+fn draw_and_copy(
+    image: &mut Option<PeerImage>,
+    gpu: &GpuContext,
+    encoder: &mut wgpu::CommandEncoder,
+    target: &CoverageTarget,
+    renderer: &TextRenderer,
+    atlas: &mut TextAtlas,
+    viewport: &Viewport,
+) -> Result<(), Error> {
+    let mut picture = PeerImage::sized(image.take(), gpu, NAME, target.width, target.height);
+    {
+        let mut pass = picture.clearing_pass(encoder, NAME);
+        renderer
+            .render(atlas, viewport, &mut pass)
+            .map_err(|e| Error::Gpu(format!("glyphon cannot draw: {e}")))?;
+    }
+    atlas.trim();
+    picture.copy_into(gpu, encoder, target);
+    *image = Some(picture);
+    Ok(())
+}
+
 /// glyphon as an app draws a UI with it: a buffer per label, laid out once, and every
 /// frame a text area per label prepared and rendered (the `ui` scene of `glyphscope
 /// bench --library`). Moving, the labels scroll down by 0.37 px a frame.
@@ -420,18 +446,16 @@ impl Method for GlyphonLabels {
                     Error::Refused("glyphon's atlas cannot hold the labels' glyphs".into())
                 }
             })?;
-        let mut image = PeerImage::sized(self.image.take(), gpu, NAME, target.width, target.height);
-        {
-            let mut pass = image.clearing_pass(encoder, NAME);
-            state
-                .renderer
-                .render(&state.atlas, &state.viewport, &mut pass)
-                .map_err(|e| Error::Gpu(format!("glyphon cannot draw: {e}")))?;
-        }
-        state.atlas.trim();
-        image.copy_into(gpu, encoder, target);
-        self.image = Some(image);
-        Ok(())
+        let (renderer, atlas, viewport) = (&state.renderer, &mut state.atlas, &state.viewport);
+        draw_and_copy(
+            &mut self.image,
+            gpu,
+            encoder,
+            target,
+            renderer,
+            atlas,
+            viewport,
+        )
     }
 
     fn peer_gpu_time(&mut self, gpu: &GpuContext) -> Result<Option<PeerGpuTime>, Error> {
@@ -545,19 +569,17 @@ impl Method for Glyphon {
                     gpu.max_texture_side()
                 )),
             })?;
-        let mut image = PeerImage::sized(self.image.take(), gpu, NAME, target.width, target.height);
-        {
-            let mut pass = image.clearing_pass(encoder, NAME);
-            prepared
-                .renderer
-                .render(&prepared.atlas, &prepared.viewport, &mut pass)
-                .map_err(|e| Error::Gpu(format!("glyphon cannot draw: {e}")))?;
-        }
-        // As glyphon's own examples do after each frame: glyphs not drawn in it may be
-        // evicted, so the atlas does not fill up with every size and bin ever drawn.
-        prepared.atlas.trim();
-        image.copy_into(gpu, encoder, target);
-        self.image = Some(image);
+        let (renderer, atlas, viewport) =
+            (&prepared.renderer, &mut prepared.atlas, &prepared.viewport);
+        draw_and_copy(
+            &mut self.image,
+            gpu,
+            encoder,
+            target,
+            renderer,
+            atlas,
+            viewport,
+        )?;
         self.last_frame = Some((exact, area, *camera));
         Ok(())
     }
