@@ -758,7 +758,7 @@ fn scrolled_labels_are_the_reference_where_they_end() {
                 let (transform, shade) = if k % 2 == 0 {
                     (at(frame, *transform), 1.0)
                 } else {
-                    (*transform, if frame % 2 == 0 { 1.0 } else { 0.6 })
+                    (*transform, if frame.is_multiple_of(2) { 1.0 } else { 0.6 })
                 };
                 TextRun {
                     font: id,
