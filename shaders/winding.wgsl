@@ -18,20 +18,22 @@
 // Every computation is in the glyph's local coordinates (font units), relative to the
 // point being shaded.
 
+// A curve as `curve_at` reads it from the curve texture (GpuCurve in bands.rs), three
+// texels: the first two hold what aa=area's walk reads, the third the bounds only
+// aa=rays needs (a load no code uses is compiled away).
 struct Curve {
-    // p0.xy, p1.xy
     p0p1: vec4<f32>,
-    // p2.xy, then the curve's largest x and y (control-point bounds): where aa=rays'
-    // rays stop
-    p2_max: vec4<f32>,
-    // the curve's smallest x and y, for rays cast towards −x or −y
-    min_xy: vec2<f32>,
+    p2: vec2<f32>,
     // 1 where the curve may separate other winding levels than 0 and the fill
     // (overlapping contours): aa=area integrates the pixels it crosses in sub-pixels.
     overlaps: f32,
     // The glyph's curve this one is a piece of (the prep splits curves where x or y
     // turns): pieces of one curve cannot make three winding levels between them.
     parent: u32,
+    // The control points' largest x and y: where aa=rays' rays cast towards + stop.
+    max_xy: vec2<f32>,
+    // Their smallest x and y, for rays cast towards −x or −y.
+    min_xy: vec2<f32>,
 }
 
 struct Glyph {
@@ -59,8 +61,31 @@ struct Band {
 
 @group(1) @binding(0) var<storage, read> glyphs: array<Glyph>;
 @group(1) @binding(1) var<storage, read> bands: array<Band>;
-@group(1) @binding(2) var<storage, read> band_curves: array<u32>;
-@group(1) @binding(3) var<storage, read> curves: array<Curve>;
+// The band lists and the curves are data textures (kit::data_texture): a walk reads
+// them at every step, and a software device fetches texels for a SIMD group at once
+// where it reads a storage buffer lane by lane (src/methods/winding/uploaded.rs).
+@group(1) @binding(2) var band_curves: texture_2d<u32>;
+@group(1) @binding(3) var curve_texels: texture_2d<u32>;
+
+// Texels a row of a data texture, as a shift: kit::DATA_TEXTURE_WIDTH = 4096.
+const DATA_ROW_SHIFT: u32 = 12u;
+
+fn data_texel(data: texture_2d<u32>, index: u32) -> vec4<u32> {
+    let row_mask = (1u << DATA_ROW_SHIFT) - 1u;
+    return textureLoad(data, vec2<u32>(index & row_mask, index >> DATA_ROW_SHIFT), 0);
+}
+
+fn curve_at(index: u32) -> Curve {
+    let a = data_texel(curve_texels, 3u * index);
+    let b = data_texel(curve_texels, 3u * index + 1u);
+    let c = data_texel(curve_texels, 3u * index + 2u);
+    return Curve(bitcast<vec4<f32>>(a), bitcast<vec2<f32>>(b.xy), bitcast<f32>(b.z), b.w, bitcast<vec2<f32>>(c.xy), bitcast<vec2<f32>>(c.zw));
+}
+
+// Entry `entry` of the band lists: a curve.
+fn band_curve(entry: u32) -> Curve {
+    return curve_at(data_texel(band_curves, entry).x);
+}
 
 // Pipeline constants: one pipeline per parameter combination, no per-pixel branching
 // on them.
@@ -212,10 +237,10 @@ fn nearest_class(g: Glyph, p: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> u32 {
     var best = 3.0;
     var root_class = 8u;
     for (var i = 0u; i < all.count; i++) {
-        let c = curves[band_curves[all.by_max + i]];
+        let c = band_curve(all.by_max + i);
         let p0 = c.p0p1.xy - p;
         let p1 = c.p0p1.zw - p;
-        let p2 = c.p2_max.xy - p;
+        let p2 = c.p2 - p;
         for (var k = 0u; k <= 16u; k++) {
             let t = f32(k) / 16.0;
             let on_curve = mix(mix(p0, p1, t), mix(p1, p2, t), t);

@@ -494,11 +494,11 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
     // `rotated` 5.74 -> 5.35 ms, see docs/bench.md). Measured on lavapipe alone: a gain
     // from how one SIMD implementation runs loops, not checked on SwiftShader or a GPU.
     var i = 0u;
-    var c = curves[band_curves[start]];
+    var c = band_curve(start);
     if band.count > 0u && !behind(c, direction, near_end) {
         loop {
             result.evaluated++;
-            let q = Bezier(frame_map(frame, c.p0p1.xy - centre), frame_map(frame, c.p0p1.zw - centre), frame_map(frame, c.p2_max.xy - centre));
+            let q = Bezier(frame_map(frame, c.p0p1.xy - centre), frame_map(frame, c.p0p1.zw - centre), frame_map(frame, c.p2 - centre));
             let zone = area_zone(q, frame);
             if STAGE == 2u {
                 // The walk without its terms.
@@ -521,7 +521,7 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
                 marked = marked || c.overlaps != 0.0;
             }
             i++;
-            c = curves[band_curves[start + min(i, band.count - 1u)]];
+            c = band_curve(start + min(i, band.count - 1u));
             if i >= band.count || behind(c, direction, near_end) {
                 break;
             }
@@ -534,7 +534,7 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
 // Whether curve `c` lies wholly behind the pixel's nearest point along the walk, from
 // its points themselves (fewer loads than its bounds).
 fn behind(c: Curve, direction: f32, near_end: f32) -> bool {
-    let along = direction * vec3<f32>(c.p0p1.x, c.p0p1.z, c.p2_max.x);
+    let along = direction * vec3<f32>(c.p0p1.x, c.p0p1.z, c.p2.x);
     return USE_BANDS && max(max(along.x, along.y), along.z) < near_end;
 }
 

@@ -164,17 +164,17 @@ fn cast_ray(sample_local: vec2<f32>, jx_local: vec2<f32>, jy_local: vec2<f32>, b
     let start = select(band.by_max, band.by_min, direction < 0.0);
     var ray: Ray;
     for (var i = 0u; i < band.count; i++) {
-        let c = curves[band_curves[start + i]];
+        let c = band_curve(start + i);
         // Bands are sorted so that once a curve lies wholly behind the sample (beyond
         // the window), every later one does too.
-        let far_end = select(select(c.p2_max.z, c.p2_max.w, axis == 1u), -select(c.min_xy.x, c.min_xy.y, axis == 1u), direction < 0.0);
+        let far_end = select(select(c.max_xy.x, c.max_xy.y, axis == 1u), -select(c.min_xy.x, c.min_xy.y, axis == 1u), direction < 0.0);
         if USE_BANDS && far_end < s.x - reach {
             break;
         }
         ray.evaluated++;
         let p0 = ray_frame(c.p0p1.xy, axis, direction) - s;
         let p1 = ray_frame(c.p0p1.zw, axis, direction) - s;
-        let p2 = ray_frame(c.p2_max.xy, axis, direction) - s;
+        let p2 = ray_frame(c.p2, axis, direction) - s;
 
         // Which roots count (`crossing_class`): bit 0 the descending crossing t1, bit
         // 1 the ascending one t2.

@@ -134,7 +134,7 @@ fn check_cpu_preparation(scene: &Scene) {
         assert!(
             data.curves
                 .iter()
-                .all(|c| all_finite(c.p0p1.iter().chain(&c.p2_max).chain(&c.min)))
+                .all(|c| all_finite(c.p0p1.iter().chain(&c.p2).chain(&c.max_min)))
         );
         assert!(data.glyphs.iter().all(|g| all_finite(&g.bounds)));
         let curves = data.curves.len() as u32;

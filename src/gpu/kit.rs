@@ -22,6 +22,9 @@ pub enum Slot {
     Texture,
     /// A filtering sampler.
     Sampler,
+    /// An unsigned-integer 2D texture read texel by texel (`textureLoad`): a list of
+    /// records laid out by [`data_texture`].
+    DataTexture,
 }
 
 impl Slot {
@@ -41,8 +44,81 @@ impl Slot {
                 multisampled: false,
             },
             Slot::Sampler => wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+            Slot::DataTexture => wgpu::BindingType::Texture {
+                sample_type: wgpu::TextureSampleType::Uint,
+                view_dimension: wgpu::TextureViewDimension::D2,
+                multisampled: false,
+            },
         }
     }
+}
+
+/// Texels a row of a [`data_texture`]: texel `i` lies at (i mod this, i / this). A
+/// power of two within WebGPU's least 2D texture size (8192), so that a shader finds a
+/// texel by a mask and a shift (`data_texel` in shaders/winding.wgsl).
+pub const DATA_TEXTURE_WIDTH: u32 = 4096;
+
+/// A texture holding `items` as a list of texels of `format` (`R32Uint`, 4 bytes, or
+/// `Rgba32Uint`, 16; an item may span several texels), row after row of
+/// [`DATA_TEXTURE_WIDTH`], the last row padded with zeros; and its bytes. A list too
+/// long for the device's tallest texture is an [`Error::Gpu`] that says so.
+///
+/// Why a texture rather than a storage buffer: a software device (lavapipe) reads a
+/// storage buffer at a per-lane index lane by lane, word by word, where it fetches
+/// texels for all lanes of a SIMD group at once (see docs/methods/winding.md).
+pub fn data_texture<T: bytemuck::Pod>(
+    gpu: &GpuContext,
+    label: &str,
+    items: &[T],
+    format: wgpu::TextureFormat,
+) -> Result<(wgpu::Texture, u64), Error> {
+    let texel = u64::from(
+        format
+            .block_copy_size(None)
+            .expect("an uncompressed format"),
+    );
+    let mut bytes: Vec<u8> = bytemuck::cast_slice(items).to_vec();
+    assert_eq!(
+        bytes.len() as u64 % texel,
+        0,
+        "{label}: items fill whole texels"
+    );
+    let width = u64::from(DATA_TEXTURE_WIDTH);
+    let rows = (bytes.len() as u64 / texel).div_ceil(width).max(1);
+    let most = u64::from(gpu.max_texture_side());
+    if rows > most {
+        return Err(Error::Gpu(format!(
+            "{label}: {} texels need {rows} rows of {width}, past this device's {most}",
+            bytes.len() as u64 / texel
+        )));
+    }
+    bytes.resize((rows * width * texel) as usize, 0);
+    let size = wgpu::Extent3d {
+        width: DATA_TEXTURE_WIDTH,
+        height: rows as u32,
+        depth_or_array_layers: 1,
+    };
+    let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
+        label: Some(label),
+        size,
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        view_formats: &[],
+    });
+    gpu.queue.write_texture(
+        texture.as_image_copy(),
+        &bytes,
+        wgpu::TexelCopyBufferLayout {
+            offset: 0,
+            bytes_per_row: Some((width * texel) as u32),
+            rows_per_image: None,
+        },
+        size,
+    );
+    Ok((texture, bytes.len() as u64))
 }
 
 /// A bind group layout whose binding `i` is `slots[i]`, seen by both stages.

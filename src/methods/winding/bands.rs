@@ -20,20 +20,22 @@ use crate::geometry::{
 };
 use crate::scene::Scene;
 
-/// `Curve` in `winding.wgsl`.
+/// `Curve` in `winding.wgsl`, three texels of the curve texture (`curve_at` there):
+/// what `aa=area`'s walk reads in the first two, the bounds only `aa=rays` needs in the
+/// third.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct GpuCurve {
     pub p0p1: [f32; 4],
-    /// p2, then max x and max y of the control points.
-    pub p2_max: [f32; 4],
-    pub min: [f32; 2],
+    pub p2: [f32; 2],
     /// 1 where the curve may separate other winding levels than 0 and the fill
     /// ([`overlap_flags`]), else 0.
     pub overlaps: f32,
     /// The index, within its glyph, of the font's curve this one is a piece of
     /// (`aa=area`'s prep splits curves where x or y turns).
     pub parent: u32,
+    /// The control points' bounds: max x, max y, min x, min y.
+    pub max_min: [f32; 4],
 }
 
 /// `Glyph` in `winding.wgsl`.
@@ -244,15 +246,15 @@ impl GlyphData {
                 q.p[1].x as f32,
                 q.p[1].y as f32,
             ],
-            p2_max: [
-                q.p[2].x as f32,
-                q.p[2].y as f32,
-                q.max.x as f32,
-                q.max.y as f32,
-            ],
-            min: [q.min.x as f32, q.min.y as f32],
+            p2: [q.p[2].x as f32, q.p[2].y as f32],
             overlaps: f32::from(u8::from(q.overlaps)),
             parent: q.parent,
+            max_min: [
+                q.max.x as f32,
+                q.max.y as f32,
+                q.min.x as f32,
+                q.min.y as f32,
+            ],
         }));
         let min = quads
             .iter()
@@ -447,7 +449,7 @@ mod tests {
                     data.band_curves[band.by_max as usize..][..band.count as usize].to_vec();
                 let y = lo + (hi - lo) * (k as f32 + 0.5) / 7.0;
                 for (i, curve) in data.curves.iter().enumerate() {
-                    let ys = [curve.p0p1[1], curve.p0p1[3], curve.p2_max[1]];
+                    let ys = [curve.p0p1[1], curve.p0p1[3], curve.p2[1]];
                     let crosses = ys.iter().any(|&v| v > y) && ys.iter().any(|&v| v <= y);
                     assert!(
                         !crosses || listed.contains(&(i as u32)),
@@ -472,8 +474,8 @@ mod tests {
                     1
                 };
             let ids = |start: u32| &data.band_curves[start as usize..][..band.count as usize];
-            let max = |i: &u32| data.curves[*i as usize].p2_max[2 + along];
-            let min = |i: &u32| data.curves[*i as usize].min[along];
+            let max = |i: &u32| data.curves[*i as usize].max_min[along];
+            let min = |i: &u32| data.curves[*i as usize].max_min[2 + along];
             assert!(
                 ids(band.by_max)
                     .windows(2)
@@ -589,7 +591,7 @@ mod tests {
                     let band = data.bands[first + k];
                     let listed = &data.band_curves[band.by_max as usize..][..band.count as usize];
                     for (i, curve) in data.curves.iter().enumerate() {
-                        let ys = [curve.p0p1[1], curve.p0p1[3], curve.p2_max[1]].map(f64::from);
+                        let ys = [curve.p0p1[1], curve.p0p1[3], curve.p2[1]].map(f64::from);
                         let (min, max) = (ys[0].min(ys[1]).min(ys[2]), ys[0].max(ys[1]).max(ys[2]));
                         let reaches = max > centre - half && min < centre + half && min < max;
                         assert!(
@@ -672,7 +674,7 @@ mod tests {
             let p = [
                 [piece.p0p1[0], piece.p0p1[1]],
                 [piece.p0p1[2], piece.p0p1[3]],
-                [piece.p2_max[0], piece.p2_max[1]],
+                piece.p2,
             ];
             for axis in 0..2 {
                 let (lo, hi) = (p[0][axis].min(p[2][axis]), p[0][axis].max(p[2][axis]));
@@ -682,8 +684,7 @@ mod tests {
                 );
             }
             if i > 0 {
-                let previous = pieces[i - 1].p2_max;
-                assert_eq!([previous[0], previous[1]], p[0], "pieces share their ends");
+                assert_eq!(pieces[i - 1].p2, p[0], "pieces share their ends");
             }
         }
         assert_eq!(area.curves[3].parent, 1);

@@ -28,8 +28,10 @@ mod bands;
 pub mod cost;
 mod overlaps;
 pub mod text;
+mod uploaded;
 
 pub use bands::{BandCount, GlyphData, Layout, MAX_BANDS};
+use uploaded::Uploaded;
 
 use super::info::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at, within};
 use super::instances::Instances;
@@ -38,7 +40,7 @@ use super::{CurveCost, Method, Overlay};
 use crate::Error;
 use crate::camera::Camera;
 use crate::geometry::{Rect, keeps_axes, steps_lean_apart};
-use crate::gpu::kit::{self, PipelineBuilder, Slot};
+use crate::gpu::kit::{self, PipelineBuilder};
 use crate::gpu::shaders::Shader;
 use crate::gpu::{Channels, CoverageTarget, GpuContext};
 use crate::scene::Scene;
@@ -473,8 +475,7 @@ impl Winding {
 
     fn layout(&mut self, gpu: &GpuContext) -> &(wgpu::BindGroupLayout, wgpu::PipelineLayout) {
         self.layout.get_or_insert_with(|| {
-            // glyphs, bands, band curves, curves (`@group(1)` of winding.wgsl).
-            let group = kit::layout(gpu, NAME, &[Slot::Storage; 4]);
+            let group = uploaded::group_layout(gpu, NAME);
             let layout = kit::pipeline_layout(gpu, NAME, Some(&group));
             (group, layout)
         })
@@ -576,26 +577,12 @@ impl Method for Winding {
         let data = GlyphData::of_scene(outlines, band_count, layout);
         gpu.catching_errors("preparing 'winding'", || {
             let instances = Instances::new(gpu, &scene);
-            let storage = wgpu::BufferUsages::STORAGE;
-            let buffers = [
-                gpu.buffer_of("winding glyphs", &data.glyphs, storage),
-                gpu.buffer_of("winding bands", &data.bands, storage),
-                gpu.buffer_of("winding band curves", &data.band_curves, storage),
-                gpu.buffer_of("winding curves", &data.curves, storage),
-            ];
-            let group = &self.layout(gpu).0;
-            let bind_group = kit::bind_group(
-                gpu,
-                NAME,
-                group,
-                &buffers.each_ref().map(wgpu::Buffer::as_entire_binding),
-            );
-            let bytes = instances.bytes() + buffers.iter().map(wgpu::Buffer::size).sum::<u64>();
+            let uploaded = Uploaded::new(gpu, NAME, &data, &self.layout(gpu).0)?;
             self.prepared = Some(Prepared {
+                bytes: instances.bytes() + uploaded.bytes,
                 instances,
                 marked: data.marked.clone(),
-                bind_group,
-                bytes,
+                bind_group: uploaded.bind_group,
             });
             Ok(())
         })

@@ -6,9 +6,11 @@ use std::collections::HashMap;
 use std::collections::hash_map::DefaultHasher;
 use std::hash::{Hash, Hasher};
 
-use super::super::{BandCount, GlyphData, Layout, NAME};
+use super::super::uploaded::Uploaded;
+use super::super::{BandCount, GlyphData, Layout};
+use crate::Error;
 use crate::geometry::{Outline, Rect};
-use crate::gpu::{GpuContext, kit};
+use crate::gpu::GpuContext;
 use crate::scene::Glyph;
 
 /// One prepared glyph, kept so that a compaction can prepare it again.
@@ -84,26 +86,18 @@ impl PreparedGlyphs {
         self.group.is_none() || self.uploaded != self.len()
     }
 
-    /// Uploads every prepared glyph's buffers and binds them in `layout` (the row's
+    /// Uploads every prepared glyph's data and binds it in `layout` (the row's
     /// `@group(1)`); the bytes uploaded.
-    pub fn upload(&mut self, gpu: &GpuContext, layout: &wgpu::BindGroupLayout) -> u64 {
-        let data = &self.data;
-        let storage = wgpu::BufferUsages::STORAGE;
-        let buffers = [
-            gpu.buffer_of("text glyphs", &data.glyphs, storage),
-            gpu.buffer_of("text bands", &data.bands, storage),
-            gpu.buffer_of("text band curves", &data.band_curves, storage),
-            gpu.buffer_of("text curves", &data.curves, storage),
-        ];
-        self.buffer_bytes = buffers.iter().map(wgpu::Buffer::size).sum();
-        self.group = Some(kit::bind_group(
-            gpu,
-            NAME,
-            layout,
-            &buffers.each_ref().map(wgpu::Buffer::as_entire_binding),
-        ));
+    pub fn upload(
+        &mut self,
+        gpu: &GpuContext,
+        layout: &wgpu::BindGroupLayout,
+    ) -> Result<u64, Error> {
+        let uploaded = Uploaded::new(gpu, "text", &self.data, layout)?;
+        self.buffer_bytes = uploaded.bytes;
+        self.group = Some(uploaded.bind_group);
         self.uploaded = self.len();
-        self.buffer_bytes
+        Ok(self.buffer_bytes)
     }
 
     /// Forgets the upload (one that failed on the GPU): the next frame uploads anew.
@@ -117,7 +111,7 @@ impl PreparedGlyphs {
         self.group.as_ref()
     }
 
-    /// Bytes of the glyph buffers on the GPU.
+    /// Bytes of the glyph data on the GPU.
     pub fn gpu_bytes(&self) -> u64 {
         self.buffer_bytes
     }

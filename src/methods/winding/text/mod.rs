@@ -342,8 +342,7 @@ impl TextRenderer {
                 page[0],
                 height_used.max(1).next_multiple_of(64).min(page[1]),
             ];
-            self.commit(work, encoder, viewport, (needed, page), pages_needed, runs);
-            Ok(())
+            self.commit(work, encoder, viewport, (needed, page), pages_needed, runs)
         })
         .inspect_err(|_| {
             // What the GPU holds is not what `drawn` says: the next frame draws anew.
@@ -454,11 +453,11 @@ impl TextRenderer {
         (page, most): ([u32; 2], [u32; 2]),
         pages_needed: u32,
         runs: &[TextRun<'_>],
-    ) {
+    ) -> Result<(), Error> {
         let gpu = self.gpu.clone();
         if self.glyphs.need_upload() {
             let layout = &self.winding.layout(&gpu).0;
-            self.uploads.glyph_bytes = self.glyphs.upload(&gpu, layout);
+            self.uploads.glyph_bytes = self.glyphs.upload(&gpu, layout)?;
         }
         let composite = self.composite.get_or_insert_with(|| {
             Composite::new(&gpu, &super::SHADER.module(&gpu.device), self.format)
@@ -591,6 +590,7 @@ impl TextRenderer {
         drawn.instances = work.instances.len();
         drawn.valid = true;
         self.pages = Some(pages);
+        Ok(())
     }
 
     /// Records the prepared runs into `pass`, which must draw into a target of the

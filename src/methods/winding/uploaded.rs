@@ -1,0 +1,111 @@
+//! `@group(1)` of shaders/winding.wgsl: a [`GlyphData`] on the GPU, as the `winding` row
+//! and the text library both bind it. The glyphs and their bands, read once per quad
+//! or fragment, are storage buffers; the band lists and the curves, read at every step
+//! of a pixel's walk, are data textures ([`kit::data_texture`]): on lavapipe the walk
+//! reads them 2× faster than from storage buffers (the `ui` labels' moving frame,
+//! 74–79 → 32–42 ms at 500 labels; SwiftShader 158–201 → 149–179 ms, within its
+//! noise; docs/methods/winding.md has the commands). A GPU's texture path reads them as
+//! fast as its storage path, or faster.
+
+use super::bands::GlyphData;
+use crate::Error;
+use crate::gpu::GpuContext;
+use crate::gpu::kit::{self, Slot};
+
+/// The layout of `@group(1)`: glyphs, bands (storage), band curves, curves (textures).
+pub fn group_layout(gpu: &GpuContext, label: &str) -> wgpu::BindGroupLayout {
+    kit::layout(
+        gpu,
+        label,
+        &[
+            Slot::Storage,
+            Slot::Storage,
+            Slot::DataTexture,
+            Slot::DataTexture,
+        ],
+    )
+}
+
+/// `data` uploaded and bound in a layout made by [`group_layout`].
+pub struct Uploaded {
+    /// Keeps what it binds alive.
+    pub bind_group: wgpu::BindGroup,
+    /// Bytes on the GPU, row padding included.
+    pub bytes: u64,
+}
+
+impl Uploaded {
+    /// Uploads `data`. Band lists or curves too many for the device's tallest texture
+    /// are an [`Error::Gpu`] that says so.
+    pub fn new(
+        gpu: &GpuContext,
+        label: &str,
+        data: &GlyphData,
+        layout: &wgpu::BindGroupLayout,
+    ) -> Result<Uploaded, Error> {
+        let storage = wgpu::BufferUsages::STORAGE;
+        let glyphs = gpu.buffer_of(&format!("{label} glyphs"), &data.glyphs, storage);
+        let bands = gpu.buffer_of(&format!("{label} bands"), &data.bands, storage);
+        let band_curves = if data.band_curves.is_empty() {
+            &[0][..]
+        } else {
+            &data.band_curves
+        };
+        let (band_curves, band_bytes) = kit::data_texture(
+            gpu,
+            &format!("{label} band curves"),
+            band_curves,
+            wgpu::TextureFormat::R32Uint,
+        )?;
+        let zero = [bytemuck::Zeroable::zeroed()];
+        let curves = if data.curves.is_empty() {
+            &zero[..]
+        } else {
+            &data.curves
+        };
+        let (curves, curve_bytes) = kit::data_texture(
+            gpu,
+            &format!("{label} curves"),
+            curves,
+            wgpu::TextureFormat::Rgba32Uint,
+        )?;
+        let views = [&band_curves, &curves].map(|t| t.create_view(&Default::default()));
+        let bind_group = kit::bind_group(
+            gpu,
+            label,
+            layout,
+            &[
+                glyphs.as_entire_binding(),
+                bands.as_entire_binding(),
+                wgpu::BindingResource::TextureView(&views[0]),
+                wgpu::BindingResource::TextureView(&views[1]),
+            ],
+        );
+        Ok(Uploaded {
+            bind_group,
+            bytes: glyphs.size() + bands.size() + band_bytes + curve_bytes,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::gpu::kit::DATA_TEXTURE_WIDTH;
+
+    /// The shader finds a texel by a shift that must be the row width the textures are
+    /// laid out with.
+    #[test]
+    fn the_shader_reads_rows_as_wide_as_they_are_laid_out() {
+        let source = include_str!("../../../shaders/winding.wgsl");
+        let line = source
+            .lines()
+            .find(|l| l.starts_with("const DATA_ROW_SHIFT: u32 = "))
+            .expect("winding.wgsl declares DATA_ROW_SHIFT");
+        let shift: u32 = line
+            .trim_start_matches("const DATA_ROW_SHIFT: u32 = ")
+            .trim_end_matches("u;")
+            .parse()
+            .expect("a number");
+        assert_eq!(1 << shift, DATA_TEXTURE_WIDTH);
+    }
+}
