@@ -60,10 +60,11 @@ struct Band {
 }
 
 @group(1) @binding(0) var<storage, read> glyphs: array<Glyph>;
-@group(1) @binding(1) var<storage, read> bands: array<Band>;
-// The band lists and the curves are data textures (kit::data_texture): a walk reads
-// them at every step, and a software device fetches texels for a SIMD group at once
-// where it reads a storage buffer lane by lane (src/methods/winding/uploaded.rs).
+// The bands, the band lists and the curves are data textures (kit::data_texture): a
+// fragment reads its band, and its walk a list entry and a curve at every step; a
+// software device fetches texels for a SIMD group at once where it reads a storage
+// buffer lane by lane (src/methods/winding/uploaded.rs).
+@group(1) @binding(1) var band_texels: texture_2d<u32>;
 @group(1) @binding(2) var band_curves: texture_2d<u32>;
 @group(1) @binding(3) var curve_texels: texture_2d<u32>;
 
@@ -80,6 +81,11 @@ fn curve_at(index: u32) -> Curve {
     let b = data_texel(curve_texels, 3u * index + 1u);
     let c = data_texel(curve_texels, 3u * index + 2u);
     return Curve(bitcast<vec4<f32>>(a), bitcast<vec2<f32>>(b.xy), bitcast<f32>(b.z), b.w, bitcast<vec2<f32>>(c.xy), bitcast<vec2<f32>>(c.zw));
+}
+
+fn band_at(index: u32) -> Band {
+    let t = data_texel(band_texels, index);
+    return Band(t.x, t.y, t.z);
 }
 
 // Entry `entry` of the band lists: a curve.
@@ -233,7 +239,7 @@ const CLASS_COLORS = array<vec3<f32>, 8>(
 fn nearest_class(g: Glyph, p: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> u32 {
     let det = jx.x * jy.y - jy.x * jx.y;
     let to_pixels = mat2x2<f32>(vec2<f32>(jy.y, -jx.y), vec2<f32>(-jy.x, jx.x)) * (1.0 / det);
-    let all = bands[g.first_band + g.band_count_h + g.band_count_v];
+    let all = band_at(g.first_band + g.band_count_h + g.band_count_v);
     var best = 3.0;
     var root_class = 8u;
     for (var i = 0u; i < all.count; i++) {

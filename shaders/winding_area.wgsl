@@ -446,7 +446,7 @@ fn area_band(g: Glyph, centre: vec2<f32>, half_height: f32) -> Band {
     // A glyph of no height makes `index` garbage (0/0), thrown away by the select: one
     // read either way, where an early return would add a read of its own.
     let index = u32(clamp(floor((centre.y - g.bounds.y) / height), 0.0, f32(count - 1u)));
-    return bands[select(first + index, all, !USE_BANDS || !(height > 0.0))];
+    return band_at(select(first + index, all, !USE_BANDS || !(height > 0.0)));
 }
 
 // What aa=area found in this fragment, for the cost breakdown's counting passes

@@ -104,7 +104,7 @@ fn combine_rays(x_coverage: f32, y_coverage: f32, x_sight: f32, y_sight: f32) ->
 fn band_for(g: Glyph, sample_local: vec2<f32>, axis: u32) -> Band {
     if !USE_BANDS {
         // Every curve: the band after the vertical ones lists them all.
-        return bands[g.first_band + g.band_count_h + g.band_count_v];
+        return band_at(g.first_band + g.band_count_h + g.band_count_v);
     }
     let count = select(g.band_count_h, g.band_count_v, axis == 1u);
     let lo = select(g.bounds.y, g.bounds.x, axis == 1u);
@@ -116,10 +116,10 @@ fn band_for(g: Glyph, sample_local: vec2<f32>, axis: u32) -> Band {
     // NaN on that line, whose conversion to u32 is undefined, and a band index out of
     // range reads another glyph's curves.
     if !(hi > lo) {
-        return bands[first];
+        return band_at(first);
     }
     let index = u32(clamp(floor((across - lo) / (hi - lo) * f32(count)), 0.0, f32(count - 1u)));
-    return bands[first + index];
+    return band_at(first + index);
 }
 
 // Crossings a ray keeps from within its window; past this many (only when a pixel

@@ -1,8 +1,8 @@
 //! `@group(1)` of shaders/winding.wgsl: a [`GlyphData`] on the GPU, as the `winding` row
-//! and the text library both bind it. The glyphs and their bands, read once per quad
-//! or fragment, are storage buffers; the band lists and the curves, read at every step
-//! of a pixel's walk, are data textures ([`kit::data_texture`]): on lavapipe the walk
-//! reads them 2× faster than from storage buffers (the `ui` labels' moving frame,
+//! and the text library both bind it. The glyphs, read once per quad, are a storage
+//! buffer; the bands, read once per fragment, the band lists and the curves, read at
+//! every step of a pixel's walk, are data textures ([`kit::data_texture`]): on lavapipe
+//! the walk reads them 2× faster than from storage buffers (the `ui` labels' moving frame,
 //! 74–79 → 32–42 ms at 500 labels; SwiftShader 158–201 → 149–179 ms, within its
 //! noise; docs/methods/winding.md has the commands). A GPU's texture path reads them as
 //! fast as its storage path, or faster.
@@ -12,14 +12,14 @@ use crate::Error;
 use crate::gpu::GpuContext;
 use crate::gpu::kit::{self, Slot};
 
-/// The layout of `@group(1)`: glyphs, bands (storage), band curves, curves (textures).
+/// The layout of `@group(1)`: glyphs (storage), bands, band curves, curves (textures).
 pub fn group_layout(gpu: &GpuContext, label: &str) -> wgpu::BindGroupLayout {
     kit::layout(
         gpu,
         label,
         &[
             Slot::Storage,
-            Slot::Storage,
+            Slot::DataTexture,
             Slot::DataTexture,
             Slot::DataTexture,
         ],
@@ -45,13 +45,25 @@ impl Uploaded {
     ) -> Result<Uploaded, Error> {
         let storage = wgpu::BufferUsages::STORAGE;
         let glyphs = gpu.buffer_of(&format!("{label} glyphs"), &data.glyphs, storage);
-        let bands = gpu.buffer_of(&format!("{label} bands"), &data.bands, storage);
+        // A band a texel: its two orderings' offsets and its count.
+        let band_texels: Vec<[u32; 4]> = data
+            .bands
+            .iter()
+            .map(|b| [b.by_max, b.by_min, b.count, 0])
+            .chain(data.bands.is_empty().then_some([0; 4]))
+            .collect();
+        let (bands, band_bytes) = kit::data_texture(
+            gpu,
+            &format!("{label} bands"),
+            &band_texels,
+            wgpu::TextureFormat::Rgba32Uint,
+        )?;
         let band_curves = if data.band_curves.is_empty() {
             &[0][..]
         } else {
             &data.band_curves
         };
-        let (band_curves, band_bytes) = kit::data_texture(
+        let (band_curves, list_bytes) = kit::data_texture(
             gpu,
             &format!("{label} band curves"),
             band_curves,
@@ -69,21 +81,21 @@ impl Uploaded {
             curves,
             wgpu::TextureFormat::Rgba32Uint,
         )?;
-        let views = [&band_curves, &curves].map(|t| t.create_view(&Default::default()));
+        let views = [&bands, &band_curves, &curves].map(|t| t.create_view(&Default::default()));
         let bind_group = kit::bind_group(
             gpu,
             label,
             layout,
             &[
                 glyphs.as_entire_binding(),
-                bands.as_entire_binding(),
                 wgpu::BindingResource::TextureView(&views[0]),
                 wgpu::BindingResource::TextureView(&views[1]),
+                wgpu::BindingResource::TextureView(&views[2]),
             ],
         );
         Ok(Uploaded {
             bind_group,
-            bytes: glyphs.size() + bands.size() + band_bytes + curve_bytes,
+            bytes: glyphs.size() + band_bytes + list_bytes + curve_bytes,
         })
     }
 }
