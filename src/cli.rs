@@ -155,7 +155,8 @@ pub struct BenchArgs {
     /// winding, sdf-cells, xor-stencil, tessellation, atlas, vello, glyphon, vello-cpu.
     #[arg(long, value_delimiter = ',')]
     pub methods: Vec<String>,
-    /// Frames timed per case, over its rounds (default 21 in 3 rounds; 3 with --quick);
+    /// Frames timed per case in each of its least rounds, over them (default 35 in 5
+    /// rounds; 9 in 3 with --quick), more where its frames are short;
     /// per point of a scaling series (default 5; 2 with --quick).
     #[arg(long)]
     pub frames: Option<usize>,
@@ -163,6 +164,11 @@ pub struct BenchArgs {
     /// also stops the series at 3 000 glyphs and 256 px/em).
     #[arg(long)]
     pub scaling_points: Option<usize>,
+    /// Seconds a case whose ratio to the atlas or glyphon is not yet within ±5 % is
+    /// timed on for, over further rounds (default 30; 25 with --quick); 0 times the
+    /// least rounds only.
+    #[arg(long)]
+    pub settle_cap: Option<f64>,
     /// Folder for bench.md, bench.csv, bench.json, scaling.csv and the SVG plots.
     #[arg(long, default_value = "bench-out")]
     pub out: PathBuf,
@@ -319,6 +325,7 @@ pub fn run_bench(args: &BenchArgs) -> Result<(), Error> {
         methods: args.methods.clone(),
         frames: args.frames,
         scaling_points: args.scaling_points,
+        settle_cap_s: args.settle_cap,
         adapter: args.adapter.adapter.clone(),
     };
     crate::bench::run_to(&options, &args.out)?;

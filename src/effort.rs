@@ -23,6 +23,9 @@ pub struct Effort {
     pub bench_rounds: usize,
     /// `bench`: frames timed per round, after the warm-up (`bench::run::WARMUP_FRAMES`).
     pub bench_frames_per_round: usize,
+    /// `bench`: seconds a case whose ratios are not settled is timed for, over its
+    /// rounds, before the run reports it unsettled (`bench::settle`).
+    pub bench_settle_cap_s: f64,
     /// `bench`: points per scaling series.
     pub bench_scaling_points: usize,
     /// `bench`: frames timed per point and method of a scaling series, after its
@@ -63,8 +66,9 @@ impl Effort {
         sweep_full_turn_step_deg: 30.0,
         sweep_reruns_worst_cameras: false,
         stability_motion_frames: 16,
-        bench_rounds: 3,
+        bench_rounds: 5,
         bench_frames_per_round: 7,
+        bench_settle_cap_s: 30.0,
         bench_scaling_points: 11,
         bench_scaling_frames: 5,
         bench_glyph_count_up_to: 30_000.0,
@@ -93,6 +97,7 @@ impl Effort {
         stability_motion_frames: 8,
         bench_rounds: 3,
         bench_frames_per_round: 3,
+        bench_settle_cap_s: 25.0,
         bench_scaling_points: 3,
         bench_scaling_frames: 2,
         bench_glyph_count_up_to: 3_000.0,

@@ -114,18 +114,126 @@ pub fn gpu(adapter: Option<&str>, require_hardware: bool) -> Result<String, Erro
             gpu.adapter_name()
         )));
     }
+    let class = AdapterClass::of(&info);
     Ok(format!(
-        "name: {}\nbackend: {:?}\ndriver: {}\ndriver info: {}\ndevice type: {:?}\nadapter: {}\n",
+        "name: {}\nbackend: {:?}\ndriver: {}\ndriver info: {}\ndevice type: {:?}\nclass: {}\nadapter: {}\n{}\n",
         info.name,
         info.backend,
         info.driver,
         info.driver_info,
         info.device_type,
-        gpu.adapter_name()
+        class.name(),
+        gpu.adapter_name(),
+        adapter_class_sentence(&class),
     ))
+}
+
+/// What kind of device an adapter is, for what its timings can tell.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum AdapterClass {
+    /// A CPU implementation of the API (lavapipe, SwiftShader): its "GPU" is the CPU,
+    /// its SIMD lanes run every branch, and ratios between methods measure that.
+    Software,
+    /// A GPU sharing the CPU's package and memory (a laptop's or a console's).
+    Integrated,
+    /// A graphics card of a desktop or a laptop.
+    Discrete,
+    /// A data-centre accelerator (NVIDIA's H100, H200, A100, L4, T4…, AMD's Instinct):
+    /// its compute units are the whole chip, its graphics units (rasterizer, ROPs) a
+    /// small part of it (an H100 scores below an integrated Radeon 680M in 3DMark Time
+    /// Spy).
+    DataCentre,
+    /// Anything else (a virtual device, an unknown type).
+    Other,
+}
+
+/// Names of data-centre accelerators, as their adapters name them (case-insensitive,
+/// whole words or model prefixes).
+const DATA_CENTRE_NAMES: &[&str] = &[
+    "h100", "h200", "h800", "gh200", "b100", "b200", "gb200", "a100", "a800", "a30", "a40", "a10",
+    "a16", "a2", "l4", "l40", "t4", "v100", "p100", "instinct", "mi100", "mi210", "mi250", "mi300",
+];
+
+impl AdapterClass {
+    /// The class of the adapter `info` describes.
+    pub fn of(info: &wgpu::AdapterInfo) -> AdapterClass {
+        match info.device_type {
+            wgpu::DeviceType::Cpu => AdapterClass::Software,
+            wgpu::DeviceType::IntegratedGpu => AdapterClass::Integrated,
+            wgpu::DeviceType::DiscreteGpu if is_data_centre(&info.name) => AdapterClass::DataCentre,
+            wgpu::DeviceType::DiscreteGpu => AdapterClass::Discrete,
+            _ => AdapterClass::Other,
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            AdapterClass::Software => "software",
+            AdapterClass::Integrated => "integrated",
+            AdapterClass::Discrete => "discrete",
+            AdapterClass::DataCentre => "data-centre",
+            AdapterClass::Other => "other",
+        }
+    }
+}
+
+/// Whether an adapter's name is a data-centre accelerator's: a word of it (split at
+/// anything but letters and digits) is one of [`DATA_CENTRE_NAMES`], alone or with a
+/// memory size or form factor after it (`H100`, `H100-SXM5-80GB`, `A100 80GB PCIe`).
+fn is_data_centre(name: &str) -> bool {
+    name.to_lowercase()
+        .split(|c: char| !c.is_ascii_alphanumeric())
+        .any(|word| DATA_CENTRE_NAMES.contains(&word))
+}
+
+/// One sentence for a report's header: the adapter's class and what its ratios can and
+/// cannot tell.
+pub fn adapter_class_sentence(class: &AdapterClass) -> String {
+    match class {
+        AdapterClass::Software => "Class: software — a CPU runs the shaders, every lane of a \
+            SIMD group through every branch; ratios between fragment-shader methods here \
+            measure that CPU, and a gain found here is checked on the other software \
+            implementation before it is called the method's."
+            .into(),
+        AdapterClass::DataCentre => "Class: data-centre GPU — its graphics units (rasterizer \
+            and ROPs) are a small part of a chip built for compute (an H100 scores below an \
+            integrated Radeon 680M in 3DMark Time Spy): ratios of fragment-shader methods \
+            here against each other, against compute renderers (vello) or against glyphon \
+            do not represent desktop or laptop GPUs."
+            .into(),
+        AdapterClass::Integrated => "Class: integrated GPU.".into(),
+        AdapterClass::Discrete => "Class: discrete GPU.".into(),
+        AdapterClass::Other => "Class: other (neither a known GPU type nor a CPU).".into(),
+    }
 }
 
 /// Font units as text, with no "-0".
 fn units(value: f64) -> String {
     format!("{}", value + 0.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn data_centre_names_are_told_from_desktop_ones() {
+        for name in [
+            "NVIDIA H100 80GB HBM3",
+            "NVIDIA H200",
+            "NVIDIA A100-SXM4-40GB",
+            "Tesla T4",
+        ] {
+            assert!(is_data_centre(name), "{name}");
+        }
+        for name in [
+            "NVIDIA GeForce RTX 4090",
+            "AMD Radeon RX 7900 XTX",
+            "NVIDIA RTX A4000",
+            "Apple M2",
+        ] {
+            assert!(!is_data_centre(name), "{name}");
+        }
+    }
 }

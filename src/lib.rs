@@ -13,6 +13,7 @@ pub mod font;
 pub mod geometry;
 pub mod gpu;
 pub mod info;
+pub mod intervals;
 pub mod link_text;
 pub mod magnify;
 pub mod measure;

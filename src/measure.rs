@@ -27,9 +27,18 @@ pub struct RenderStats {
     pub gpu_ms: Option<f64>,
     /// (min, max) of the timed frames.
     pub gpu_ms_range: Option<(f64, f64)>,
+    /// `gpu_ms` with its 95 % interval, a bootstrap over the timed frames
+    /// ([`crate::intervals`]).
+    pub gpu_ms_interval: Option<crate::intervals::Interval>,
     /// How the frames were timed: timestamp queries, or the CPU's clock where the
     /// device has none.
     pub gpu_clock: Option<String>,
+    /// Frames recorded into each timed submission: more than 1 where a frame is short
+    /// (`frame::SHORT_FRAME_MS`).
+    pub frames_per_submission: Option<u32>,
+    /// Untimed frames drawn before the timed ones: the asked warm-up, and more while
+    /// the frame time was still falling.
+    pub warmup_frames: Option<usize>,
     /// Median CPU time of recording one frame (the method's `encode`: culling, sorting,
     /// mesh building, instance writes), in the same frames; None for CPU methods.
     pub cpu_frame_ms: Option<f64>,
@@ -108,31 +117,7 @@ pub fn measure(
     params: &[(String, String)],
     timing: FrameTiming,
 ) -> Result<Measured, Error> {
-    let mut stats = RenderStats {
-        method: info.name.to_owned(),
-        params: params.to_vec(),
-        adapter: String::new(),
-        gpu_ms: None,
-        gpu_ms_range: None,
-        gpu_clock: None,
-        cpu_frame_ms: None,
-        frame_ms: None,
-        cpu_prepare_ms: 0.0,
-        cpu_render_ms: None,
-        gpu_bytes: 0,
-        cache_bytes: None,
-        width: camera.width,
-        height: camera.height,
-        size_px_per_em: camera.size_px_per_em,
-        instances: scene.instances.len(),
-        distinct_glyphs: scene.glyphs.len(),
-        covered_area_px: 0.0,
-        coverage_range: None,
-        error: None,
-        curves_per_pixel: None,
-        mesh: None,
-        layout_offset: None,
-    };
+    let mut stats = measure_stats_shell(info, params, scene, camera);
     // Checked for the reference too, which takes none.
     let checked = info.parse_params(params)?;
     let mut overlay = None;
@@ -160,19 +145,8 @@ pub fn measure(
             overlay = Some(target.readback_color(gpu)?);
         }
         stats.curves_per_pixel = method.curves_per_pixel(gpu, camera)?;
-        let (times, clock) = time_frames(gpu, method.as_mut(), &target, camera, timing)?;
-        let gpu_ms = || times.iter().map(|t| t.gpu_ms);
-        if let Some(median) = metrics::median(gpu_ms()) {
-            let range = gpu_ms().fold((f64::INFINITY, 0.0f64), |(lo, hi), t| {
-                (lo.min(t), hi.max(t))
-            });
-            let cpu_ms = metrics::median(times.iter().map(|t| t.cpu_ms));
-            stats.gpu_ms = Some(median);
-            stats.gpu_ms_range = Some(range);
-            stats.gpu_clock = Some(clock.to_owned());
-            stats.cpu_frame_ms = cpu_ms;
-            stats.frame_ms = metrics::median(times.iter().map(|t| t.gpu_ms + t.cpu_ms));
-        }
+        let timed = time_frames(gpu, method.as_mut(), &target, camera, timing)?;
+        timed.write_into(&mut stats);
         // After the frames: what a method allocates on its first frame (intermediate
         // attachments, meshes that depend on the camera) counts too.
         stats.gpu_bytes = method.gpu_bytes();
@@ -192,23 +166,153 @@ pub fn measure(
     })
 }
 
-/// GPU and CPU time of `timing.frames` frames after `timing.warmup` untimed ones, by
-/// timestamp queries or, where the device has none, the CPU's clock; and which. The
-/// target holds the last frame.
+/// The stats of a measurement before anything is measured: what the scene and camera
+/// say.
+fn measure_stats_shell(
+    info: &MethodInfo,
+    params: &[(String, String)],
+    scene: &Scene,
+    camera: &Camera,
+) -> RenderStats {
+    RenderStats {
+        method: info.name.to_owned(),
+        params: params.to_vec(),
+        adapter: String::new(),
+        gpu_ms: None,
+        gpu_ms_range: None,
+        gpu_ms_interval: None,
+        gpu_clock: None,
+        frames_per_submission: None,
+        warmup_frames: None,
+        cpu_frame_ms: None,
+        frame_ms: None,
+        cpu_prepare_ms: 0.0,
+        cpu_render_ms: None,
+        gpu_bytes: 0,
+        cache_bytes: None,
+        width: camera.width,
+        height: camera.height,
+        size_px_per_em: camera.size_px_per_em,
+        instances: scene.instances.len(),
+        distinct_glyphs: scene.glyphs.len(),
+        covered_area_px: 0.0,
+        coverage_range: None,
+        error: None,
+        curves_per_pixel: None,
+        mesh: None,
+        layout_offset: None,
+    }
+}
+
+impl RenderStats {
+    /// The stats of frames timed alone (no image, no scene figures): what the bench's
+    /// later rounds keep of a case.
+    pub fn timed_only(params: &[(String, String)], cpu_prepare_ms: f64) -> RenderStats {
+        RenderStats {
+            method: String::new(),
+            params: params.to_vec(),
+            adapter: String::new(),
+            gpu_ms: None,
+            gpu_ms_range: None,
+            gpu_ms_interval: None,
+            gpu_clock: None,
+            frames_per_submission: None,
+            warmup_frames: None,
+            cpu_frame_ms: None,
+            frame_ms: None,
+            cpu_prepare_ms,
+            cpu_render_ms: None,
+            gpu_bytes: 0,
+            cache_bytes: None,
+            width: 0,
+            height: 0,
+            size_px_per_em: 0.0,
+            instances: 0,
+            distinct_glyphs: 0,
+            covered_area_px: 0.0,
+            coverage_range: None,
+            error: None,
+            curves_per_pixel: None,
+            mesh: None,
+            layout_offset: None,
+        }
+    }
+}
+
+/// Frames timed, by which clock, and how.
+pub struct Timed {
+    pub times: Vec<FrameTime>,
+    pub clock: &'static str,
+    pub frames_per_submission: u32,
+    pub warmup_frames: usize,
+}
+
+impl Timed {
+    /// The medians of the GPU, CPU and whole frame times, the range of the GPU times.
+    pub fn write_into(&self, stats: &mut RenderStats) {
+        let times = &self.times;
+        let gpu_ms = || times.iter().map(|t| t.gpu_ms);
+        let Some(median) = metrics::median(gpu_ms()) else {
+            return;
+        };
+        let range = gpu_ms().fold((f64::INFINITY, 0.0f64), |(lo, hi), t| {
+            (lo.min(t), hi.max(t))
+        });
+        stats.gpu_ms = Some(median);
+        stats.gpu_ms_range = Some(range);
+        stats.gpu_ms_interval = crate::intervals::median_interval(&gpu_ms().collect::<Vec<_>>());
+        stats.gpu_clock = Some(self.clock.to_owned());
+        stats.cpu_frame_ms = metrics::median(times.iter().map(|t| t.cpu_ms));
+        stats.frame_ms = metrics::median(times.iter().map(|t| t.gpu_ms + t.cpu_ms));
+        stats.frames_per_submission = Some(self.frames_per_submission);
+        stats.warmup_frames = Some(self.warmup_frames);
+    }
+}
+
+/// GPU and CPU time of `timing.frames` frames after at least `timing.warmup` untimed
+/// ones (see [`frame::time_frames_settled`]), by timestamp queries or, where the device
+/// has none, the CPU's clock. The target holds the last frame.
 pub fn time_frames(
     gpu: &GpuContext,
     method: &mut dyn methods::Method,
     target: &CoverageTarget,
     camera: &Camera,
     timing: FrameTiming,
-) -> Result<(Vec<FrameTime>, &'static str), Error> {
-    match frame::time_frames(gpu, method, target, camera, timing.warmup, timing.frames)? {
-        Some(times) => Ok((times, CLOCK_TIMESTAMPS)),
-        None => Ok((
-            wall_clock_frames(gpu, method, target, camera, timing)?,
-            CLOCK_WALL,
-        )),
+) -> Result<Timed, Error> {
+    match frame::time_frames_settled(gpu, method, target, camera, timing.warmup, timing.frames)? {
+        Some(t) => Ok(Timed {
+            times: t.times,
+            clock: CLOCK_TIMESTAMPS,
+            frames_per_submission: t.frames_per_submission,
+            warmup_frames: t.warmup_frames,
+        }),
+        None => Ok(Timed {
+            times: wall_clock_frames(gpu, method, target, camera, timing)?,
+            clock: CLOCK_WALL,
+            frames_per_submission: 1,
+            warmup_frames: timing.warmup,
+        }),
     }
+}
+
+/// A method's frame time alone, prepared anew: what the bench's later rounds measure
+/// once a case's image and error are known from its first.
+pub fn time_only(
+    gpu: &GpuContext,
+    scene: &Scene,
+    camera: &Camera,
+    info: &MethodInfo,
+    params: &[(String, String)],
+    timing: FrameTiming,
+) -> Result<RenderStats, Error> {
+    let mut stats = measure_stats_shell(info, params, scene, camera);
+    let mut method = info.create(params)?;
+    let target = CoverageTarget::new(gpu, camera.width, camera.height, Channels::Coverage)?;
+    let start = Instant::now();
+    method.prepare(gpu, scene)?;
+    stats.cpu_prepare_ms = ms_since(start);
+    time_frames(gpu, method.as_mut(), &target, camera, timing)?.write_into(&mut stats);
+    Ok(stats)
 }
 
 /// Frame times from the CPU's clock, for devices without timestamp queries: each frame

@@ -47,11 +47,14 @@ fn measured() -> Vec<&'static str> {
 #[test]
 fn quick_bench_outputs_agree_with_render() {
     let out = scratch("quick");
+    // A short cap: the settling rounds run, the run stays short.
     succeeds(&[
         "bench",
         "--quick",
         "--scenes",
         "headlines",
+        "--settle-cap",
+        "2",
         "--out",
         out.to_str().unwrap(),
     ]);
@@ -107,6 +110,25 @@ fn quick_bench_outputs_agree_with_render() {
             let (lo, hi) = (&case["gpu_ms_range"][0], &case["gpu_ms_range"][1]);
             assert!(number(lo, &what) <= number(hi, &what), "{what}");
             assert!(case["gpu_bytes"].as_u64().unwrap() > 0, "{what}");
+            // Timed in the least rounds at least; every ratio but the baseline's own
+            // with its interval around it.
+            assert!(case["rounds"].as_u64().unwrap() >= 3, "{what}");
+            let is_baseline =
+                case["method"] == "atlas" && case["params"].as_array().unwrap().len() == 1;
+            let ratios: &[&str] = if is_baseline { &[] } else { &["ratio_atlas"] };
+            for key in ratios.iter().chain(&["frame_ms_interval"]) {
+                let r = &case[*key];
+                let (low, value, high) = (
+                    number(&r["low"], &what),
+                    number(&r["value"], &what),
+                    number(&r["high"], &what),
+                );
+                assert!(
+                    0.0 < low && low <= value && value <= high,
+                    "{what} {key}: {r}"
+                );
+                assert!(r["settled"].is_boolean(), "{what} {key}: {r}");
+            }
         }
     }
     // Where winding's time goes: a breakdown per view, its stages timed.
@@ -310,6 +332,10 @@ fn bad_input_fails_cleanly_before_measuring() {
         ),
         (vec!["--frames", "0", "--out", out_dir], "at least 1"),
         (
+            vec!["--settle-cap=-1", "--out", out_dir],
+            "--settle-cap must be a number of seconds",
+        ),
+        (
             vec!["--scaling-points", "1", "--out", out_dir],
             "--scaling-points must be from 2",
         ),
@@ -351,6 +377,8 @@ fn the_bench_measures_methods_in_motion() {
         "winding,atlas",
         "--frames",
         "1",
+        "--settle-cap",
+        "0",
         "--out",
         out.to_str().unwrap(),
     ]);

@@ -186,7 +186,10 @@ fn readme_errors(readme: &str, run: &dyn Fn(&str) -> Value) -> Vec<String> {
                 (ms, number(&case["cpu_render_ms"]))
             } else {
                 match *kind {
-                    // "× atlas", "× glyphon": over that method's default in the same run.
+                    // "× atlas", "× glyphon": over that method's default in the same run,
+                    // the run's own ratio with its interval where it kept one
+                    // (`ratio_atlas`, `ratio_glyphon`: `V× (L–H)`, `*` after an
+                    // unsettled one), else the ratio of the medians.
                     k if k.starts_with("× ") => {
                         let over = &k["× ".len()..];
                         let Some(base) = page_default(&json, over) else {
@@ -196,6 +199,23 @@ fn readme_errors(readme: &str, run: &dyn Fn(&str) -> Value) -> Vec<String> {
                             ));
                             continue;
                         };
+                        let field = &case[format!("ratio_{over}")];
+                        if let Some(value) = field["value"].as_f64() {
+                            let written = format!(
+                                "{}× ({}–{}){}",
+                                as_shown("0.00", value),
+                                as_shown("0.00", number(&field["low"])),
+                                as_shown("0.00", number(&field["high"])),
+                                if field["settled"] == true { "" } else { "*" }
+                            );
+                            if shown != written {
+                                errors.push(format!(
+                                    "README.md:{line}, `{method}`, {kind}: {shown} where \
+                                     {path} gives {written}"
+                                ));
+                            }
+                            continue;
+                        }
                         (
                             shown.trim_end_matches('×'),
                             number(&case["frame_ms"]) / number(&base["frame_ms"]),

@@ -30,8 +30,9 @@ const TIMED_FRAMES: usize = 9;
 pub struct ParetoPoint {
     pub method: &'static str,
     pub params: Vec<(String, String)>,
-    /// Median GPU time of a frame, ms.
+    /// Median GPU time of a frame, ms, and its 95 % interval over the timed frames.
     pub gpu_ms: f64,
+    pub gpu_ms_interval: Option<(f64, f64)>,
     pub mae_255: f64,
     pub max: f64,
 }
@@ -207,8 +208,11 @@ impl ParetoSweep {
             };
             let nearest = nearest(points, position.x, position.y)?;
             let p = &points[nearest];
+            let interval = p
+                .gpu_ms_interval
+                .map_or(String::new(), |(lo, hi)| format!(" ({lo:.3}–{hi:.3})"));
             Some(format!(
-                "{}\n{:.3} ms, MAE {:.3}/255, max {:.3}",
+                "{}\n{:.3} ms{interval}, MAE {:.3}/255, max {:.3}",
                 p.label(),
                 p.gpu_ms,
                 p.mae_255,
@@ -221,7 +225,7 @@ impl ParetoSweep {
         };
         let response = Plot::new("speed vs error")
             .legend(Legend::default())
-            .x_axis_label("GPU time per frame, ms (median, log scale)")
+            .x_axis_label("GPU time per frame, ms (median and its 95 % interval, log scale)")
             .y_axis_label("mean error vs reference, 1/255 (log scale)")
             .x_axis_formatter(power_of_ten)
             .y_axis_formatter(power_of_ten)
@@ -241,6 +245,16 @@ impl ParetoSweep {
                             .shape(MarkerShape::Circle)
                             .color(method_color(k)),
                     );
+                    // Each point's 95 % interval of its frame time, as a bar along x.
+                    for p in points.iter().filter(|p| p.method == method) {
+                        let Some((lo, hi)) = p.gpu_ms_interval else {
+                            continue;
+                        };
+                        let [_, y] = plotted(p);
+                        let bar: PlotPoints =
+                            vec![[lo.max(1e-6).log10(), y], [hi.max(1e-6).log10(), y]].into();
+                        plot.line(Line::new("", bar).color(method_color(k)).width(1.0));
+                    }
                 }
                 let line: PlotPoints = front.iter().map(|&i| plotted(&points[i])).collect();
                 plot.line(
@@ -328,6 +342,7 @@ fn measure(
         method,
         params,
         gpu_ms,
+        gpu_ms_interval: measured.stats.gpu_ms_interval.map(|i| (i.low, i.high)),
         mae_255: error.mae_255,
         max: error.max,
     })

@@ -164,6 +164,22 @@ pub fn time_against_error(result: &BenchResult, path: &Path) -> Result<(), Error
                     c.stroke_width(2),
                 ))
                 .map_err(plot_error)?;
+            // Each case's 95 % interval of its frame time over the rounds, as a bar.
+            let bars: Vec<[(f64, f64); 2]> = cases
+                .iter()
+                .filter(|c| c.method == method)
+                .filter_map(|c| {
+                    let (_, mae) = time_and_error(c)?;
+                    let i = c.frame_ms_interval?;
+                    Some([(i.low, mae), (i.high, mae)])
+                })
+                .collect();
+            chart
+                .draw_series(
+                    bars.into_iter()
+                        .map(|b| PathElement::new(b, c.stroke_width(1))),
+                )
+                .map_err(plot_error)?;
             // The peers as triangles, glyphscope's own methods as discs.
             if registry::find(method).is_ok_and(|m| m.is_peer()) {
                 chart

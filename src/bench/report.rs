@@ -7,39 +7,68 @@ use super::method_settings::{CONTRAST, SHIPPED, setting_name};
 use super::numbers::{kb_or_mb, sig};
 use super::result::{BenchResult, Measurement, Refusal, SceneCamera, SceneInfo};
 use super::{motion, scaling, scenes, winding_cost};
+use crate::intervals::Interval;
 use crate::methods::registry;
 
 /// Mean-error levels (1/255) at which the report names the fastest method.
 pub const ERROR_LEVELS: &[f64] = &[0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0];
 
 /// A case's time per frame (GPU + CPU) over the atlas baseline's in the same scene and
-/// view.
+/// view: the median of the rounds' ratios where the rounds gave one (`settle`), else
+/// the ratio of the medians (1 for the baseline itself).
 pub fn ratio_to_baseline(result: &BenchResult, case: &Measurement) -> Option<f64> {
     if case.is_reference() {
         return None;
+    }
+    if let Some(r) = case.ratio_atlas {
+        return Some(r.value);
     }
     let baseline = result.baseline_in(&case.scene, case.scene_camera)?;
     Some(case.frame_ms? / baseline.frame_ms?)
 }
 
 /// A case's time per frame (GPU + CPU) over [`SHIPPED`]'s default (glyphon) in the same
-/// scene and view, where glyphon drew it.
+/// scene and view, where glyphon drew it; as [`ratio_to_baseline`].
 pub fn ratio_to_shipped(result: &BenchResult, case: &Measurement) -> Option<f64> {
     if case.is_reference() {
         return None;
+    }
+    if let Some(r) = case.ratio_glyphon {
+        return Some(r.value);
     }
     let shipped = result.default_case_in(SHIPPED.name, &case.scene, case.scene_camera)?;
     Some(case.frame_ms? / shipped.frame_ms?)
 }
 
-/// [`ratio_to_shipped`] as a cell: `n/a` where glyphon cannot draw the view (the peers'
-/// table says why), `—` where it was not run.
-pub fn shipped_cell(result: &BenchResult, case: &Measurement) -> String {
+/// A ratio as a cell: `2.67 (2.60–2.75)` with its 95 % interval, `*` after it where
+/// the interval is wider than ±5 % (`intervals::TARGET`); the bare ratio where the rounds
+/// gave no interval (the divisor itself); `suffix` after each figure.
+fn ratio_cell(interval: Option<Interval>, value: Option<f64>, suffix: &str) -> Option<String> {
+    match interval {
+        Some(i) => Some(format!(
+            "{:.2}{suffix} ({:.2}–{:.2}){}",
+            i.value,
+            i.low,
+            i.high,
+            if i.settled { "" } else { "*" }
+        )),
+        None => value.map(|v| format!("{v:.2}{suffix}")),
+    }
+}
+
+/// [`ratio_to_baseline`] as a cell, with its interval; `—` for the reference.
+pub fn atlas_cell(result: &BenchResult, case: &Measurement, suffix: &str) -> String {
+    ratio_cell(case.ratio_atlas, ratio_to_baseline(result, case), suffix).unwrap_or("—".into())
+}
+
+/// [`ratio_to_shipped`] as a cell, with its interval: `n/a` where glyphon cannot draw
+/// the view (the peers' table says why), `—` where it was not run.
+pub fn shipped_cell(result: &BenchResult, case: &Measurement, suffix: &str) -> String {
     let refused = result
         .refusal_in(SHIPPED.name, &case.scene, case.scene_camera)
         .is_some();
-    match ratio_to_shipped(result, case) {
-        Some(r) => format!("{r:.2}"),
+    match ratio_cell(case.ratio_glyphon, ratio_to_shipped(result, case), suffix) {
+        Some(cell) => cell,
         None if refused => "n/a".into(),
         None => "—".into(),
     }
@@ -96,22 +125,73 @@ pub fn markdown(result: &BenchResult) -> String {
 /// The standard scenes' part of the report: how they were timed, the summary, and a
 /// table per scene and view.
 fn scene_sections(result: &BenchResult, clock: &str, md: &mut String) {
+    let timed: Vec<&Measurement> = result
+        .measurements
+        .iter()
+        .filter(|c| !c.is_reference())
+        .collect();
+    let most_rounds = timed.iter().map(|c| c.rounds).max().unwrap_or(0);
+    let most_warmup = timed
+        .iter()
+        .filter_map(|c| c.warmup_frames)
+        .max()
+        .unwrap_or(0);
+    let batched: Vec<String> = timed
+        .iter()
+        .filter(|c| c.frames_per_submission.is_some_and(|k| k > 1))
+        .map(|c| {
+            format!(
+                "{} {} on {} {} ({})",
+                c.method,
+                c.settings(),
+                c.scene,
+                c.scene_camera.name(),
+                c.frames_per_submission.unwrap_or(1)
+            )
+        })
+        .collect();
+    let unsettled = timed
+        .iter()
+        .filter(|c| {
+            [c.ratio_atlas, c.ratio_glyphon]
+                .iter()
+                .flatten()
+                .any(|r| !r.settled)
+        })
+        .count();
     let _ = writeln!(
         md,
-        "Device: **{}**. GPU time per frame by {clock}: {} round{} interleaving the cases \
-         of a view, each preparing the method anew and timing {} frames after {} warm-up \
-         frames; the median of the rounds' medians{}, fastest–slowest frame of all in \
-         brackets. *CPU/frame*: the CPU's work of recording each of those frames (the \
-         method's culling, sorting, meshing and instance writes). **× atlas** is GPU + \
-         CPU time per frame over the atlas baseline's (`atlas` at its default, 4×4 sub-pixel phases, cached at the \
-         scene's own size) in the same scene and view of this run: compare methods by \
-         these ratios, not by absolute times, which belong to this device alone.\n",
+        "Device: **{}**. {} GPU time per frame by {clock}. The cases of a view are timed \
+         in interleaved rounds, each preparing every method anew and timing {} frames \
+         after at least {} warm-up frames (more while a frame was still faster than all \
+         before it by 5 %: up to {most_warmup} here); a frame under {} ms is timed {} \
+         ({}). After {} rounds, the cases whose ratio to the atlas or to glyphon has a 95 % \
+         interval (a bootstrap over the rounds of the median of the rounds' ratios) wider \
+         than ±{} % are timed on, with the atlas and glyphon, for up to {} s each{}: up \
+         to {most_rounds} rounds here, and {unsettled} case{} left unsettled, marked `*`. \
+         **× atlas** is GPU + CPU time per frame over the atlas baseline's (`atlas` at its \
+         default, 4×4 sub-pixel phases, cached at the scene's own size) in the same scene, \
+         view and round, the median over the rounds with its interval in brackets: \
+         compare methods by these ratios, not by absolute times, which belong to this \
+         device alone. *GPU ms*: the median of the rounds' medians, fastest–slowest frame \
+         of all in brackets; *CPU/frame*: the CPU's work of recording each frame (the \
+         method's culling, sorting, meshing and instance writes).\n",
         result.adapter,
-        result.timing.rounds,
-        if result.timing.rounds == 1 { "" } else { "s" },
+        crate::info::adapter_class_sentence(&result.adapter_class),
         result.timing.per_round.frames,
         result.timing.per_round.warmup,
+        crate::methods::frame::SHORT_FRAME_MS,
+        "several to a submission and a pair of timestamps, each its share",
+        if batched.is_empty() {
+            "none was here".to_owned()
+        } else {
+            format!("frames per submission: {}", batched.join(", "))
+        },
+        result.timing.rounds,
+        crate::intervals::TARGET * 100.0,
+        result.settle_cap_s,
         if result.quick { " (`--quick`)" } else { "" },
+        if unsettled == 1 { "" } else { "s" },
     );
     let _ = writeln!(
         md,
@@ -169,8 +249,8 @@ fn scene_sections(result: &BenchResult, clock: &str, md: &mut String) {
                 case.method,
                 case.settings(),
                 case.cpu_frame_ms.map_or("—".into(), sig),
-                ratio_to_baseline(result, case).map_or("—".into(), |r| format!("{r:.2}")),
-                shipped_cell(result, case),
+                atlas_cell(result, case, ""),
+                shipped_cell(result, case, ""),
                 case.cpu_render_ms
                     .map_or_else(|| sig(case.cpu_prepare_ms), sig),
                 kb_or_mb(case.gpu_bytes),
@@ -227,8 +307,8 @@ fn scene_sections(result: &BenchResult, clock: &str, md: &mut String) {
                         c.method,
                         c.settings(),
                         c.frame_ms.map_or("—".into(), sig),
-                        ratio_to_baseline(result, c).map_or("—".into(), |r| format!("{r:.2}")),
-                        shipped_cell(result, c),
+                        atlas_cell(result, c, ""),
+                        shipped_cell(result, c, ""),
                     );
                 }
                 None => {
@@ -278,12 +358,11 @@ fn summary(result: &BenchResult, md: &mut String) {
             });
         let fastest = LEVELS.map(|level| {
             fastest_within(&cases, level).map_or("none".into(), |c| {
-                let ratio =
-                    ratio_to_baseline(result, c).map_or("—".into(), |r| format!("{r:.2}"));
                 format!(
-                    "{} ({ratio}× atlas, {}× glyphon)",
+                    "{} ({} × atlas, {} × glyphon)",
                     named(c),
-                    shipped_cell(result, c)
+                    atlas_cell(result, c, ""),
+                    shipped_cell(result, c, "")
                 )
             })
         });
@@ -336,9 +415,8 @@ fn peers_summary(result: &BenchResult, md: &mut String) {
             {
                 format!(
                     "{} · {} · {:.2} · {:.2} · {:.3} · {}",
-                    ratio_to_baseline(result, c).map_or("—".into(), |r| format!("{r:.2}×")),
-                    ratio_to_shipped(result, c)
-                        .map_or_else(|| shipped_cell(result, c), |r| format!("{r:.2}×")),
+                    atlas_cell(result, c, "×"),
+                    shipped_cell(result, c, "×"),
                     c.error.mae_255,
                     c.error.edge.mae_255,
                     c.error.max,
@@ -368,7 +446,9 @@ fn peers_summary(result: &BenchResult, md: &mut String) {
 pub fn csv(result: &BenchResult) -> String {
     let mut out = String::from(
         "scene,view,method,settings,gpu_ms,gpu_ms_min,gpu_ms_max,cpu_frame_ms,frame_ms,\
-         ratio_to_atlas,ratio_to_glyphon,cpu_prepare_ms,cpu_render_ms,mesh_build_ms,gpu_bytes,\
+         ratio_to_atlas,ratio_to_atlas_low,ratio_to_atlas_high,ratio_to_atlas_settled,\
+         ratio_to_glyphon,ratio_to_glyphon_low,ratio_to_glyphon_high,ratio_to_glyphon_settled,\
+         rounds,cpu_prepare_ms,cpu_render_ms,mesh_build_ms,gpu_bytes,\
          curves_per_pixel_mean,curves_per_pixel_max,mesh_points,mae_255,p99_255,rmse_255,max,\
          pixels_over_025,pixels_over_05,pixels,invalid_pixels,edge_pixels,edge_mae_255,\
          edge_max,edge_pixels_over_025,edge_pixels_over_05,refused\n",
@@ -379,7 +459,7 @@ pub fn csv(result: &BenchResult) -> String {
         let _ = writeln!(
             out,
             "{},{},{},\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\
-             {},{},{},{},{},",
+             {},{},{},{},{},{},{},{},{},{},{},{},",
             c.scene,
             serde_json::to_value(c.scene_camera)
                 .expect("a view serializes")
@@ -393,7 +473,16 @@ pub fn csv(result: &BenchResult) -> String {
             opt(c.cpu_frame_ms),
             opt(c.frame_ms),
             opt(ratio_to_baseline(result, c)),
+            opt(c.ratio_atlas.map(|r| r.low)),
+            opt(c.ratio_atlas.map(|r| r.high)),
+            c.ratio_atlas
+                .map_or(String::new(), |r| r.settled.to_string()),
             opt(ratio_to_shipped(result, c)),
+            opt(c.ratio_glyphon.map(|r| r.low)),
+            opt(c.ratio_glyphon.map(|r| r.high)),
+            c.ratio_glyphon
+                .map_or(String::new(), |r| r.settled.to_string()),
+            c.rounds,
             c.cpu_prepare_ms,
             opt(c.cpu_render_ms),
             opt(c.mesh_build_ms),
@@ -429,7 +518,7 @@ pub fn csv(result: &BenchResult) -> String {
                 .unwrap_or(""),
             r.method,
             setting_name(&r.params),
-            ",".repeat(27),
+            ",".repeat(34),
             r.reason.replace('"', "'")
         );
     }

@@ -5,6 +5,8 @@
 
 use serde::Serialize;
 
+use crate::intervals::Interval;
+
 use super::method_settings;
 use crate::measure::FrameTiming;
 use crate::methods::registry;
@@ -80,8 +82,23 @@ pub struct Measurement {
     /// The CPU's work of recording each frame (culling, meshing, instance writes), ms.
     pub cpu_frame_ms: Option<f64>,
     /// What one frame costs in all, GPU + CPU per frame (the reference: its
-    /// rasterization), ms: what cases are ranked and divided by.
+    /// rasterization), ms: what cases are ranked and divided by. The median of the
+    /// rounds' medians.
     pub frame_ms: Option<f64>,
+    /// `frame_ms` with its 95 % interval over the rounds (`settle`).
+    pub frame_ms_interval: Option<Interval>,
+    /// This case's frame over the atlas baseline's, round by round: the median of the
+    /// rounds' ratios and its 95 % interval (None for the baseline itself).
+    pub ratio_atlas: Option<Interval>,
+    /// The same over glyphon's default, where glyphon drew the view.
+    pub ratio_glyphon: Option<Interval>,
+    /// Rounds the case was timed in, each preparing it anew.
+    pub rounds: usize,
+    /// Frames recorded into each timed submission (more than 1 for short frames).
+    pub frames_per_submission: Option<u32>,
+    /// The most untimed warm-up frames a round drew (the asked ones, and more while the
+    /// frame time was falling).
+    pub warmup_frames: Option<usize>,
     /// The method's `prepare`, ms (the reference: 0).
     pub cpu_prepare_ms: f64,
     /// The reference's rasterization, ms.
@@ -236,6 +253,11 @@ pub struct MotionCase {
 #[derive(Clone, Debug, Serialize)]
 pub struct BenchResult {
     pub adapter: String,
+    /// What kind of device `adapter` is, and what its figures can tell
+    /// ([`crate::info::AdapterClass`]).
+    pub adapter_class: crate::info::AdapterClass,
+    /// Seconds a case whose ratios were not settled was timed for, at most.
+    pub settle_cap_s: f64,
     /// How GPU time was measured (timestamp queries, or the CPU clock).
     pub gpu_clock: Option<String>,
     pub quick: bool,

@@ -14,13 +14,17 @@ use crate::Error;
 use crate::camera::Camera;
 use crate::effort::Effort;
 use crate::gpu::GpuContext;
+use crate::gpu::{Channels, CoverageTarget};
+use crate::intervals;
 use crate::measure::{self, FrameTiming, Measured};
+use crate::methods::frame::{self, ms_since};
 use crate::methods::info::{MethodInfo, Role};
 use crate::methods::params::assignments;
 use crate::methods::registry;
 use crate::metrics;
 use crate::motion::run::MethodSpec;
 use crate::scene::Scene;
+use web_time::Instant;
 
 /// Untimed frames before each round's timed ones, in a full run and with `--quick`
 /// alike (shaders compile lazily on the first frames).
@@ -54,6 +58,9 @@ pub struct BenchOptions {
     pub frames: Option<usize>,
     /// Points per scaling series, overriding [`Effort`]'s (11, or 3 with `quick`).
     pub scaling_points: Option<usize>,
+    /// Seconds an unsettled case is timed on for, overriding [`Effort`]'s (30, or 25
+    /// with `quick`); 0 for the least rounds only.
+    pub settle_cap_s: Option<f64>,
     /// A part of the name of the adapter to measure on (see [`GpuContext::open`]).
     pub adapter: Option<String>,
 }
@@ -96,6 +103,12 @@ impl ViewUnderTest<'_> {
             gpu_clock: stats.gpu_clock,
             cpu_frame_ms: stats.cpu_frame_ms,
             frame_ms: stats.frame_ms.or(stats.cpu_render_ms),
+            frame_ms_interval: None,
+            ratio_atlas: None,
+            ratio_glyphon: None,
+            rounds: 1,
+            frames_per_submission: stats.frames_per_submission,
+            warmup_frames: stats.warmup_frames,
             cpu_prepare_ms: stats.cpu_prepare_ms,
             cpu_render_ms: stats.cpu_render_ms,
             mesh_build_ms: stats.mesh.as_ref().map(|m| m.cpu_build_ms),
@@ -185,6 +198,13 @@ fn check(options: &BenchOptions, effort: &Effort) -> Result<Plan, Error> {
             })
             .collect::<Result<Vec<_>, _>>()?
     };
+    if let Some(cap) = options.settle_cap_s
+        && !(cap >= 0.0 && cap.is_finite())
+    {
+        return Err(Error::Input(format!(
+            "--settle-cap must be a number of seconds, 0 or more, got {cap}"
+        )));
+    }
     if options.frames == Some(0) {
         return Err(Error::Input("--frames must be at least 1".into()));
     }
@@ -258,6 +278,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
     };
     let scaling_methods = plan.scaling_methods();
     let timing = rounds(&effort, options.frames);
+    let settle_cap_s = options.settle_cap_s.unwrap_or(effort.bench_settle_cap_s);
     let gpu = GpuContext::open(options.adapter.as_deref())?;
     let per_view = |view| -> usize {
         methods
@@ -275,6 +296,12 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
     );
     let mut result = BenchResult {
         adapter: gpu.adapter_name(),
+        adapter_class: gpu
+            .adapter_info()
+            .map_or(crate::info::AdapterClass::Other, |i| {
+                crate::info::AdapterClass::of(&i)
+            }),
+        settle_cap_s,
         gpu_clock: None,
         quick: options.quick,
         timing,
@@ -331,38 +358,40 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
                         .map(move |p| (*m, p))
                 })
                 .collect();
-            let mut rounds = Vec::with_capacity(timing.rounds);
-            for _ in 0..timing.rounds {
-                let mut round = Vec::with_capacity(plan.len());
-                for (method, params) in &plan {
-                    let settings: Vec<String> = assignments(params).collect();
-                    progress.set_message(format!(
-                        "{} ({view:?}): {} {}",
-                        bench_scene.name,
-                        method.name,
-                        settings.join(" ")
-                    ));
-                    match here.measure(&gpu, method, params.clone(), timing.per_round) {
-                        Ok(measured) => round.push(measured),
-                        // A peer's documented limit: a result, said once per view.
-                        Err(Error::Refused(reason)) => {
-                            let refusal = Refusal {
-                                scene: bench_scene.name.into(),
-                                scene_camera: view,
-                                method: method.name.into(),
-                                params: params.clone(),
-                                reason,
-                            };
-                            if !result.refusals.contains(&refusal) {
-                                result.refusals.push(refusal);
-                            }
+            // The first round: each case's image, error and first timing.
+            let mut first = Vec::with_capacity(plan.len());
+            for (method, params) in &plan {
+                let settings: Vec<String> = assignments(params).collect();
+                progress.set_message(format!(
+                    "{} ({view:?}): {} {}",
+                    bench_scene.name,
+                    method.name,
+                    settings.join(" ")
+                ));
+                match here.measure(&gpu, method, params.clone(), timing.per_round) {
+                    Ok(measured) => first.push((*method, measured)),
+                    // A peer's documented limit: a result, said once per view.
+                    Err(Error::Refused(reason)) => {
+                        let refusal = Refusal {
+                            scene: bench_scene.name.into(),
+                            scene_camera: view,
+                            method: method.name.into(),
+                            params: params.clone(),
+                            reason,
+                        };
+                        if !result.refusals.contains(&refusal) {
+                            result.refusals.push(refusal);
                         }
-                        Err(e) => return Err(e),
                     }
-                    progress.inc(1);
+                    Err(e) => return Err(e),
                 }
-                rounds.push(round);
+                progress.inc(timing.rounds as u64);
             }
+            progress.set_message(format!(
+                "{} ({view:?}): settling the ratios",
+                bench_scene.name
+            ));
+            let cases = settle_rounds(&gpu, &here, first, timing, settle_cap_s)?;
             if methods.iter().any(|m| m.name == winding_cost::METHOD.name) {
                 progress.set_message(format!(
                     "{} ({view:?}): where {}'s time goes",
@@ -397,7 +426,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
                     effort.bench_motion_frames,
                 )?);
             }
-            for case in combine_rounds(rounds) {
+            for case in cases {
                 if result.gpu_clock.is_none() {
                     result.gpu_clock.clone_from(&case.gpu_clock);
                 }
@@ -427,78 +456,259 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
     Ok(result)
 }
 
-/// Each case's figures over the rounds it was timed in: the median of the rounds'
-/// median GPU and preparation times, the fastest and slowest frame of all; the image
-/// (and so the error) is the same every round.
-fn combine_rounds(rounds: Vec<Vec<Measurement>>) -> Vec<Measurement> {
-    let mut rounds = rounds.into_iter();
-    let Some(first) = rounds.next() else {
-        return Vec::new();
-    };
-    let rest: Vec<Vec<Measurement>> = rounds.collect();
-    first
-        .into_iter()
-        .enumerate()
-        .map(|(i, case)| {
-            let all: Vec<&Measurement> = std::iter::once(&case)
-                .chain(rest.iter().map(|r| &r[i]))
-                .collect();
-            let gpu_ms = metrics::median(all.iter().filter_map(|c| c.gpu_ms));
-            let cpu_frame_ms = metrics::median(all.iter().filter_map(|c| c.cpu_frame_ms));
-            let frame_ms = metrics::median(all.iter().filter_map(|c| c.frame_ms));
-            let cpu_prepare_ms =
-                metrics::median(all.iter().map(|c| c.cpu_prepare_ms)).unwrap_or(0.0);
-            let ranges = all.iter().filter_map(|c| c.gpu_ms_range);
-            let gpu_ms_range = ranges.reduce(|a, b| (a.0.min(b.0), a.1.max(b.1)));
-            Measurement {
-                gpu_ms,
-                cpu_frame_ms,
-                frame_ms,
-                gpu_ms_range,
-                cpu_prepare_ms,
-                ..case.clone()
-            }
-        })
-        .collect()
+/// One case's timing, round by round: per round, the medians of its frames (GPU + CPU,
+/// GPU, CPU) or None where it was not timed in that round.
+struct CaseRounds<'a> {
+    method: &'a MethodInfo,
+    first: Measurement,
+    frame: Vec<Option<f64>>,
+    gpu: Vec<Option<f64>>,
+    cpu: Vec<Option<f64>>,
+    range: Option<(f64, f64)>,
+    prepare: Vec<f64>,
+    per_submission: Option<u32>,
+    warmup: Option<usize>,
+    /// Seconds spent timing it.
+    spent_s: f64,
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::metrics::ErrorStats;
+impl CaseRounds<'_> {
+    fn push(&mut self, frame: Option<f64>, gpu: Option<f64>, cpu: Option<f64>) {
+        self.frame.push(frame);
+        self.gpu.push(gpu);
+        self.cpu.push(cpu);
+    }
 
-    fn timed(gpu_ms: f64, range: (f64, f64), cpu_prepare_ms: f64) -> Measurement {
-        Measurement {
-            scene: "page".into(),
-            scene_camera: SceneCamera::Own,
-            method: registry::baseline().name.into(),
-            params: Vec::new(),
-            gpu_ms: Some(gpu_ms),
-            gpu_ms_range: Some(range),
-            gpu_clock: None,
-            cpu_frame_ms: Some(0.0),
-            frame_ms: Some(gpu_ms),
-            cpu_prepare_ms,
-            cpu_render_ms: None,
-            mesh_build_ms: None,
-            gpu_bytes: 1,
-            curves_per_pixel: None,
-            mesh_points: None,
-            layout_offset: None,
-            error: ErrorStats::default(),
+    /// Whether its ratio to each of `anchors` (other than itself) is settled, or, with
+    /// none to divide by, its own frame time.
+    fn settled(&self, anchors: &[&CaseRounds<'_>]) -> bool {
+        let others: Vec<_> = anchors
+            .iter()
+            .filter(|a| !std::ptr::eq(**a, self))
+            .collect();
+        if others.is_empty() {
+            let frames: Vec<f64> = self.frame.iter().flatten().copied().collect();
+            return intervals::median_interval(&frames).is_some_and(|i| i.settled);
+        }
+        others
+            .iter()
+            .all(|a| intervals::paired_ratio(&self.frame, &a.frame).is_some_and(|r| r.settled))
+    }
+}
+
+/// Times a view's cases in further rounds, interleaved, each preparing the method anew,
+/// until every ratio to the anchors (the atlas baseline's default and glyphon's) is
+/// settled (`settle`) or each unsettled case has been timed for `cap_s` seconds; at
+/// least `timing.rounds` rounds in all. Returns the cases with their figures over all
+/// their rounds and their ratios' intervals. The reference (no GPU time) is measured
+/// once.
+fn settle_rounds(
+    gpu: &GpuContext,
+    view: &ViewUnderTest<'_>,
+    first: Vec<(&MethodInfo, Measurement)>,
+    timing: Rounds,
+    cap_s: f64,
+) -> Result<Vec<Measurement>, Error> {
+    let mut cases: Vec<CaseRounds<'_>> = first
+        .into_iter()
+        .map(|(method, m)| CaseRounds {
+            method,
+            frame: vec![m.frame_ms],
+            gpu: vec![m.gpu_ms],
+            cpu: vec![m.cpu_frame_ms],
+            range: m.gpu_ms_range,
+            prepare: vec![m.cpu_prepare_ms],
+            per_submission: m.frames_per_submission,
+            warmup: m.warmup_frames,
+            spent_s: 0.0,
+            first: m,
+        })
+        .collect();
+    let is_anchor = |c: &Measurement| c.is_baseline() || is_shipped_default(c);
+    let timed: Vec<usize> = (0..cases.len())
+        .filter(|&i| !cases[i].first.is_reference() && cases[i].first.frame_ms.is_some())
+        .collect();
+    let anchors: Vec<usize> = timed
+        .iter()
+        .copied()
+        .filter(|&i| is_anchor(&cases[i].first))
+        .collect();
+    let budget_s = cap_s * timed.len() as f64;
+    let started = Instant::now();
+    for round in 1.. {
+        let anchor_refs: Vec<&CaseRounds<'_>> = anchors.iter().map(|&i| &cases[i]).collect();
+        let unsettled: Vec<usize> = timed
+            .iter()
+            .copied()
+            .filter(|&i| !cases[i].settled(&anchor_refs) && cases[i].spent_s < cap_s)
+            .collect();
+        let least_done = round >= timing.rounds;
+        if least_done && (unsettled.is_empty() || started.elapsed().as_secs_f64() > budget_s) {
+            break;
+        }
+        let this_round: Vec<usize> = timed
+            .iter()
+            .copied()
+            .filter(|i| !least_done || unsettled.contains(i) || anchors.contains(i))
+            .collect();
+        // Each round starts one case later, so that no case always follows the same one.
+        let start = round % this_round.len().max(1);
+        for case in cases.iter_mut() {
+            case.push(None, None, None);
+        }
+        let order: Vec<usize> = (0..this_round.len())
+            .map(|k| this_round[(start + k) % this_round.len()])
+            .collect();
+        let figures = time_round(gpu, view, &order, &cases, timing.per_round)?;
+        for (i, (stats, spent_s)) in order.into_iter().zip(figures) {
+            let case = &mut cases[i];
+            case.spent_s += spent_s;
+            let last = case.frame.len() - 1;
+            case.frame[last] = stats.frame_ms;
+            case.gpu[last] = stats.gpu_ms;
+            case.cpu[last] = stats.cpu_frame_ms;
+            case.prepare.push(stats.cpu_prepare_ms);
+            if let Some((lo, hi)) = stats.gpu_ms_range {
+                case.range = Some(case.range.map_or((lo, hi), |(a, b)| (a.min(lo), b.max(hi))));
+            }
+            case.warmup = case.warmup.max(stats.warmup_frames);
+            case.per_submission = case.per_submission.max(stats.frames_per_submission);
         }
     }
+    let find = |pick: &dyn Fn(&Measurement) -> bool| {
+        anchors.iter().copied().find(|&i| pick(&cases[i].first))
+    };
+    let baseline = find(&|c| c.is_baseline());
+    let shipped = find(&is_shipped_default);
+    let ratio = |i: usize, over: Option<usize>| {
+        over.filter(|&o| o != i)
+            .and_then(|o| intervals::paired_ratio(&cases[i].frame, &cases[o].frame))
+    };
+    Ok((0..cases.len())
+        .map(|i| {
+            let c = &cases[i];
+            if !timed.contains(&i) {
+                return c.first.clone();
+            }
+            let values = |v: &[Option<f64>]| v.iter().flatten().copied().collect::<Vec<_>>();
+            let frames = values(&c.frame);
+            Measurement {
+                gpu_ms: metrics::median(values(&c.gpu)),
+                cpu_frame_ms: metrics::median(values(&c.cpu)),
+                frame_ms: metrics::median(frames.iter().copied()),
+                frame_ms_interval: intervals::median_interval(&frames),
+                gpu_ms_range: c.range,
+                cpu_prepare_ms: metrics::median(c.prepare.iter().copied()).unwrap_or(0.0),
+                ratio_atlas: ratio(i, baseline),
+                ratio_glyphon: ratio(i, shipped),
+                rounds: frames.len(),
+                frames_per_submission: c.per_submission,
+                warmup_frames: c.warmup,
+                ..c.first.clone()
+            }
+        })
+        .collect())
+}
 
-    #[test]
-    fn rounds_combine_into_medians_and_the_full_range() {
-        let combined = combine_rounds(vec![
-            vec![timed(10.0, (9.0, 12.0), 3.0)],
-            vec![timed(30.0, (25.0, 40.0), 1.0)],
-            vec![timed(11.0, (8.0, 11.5), 2.0)],
-        ]);
-        assert_eq!(combined.len(), 1);
-        assert_eq!(combined[0].gpu_ms, Some(11.0), "a spoiled round is dropped");
-        assert_eq!(combined[0].gpu_ms_range, Some((8.0, 40.0)));
-        assert_eq!(combined[0].cpu_prepare_ms, 2.0);
+/// A case's part of a timing round lasts at least this long (ms), in more frames than
+/// asked where its frames are short, up to [`MOST_FRAMES_PER_ROUND`].
+const ROUND_MS: f64 = 150.0;
+const MOST_FRAMES_PER_ROUND: usize = 40;
+
+/// One round of `order`'s cases: each prepared anew and warmed up, then their frames
+/// timed in turn — frame 1 of every case, then frame 2 of every case… — so that a
+/// slow spell of the machine falls on all of them alike and leaves their ratios alone.
+/// Each case's figures, and the seconds its part of the round took. Where the device
+/// has no timestamp queries, each case is timed whole in turn by the CPU's clock.
+fn time_round(
+    gpu: &GpuContext,
+    view: &ViewUnderTest<'_>,
+    order: &[usize],
+    cases: &[CaseRounds<'_>],
+    timing: FrameTiming,
+) -> Result<Vec<(measure::RenderStats, f64)>, Error> {
+    let (scene, camera) = (&view.scene, &view.camera);
+    if !gpu.has_timestamps() {
+        return order
+            .iter()
+            .map(|&i| {
+                let began = Instant::now();
+                let case = &cases[i];
+                let stats = measure::time_only(
+                    gpu,
+                    scene,
+                    camera,
+                    case.method,
+                    &case.first.params,
+                    timing,
+                )?;
+                Ok((stats, began.elapsed().as_secs_f64()))
+            })
+            .collect();
     }
+    let target = CoverageTarget::new(gpu, camera.width, camera.height, Channels::Coverage)?;
+    let mut running = Vec::with_capacity(order.len());
+    for &i in order {
+        let began = Instant::now();
+        let case = &cases[i];
+        let mut method = case.method.create(&case.first.params)?;
+        let prepare = Instant::now();
+        method.prepare(gpu, scene)?;
+        let prepare_ms = ms_since(prepare);
+        let warmed = frame::warm_up(gpu, method.as_mut(), &target, camera, timing.warmup)?;
+        running.push((
+            method,
+            warmed,
+            prepare_ms,
+            Vec::new(),
+            began.elapsed().as_secs_f64(),
+        ));
+    }
+    // A short frame is timed more often, so that each case's part of a round lasts
+    // about as long as a long frame's and its median is as steady.
+    let slots = |w: &frame::WarmedUp| {
+        let per_frame = w.frame_ms.max(1e-3);
+        timing
+            .frames
+            .max((ROUND_MS / per_frame).ceil() as usize)
+            .min(MOST_FRAMES_PER_ROUND)
+    };
+    let most = running.iter().map(|r| slots(&r.1)).max().unwrap_or(0);
+    for slot in 0..most {
+        for (method, warmed, _, times, spent_s) in &mut running {
+            if slot >= slots(warmed) {
+                continue;
+            }
+            let began = Instant::now();
+            times.extend(frame::time_submissions(
+                gpu,
+                method.as_mut(),
+                &target,
+                camera,
+                1,
+                warmed.frames_per_submission,
+            )?);
+            *spent_s += began.elapsed().as_secs_f64();
+        }
+    }
+    Ok(running
+        .into_iter()
+        .zip(order)
+        .map(|((_, warmed, prepare_ms, times, spent_s), &i)| {
+            let mut stats = measure::RenderStats::timed_only(&cases[i].first.params, prepare_ms);
+            measure::Timed {
+                times,
+                clock: measure::CLOCK_TIMESTAMPS,
+                frames_per_submission: warmed.frames_per_submission,
+                warmup_frames: warmed.frames,
+            }
+            .write_into(&mut stats);
+            (stats, spent_s)
+        })
+        .collect())
+}
+
+/// Whether `case` is glyphon's default, the other figure every case is divided by.
+fn is_shipped_default(case: &Measurement) -> bool {
+    case.method == super::method_settings::SHIPPED.name && case.settings() == "default"
 }

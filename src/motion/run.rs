@@ -283,7 +283,7 @@ fn draw(
         warmup: 0,
         frames: 1,
     };
-    let (times, _) = measure::time_frames(d.gpu, d.method.as_mut(), &d.target, camera, timing)?;
+    let times = measure::time_frames(d.gpu, d.method.as_mut(), &d.target, camera, timing)?.times;
     let image = d.target.readback(d.gpu)?.clamp_to_union();
     let time = times[0];
     Ok((image, Some(time.gpu_ms), time.cpu_ms))
