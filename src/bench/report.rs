@@ -164,8 +164,8 @@ fn scene_sections(result: &BenchResult, clock: &str, md: &mut String) {
         "Device: **{}**. {} GPU time per frame by {clock}. The cases of a view are timed \
          in interleaved rounds, each preparing every method anew and timing {} frames \
          after at least {} warm-up frames (more while a frame was still faster than all \
-         before it by 5 %: up to {most_warmup} here); a frame under {} ms is timed {} \
-         ({}). After {} rounds, the cases whose ratio to the atlas or to glyphon has a 95 % \
+         before it by 5 %: up to {most_warmup} here); a frame under {} ms is timed several \
+         to a submission and a pair of timestamps, each its share ({}). After {} rounds, the cases whose ratio to the atlas or to glyphon has a 95 % \
          interval (a bootstrap over the rounds of the median of the rounds' ratios) wider \
          than ±{} % are timed on, with the atlas and glyphon, for up to {} s each{}: up \
          to {most_rounds} rounds here, and {unsettled} case{} left unsettled, marked `*`. \
@@ -181,7 +181,6 @@ fn scene_sections(result: &BenchResult, clock: &str, md: &mut String) {
         result.timing.per_round.frames,
         result.timing.per_round.warmup,
         crate::methods::frame::SHORT_FRAME_MS,
-        "several to a submission and a pair of timestamps, each its share",
         if batched.is_empty() {
             "none was here".to_owned()
         } else {
