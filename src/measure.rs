@@ -18,7 +18,7 @@ use crate::reference;
 use crate::scene::Scene;
 
 /// What `render --stats` writes.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Default, Serialize)]
 pub struct RenderStats {
     pub method: String,
     pub params: Vec<(String, String)>,
@@ -177,30 +177,12 @@ fn measure_stats_shell(
     RenderStats {
         method: info.name.to_owned(),
         params: params.to_vec(),
-        adapter: String::new(),
-        gpu_ms: None,
-        gpu_ms_range: None,
-        gpu_ms_interval: None,
-        gpu_clock: None,
-        frames_per_submission: None,
-        warmup_frames: None,
-        cpu_frame_ms: None,
-        frame_ms: None,
-        cpu_prepare_ms: 0.0,
-        cpu_render_ms: None,
-        gpu_bytes: 0,
-        cache_bytes: None,
         width: camera.width,
         height: camera.height,
         size_px_per_em: camera.size_px_per_em,
         instances: scene.instances.len(),
         distinct_glyphs: scene.glyphs.len(),
-        covered_area_px: 0.0,
-        coverage_range: None,
-        error: None,
-        curves_per_pixel: None,
-        mesh: None,
-        layout_offset: None,
+        ..RenderStats::default()
     }
 }
 
@@ -209,32 +191,9 @@ impl RenderStats {
     /// later rounds keep of a case.
     pub fn timed_only(params: &[(String, String)], cpu_prepare_ms: f64) -> RenderStats {
         RenderStats {
-            method: String::new(),
             params: params.to_vec(),
-            adapter: String::new(),
-            gpu_ms: None,
-            gpu_ms_range: None,
-            gpu_ms_interval: None,
-            gpu_clock: None,
-            frames_per_submission: None,
-            warmup_frames: None,
-            cpu_frame_ms: None,
-            frame_ms: None,
             cpu_prepare_ms,
-            cpu_render_ms: None,
-            gpu_bytes: 0,
-            cache_bytes: None,
-            width: 0,
-            height: 0,
-            size_px_per_em: 0.0,
-            instances: 0,
-            distinct_glyphs: 0,
-            covered_area_px: 0.0,
-            coverage_range: None,
-            error: None,
-            curves_per_pixel: None,
-            mesh: None,
-            layout_offset: None,
+            ..RenderStats::default()
         }
     }
 }

@@ -93,14 +93,32 @@ pub fn data_texture<T: bytemuck::Pod>(
         )));
     }
     bytes.resize((rows * width * texel) as usize, 0);
-    let size = wgpu::Extent3d {
-        width: DATA_TEXTURE_WIDTH,
-        height: rows as u32,
+    let texture = sampled_texture(
+        gpu,
+        label,
+        [DATA_TEXTURE_WIDTH, rows as u32],
+        format,
+        &bytes,
+    );
+    Ok((texture, bytes.len() as u64))
+}
+
+/// A sampled 2D texture of `format`, `size` texels, holding `texels` row after row.
+pub fn sampled_texture(
+    gpu: &GpuContext,
+    label: &str,
+    size: [u32; 2],
+    format: wgpu::TextureFormat,
+    texels: &[u8],
+) -> wgpu::Texture {
+    let extent = wgpu::Extent3d {
+        width: size[0],
+        height: size[1],
         depth_or_array_layers: 1,
     };
     let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
         label: Some(label),
-        size,
+        size: extent,
         mip_level_count: 1,
         sample_count: 1,
         dimension: wgpu::TextureDimension::D2,
@@ -108,17 +126,18 @@ pub fn data_texture<T: bytemuck::Pod>(
         usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
         view_formats: &[],
     });
+    let texel_bytes = format.block_copy_size(None).unwrap_or(1);
     gpu.queue.write_texture(
         texture.as_image_copy(),
-        &bytes,
+        texels,
         wgpu::TexelCopyBufferLayout {
             offset: 0,
-            bytes_per_row: Some((width * texel) as u32),
+            bytes_per_row: Some(size[0] * texel_bytes),
             rows_per_image: None,
         },
-        size,
+        extent,
     );
-    Ok((texture, bytes.len() as u64))
+    texture
 }
 
 /// A bind group layout whose binding `i` is `slots[i]`, seen by both stages.

@@ -164,33 +164,7 @@ impl Shelves {
         format: wgpu::TextureFormat,
         texels: &[u8],
     ) -> wgpu::Texture {
-        let size = wgpu::Extent3d {
-            width: self.width,
-            height: self.height,
-            depth_or_array_layers: 1,
-        };
-        let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
-            label: Some(label),
-            size,
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format,
-            usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-            view_formats: &[],
-        });
-        let texel_bytes = format.block_copy_size(None).unwrap_or(1);
-        gpu.queue.write_texture(
-            texture.as_image_copy(),
-            texels,
-            wgpu::TexelCopyBufferLayout {
-                offset: 0,
-                bytes_per_row: Some(self.width * texel_bytes),
-                rows_per_image: None,
-            },
-            size,
-        );
-        texture
+        kit::sampled_texture(gpu, label, [self.width, self.height], format, texels)
     }
 
     /// The texture's size in bytes at `texel_bytes` a texel.
