@@ -2,10 +2,10 @@
 //! and the text library both bind it. The glyphs, read once per quad, are a storage
 //! buffer; the bands, read once per fragment, the band lists and the curves, read at
 //! every step of a pixel's walk, are data textures ([`kit::data_texture`]): on lavapipe
-//! the walk reads them 2× faster than from storage buffers (the `ui` labels' moving frame,
-//! 74–79 → 32–42 ms at 500 labels; SwiftShader 158–201 → 149–179 ms, within its
-//! noise; docs/methods/winding.md has the commands). A GPU's texture path reads them as
-//! fast as its storage path, or faster.
+//! the walk reads them 2× faster than from storage buffers (the library bench's 500
+//! moving labels: the walk 46.7 → 20.2 ms); SwiftShader's frame did not change beyond
+//! its runs' noise. docs/methods/winding.md has the figures and their commands. A GPU's
+//! texture path reads them as fast as its storage path, or faster.
 
 use super::bands::GlyphData;
 use crate::Error;
