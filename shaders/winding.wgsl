@@ -19,8 +19,9 @@
 // point being shaded.
 
 // A curve as `curve_at` reads it from the curve texture (GpuCurve in bands.rs), three
-// texels: the first two hold what aa=area's walk reads, the third the bounds only
-// aa=rays needs (a load no code uses is compiled away).
+// texels: the first two hold the points and marks, the third the bounds only aa=rays
+// needs (a load no code uses is compiled away). aa=area reads its curves inline in the
+// band lists instead (`band_ends`, `band_curve_inline`).
 struct Curve {
     p0p1: vec4<f32>,
     p2: vec2<f32>,
@@ -67,6 +68,13 @@ struct Band {
 @group(1) @binding(1) var band_texels: texture_2d<u32>;
 @group(1) @binding(2) var band_curves: texture_2d<u32>;
 @group(1) @binding(3) var curve_texels: texture_2d<u32>;
+// aa=area reads its band lists' curves inline, two texels an entry: the end points
+// (p0.xy, p2.xy), which bound a monotone piece (bands.rs keeps the control point within
+// them) and so tell where it lies against the pixel and add a piece wholly right of it;
+// and the rest (p1.xy, overlaps, parent), read only for the pieces across the pixel
+// (`area_winding`). 1-texel stand-ins for aa=rays.
+@group(1) @binding(4) var band_end_texels: texture_2d<u32>;
+@group(1) @binding(5) var band_middle_texels: texture_2d<u32>;
 
 // Texels a row of a data texture, as a shift: kit::DATA_TEXTURE_WIDTH = 4096.
 const DATA_ROW_SHIFT: u32 = 12u;
@@ -93,6 +101,17 @@ fn band_curve(entry: u32) -> Curve {
     return curve_at(data_texel(band_curves, entry).x);
 }
 
+// Entry `entry`'s curve's end points, p0.xy and p2.xy (aa=area only).
+fn band_ends(entry: u32) -> vec4<f32> {
+    return bitcast<vec4<f32>>(data_texel(band_end_texels, entry));
+}
+
+// Entry `entry`'s curve whole, its end points `ends` read already (aa=area only).
+fn band_curve_inline(entry: u32, ends: vec4<f32>) -> Curve {
+    let m = data_texel(band_middle_texels, entry);
+    return Curve(vec4<f32>(ends.xy, bitcast<vec2<f32>>(m.xy)), ends.zw, bitcast<f32>(m.z), m.w, vec2<f32>(0.0), vec2<f32>(0.0));
+}
+
 // Pipeline constants: one pipeline per parameter combination, no per-pixel branching
 // on them.
 override AREA: bool = false;      // aa=area: the exact box integral; no rays
@@ -114,9 +133,9 @@ override OVERLAY: u32 = 0u;       // 0 none, 1 curve classes, 2 cost heat map, 3
 // aa=area cut short, for the cost breakdown (src/methods/winding/cost.rs) to time each
 // stage by the difference from the one before: 0 writes 1 at once (rasterizing, the
 // quads), 1 stops after the per-fragment setup (derivatives, the pixel's frame, its
-// band), 2 after the band walk (each curve loaded, mapped and sorted into its zone,
-// no term), 3 adds the terms of the curves right of the pixel but not those across it,
-// 4 is the whole shader.
+// band), 2 after the band walk (each entry's curve ends loaded, mapped and sorted into
+// its zone, no term), 3 adds the terms of the curves right of the pixel, 4 is the whole
+// shader (the second pass: the curves across the pixel loaded whole and integrated).
 override STAGE: u32 = 4u;
 
 // The glyph quad, carrying its glyph's record as flat varyings: read once per vertex

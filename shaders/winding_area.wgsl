@@ -465,7 +465,16 @@ struct AreaWinding {
     mixed: bool,
 }
 
-// F over the pixel centred on local `centre` whose one-pixel steps are `jx`, `jy`.
+// F over the pixel centred on local `centre` whose one-pixel steps are `jx`, `jy`, in
+// two passes over the pixel's band. The walk reads each entry's end points alone
+// (`band_ends`): a monotone piece lies within their box, which says where it lies
+// against the pixel, and a piece wholly right of it adds its area between their
+// heights. It notes the first and the last entry across the pixel; the second pass
+// reads whole curves over that stretch only and adds their terms. A SIMD device runs
+// every branch some lane takes for the whole group (a software one, every branch): with
+// the terms inside the walk, each step paid for the across term; now the walk's steps
+// are one texel and a few products, and the across terms run over the short stretch of
+// entries that cross the pixel (lavapipe: 500 moving labels, docs/library.md).
 fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> AreaWinding {
     var result: AreaWinding;
     let direction = direction_for(g, centre, 0u);
@@ -483,59 +492,89 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
         result.winding = f32(band.count) + near_end + frame.scale + frame.bottom.x + frame.left.y + frame.reach + frame.width + frame.rise + frame.growth + frame.alpha_of.x + frame.beta_of.y + frame.inverse_beta_u + frame.correction_scale;
         return result;
     }
+    // The entries across the pixel: the first, the last, and which of the 32 from the
+    // first on (bit k: entry first + k), so that the second pass steps from one to the
+    // next (past the 32, entry by entry).
     var across = 0u;
-    var marked = false;
-    // Whether pieces of two different curves cross the pixel.
-    var distinct = false;
-    var first_parent = 0u;
-    // The walk is tested at its bottom, on the next curve read ahead: a SIMD device
+    var first_across = 0u;
+    var last_across = 0u;
+    var across_bits = 0u;
+    // The walk is tested at its bottom, on the next entry read ahead: a SIMD device
     // runs a loop until no lane is left in it, and the pass in which the last lanes
     // leave a loop tested at its top runs the whole body for none of them (lavapipe:
     // `rotated` 5.74 -> 5.35 ms, see docs/bench.md). Measured on lavapipe alone: a gain
     // from how one SIMD implementation runs loops, not checked on SwiftShader or a GPU.
     var i = 0u;
-    var c = band_curve(start);
-    if band.count > 0u && !behind(c, direction, near_end) {
+    var ends = band_ends(start);
+    if band.count > 0u && !behind(ends, direction, near_end) {
         loop {
             result.evaluated++;
-            let q = Bezier(frame_map(frame, c.p0p1.xy - centre), frame_map(frame, c.p0p1.zw - centre), frame_map(frame, c.p2 - centre));
-            let zone = area_zone(q, frame);
+            let q0 = frame_map(frame, ends.xy - centre);
+            let q2 = frame_map(frame, ends.zw - centre);
+            let zone = area_zone(Bezier(q0, q0, q2), frame);
             if STAGE == 2u {
                 // The walk without its terms.
                 result.winding += f32(zone);
             } else if zone == ZONE_RIGHT {
-                result.winding += area_below(q.p2.y, frame) - area_below(q.p0.y, frame);
+                result.winding += area_below(q2.y, frame) - area_below(q0.y, frame);
                 breakdown_tally.x++;
-            } else if zone == ZONE_ACROSS && STAGE != 3u {
-                if AXIS {
-                    result.winding += across_axis(q, frame);
-                } else if SQUARE {
-                    result.winding += across_square(q, frame);
-                } else {
-                    result.winding += across_term(q, frame);
-                }
-                breakdown_tally.y++;
-                distinct = distinct || (across > 0u && c.parent != first_parent);
-                first_parent = select(first_parent, c.parent, across == 0u);
-                across++;
-                marked = marked || c.overlaps != 0.0;
             }
+            let is_across = zone == ZONE_ACROSS;
+            first_across = select(first_across, i, across == 0u);
+            let offset = i - first_across;
+            across_bits |= select(0u, 1u << min(offset, 31u), is_across && offset < 32u);
+            last_across = select(last_across, i, is_across);
+            across += u32(is_across);
             i++;
-            c = band_curve(start + min(i, band.count - 1u));
-            if i >= band.count || behind(c, direction, near_end) {
+            ends = band_ends(start + min(i, band.count - 1u));
+            if i >= band.count || behind(ends, direction, near_end) {
                 break;
             }
+        }
+    }
+    if STAGE < 4u || across == 0u {
+        return result;
+    }
+    // Whether pieces of two different curves cross the pixel.
+    var distinct = false;
+    var marked = false;
+    var first_parent = 0u;
+    var seen = 0u;
+    var k = first_across;
+    loop {
+        let c = band_curve_inline(start + k, band_ends(start + k));
+        let q = Bezier(frame_map(frame, c.p0p1.xy - centre), frame_map(frame, c.p0p1.zw - centre), frame_map(frame, c.p2 - centre));
+        if area_zone(q, frame) == ZONE_ACROSS {
+            if AXIS {
+                result.winding += across_axis(q, frame);
+            } else if SQUARE {
+                result.winding += across_square(q, frame);
+            } else {
+                result.winding += across_term(q, frame);
+            }
+            breakdown_tally.y++;
+            distinct = distinct || (seen > 0u && c.parent != first_parent);
+            first_parent = select(first_parent, c.parent, seen == 0u);
+            seen++;
+            marked = marked || c.overlaps != 0.0;
+        }
+        // The next entry across: the next bit noted, or past them entry by entry.
+        let offset = k - first_across;
+        across_bits &= ~select(0u, 1u << min(offset, 31u), offset < 32u);
+        k = select(max(k + 1u, first_across + 32u), first_across + countTrailingZeros(across_bits), across_bits != 0u);
+        if k > last_across {
+            break;
         }
     }
     result.mixed = marked && distinct;
     return result;
 }
 
-// Whether curve `c` lies wholly behind the pixel's nearest point along the walk, from
-// its points themselves (fewer loads than its bounds).
-fn behind(c: Curve, direction: f32, near_end: f32) -> bool {
-    let along = direction * vec3<f32>(c.p0p1.x, c.p0p1.z, c.p2.x);
-    return USE_BANDS && max(max(along.x, along.y), along.z) < near_end;
+// Whether the curve whose end points are `ends` (p0.xy, p2.xy) lies wholly behind the
+// pixel's nearest point along the walk (its control point lies between them).
+fn behind(ends: vec4<f32>, direction: f32, near_end: f32) -> bool {
+    let along = direction * vec2<f32>(ends.x, ends.z);
+    return USE_BANDS && max(along.x, along.y) < near_end;
 }
 
 // The side of the grid of sub-pixels aa=area integrates where three winding levels

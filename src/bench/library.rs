@@ -471,14 +471,14 @@ fn write_stages(md: &mut String, timed: &[Timed]) {
     let parts = [
         "quads: rasterizing, the pages cleared and blended, the instances' upload",
         "setup: derivatives, the pixel's frame, its band",
-        "walk: each curve of the band loaded, mapped, sorted into its zone",
+        "walk: each entry of the band (its curve's ends) loaded, mapped, sorted into its zone",
         "right: the terms of curves wholly right of the pixel",
     ];
     for (part, name) in parts.iter().zip(UI_CUT) {
         steps.push((part, frame_of(name)));
     }
     steps.push((
-        "across: the terms of curves across the pixel, the fill",
+        "across: the curves across the pixel loaded whole and integrated, the fill",
         frame_of(UI_MOVING),
     ));
     let _ = writeln!(

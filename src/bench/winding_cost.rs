@@ -126,10 +126,10 @@ pub fn markdown(result: &BenchResult, md: &mut String) {
         "\nGPU time of a frame with the shader cut short after each stage (`STAGE` in \
          shaders/winding.wgsl), each the difference from the stage before: *quads* \
          (rasterizing and blending: fragments that write 1 at once), *setup* \
-         (derivatives, the pixel's frame, its band), *walk* (each visited curve loaded, \
-         mapped into the pixel's frame and sorted into its zone), *right* (the terms of \
-         the curves wholly right of the pixel), *across* (the terms of those across it, \
-         the fill rule, the grid where needed); *whole* is their sum, with its ratio to \
+         (derivatives, the pixel's frame, its band), *walk* (each visited entry's curve \
+         ends loaded, mapped into the pixel's frame and sorted into its zone), *right* \
+         (the terms of the curves wholly right of the pixel), *across* (the curves across \
+         it loaded whole and integrated, the fill rule, the grid where needed); *whole* is their sum, with its ratio to \
          the atlas's GPU + CPU frame in the same view of this run.\n\n\
          | scene | view | quads ms | setup ms | walk ms | right ms | across ms | whole ms | × atlas |\n\
          |---|---|---:|---:|---:|---:|---:|---:|---:|"

@@ -21,8 +21,8 @@ use crate::geometry::{
 use crate::scene::Scene;
 
 /// `Curve` in `winding.wgsl`, three texels of the curve texture (`curve_at` there):
-/// what `aa=area`'s walk reads in the first two, the bounds only `aa=rays` needs in the
-/// third.
+/// the points and marks in the first two, the bounds only `aa=rays` needs in the third.
+/// (`aa=area` reads its curves inline in the band lists: [`GlyphData::band_entries_inline`].)
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct GpuCurve {
@@ -93,6 +93,9 @@ pub struct GlyphData {
     /// Per glyph, whether any of its curves is marked as overlapping (only with
     /// [`Layout::Area`]): its pixels may need the sub-pixel grid.
     pub marked: Vec<bool>,
+    /// Whether its glyphs are laid out for `aa=area` ([`Layout::Area`]), whose walk
+    /// reads each list entry's curve inline ([`GlyphData::band_entries_inline`]).
+    pub area: bool,
 }
 
 /// A quadratic curve as the bands are built from it: in local font units, rounded to
@@ -294,6 +297,7 @@ impl GlyphData {
             }
         };
         self.marked.push(any_marked);
+        self.area |= layout == Layout::Area;
         self.glyphs.push(GpuGlyph {
             bounds: [min.x as f32, min.y as f32, max.x as f32, max.y as f32],
             band_count_h: count_h,
@@ -346,11 +350,36 @@ impl GlyphData {
         });
     }
 
+    /// Per entry of the band lists, its curve inline in two texels (`band_end_texels` and
+    /// `band_middle_texels` in winding.wgsl): the end points p0.xy and p2.xy as f32 bits,
+    /// from which `aa=area`'s walk tells where a monotone piece lies against a pixel (its
+    /// control point lies within their box: `monotone_quads`), and p1.xy, the overlap
+    /// mark and the parent, read only for the pieces across the pixel.
+    pub fn band_entries_inline(&self) -> (Vec<[u32; 4]>, Vec<[u32; 4]>) {
+        self.band_curves
+            .iter()
+            .map(|&c| {
+                let curve = &self.curves[c as usize];
+                let [x0, y0, x1, y1] = curve.p0p1.map(f32::to_bits);
+                let [x2, y2] = curve.p2.map(f32::to_bits);
+                (
+                    [x0, y0, x2, y2],
+                    [x1, y1, curve.overlaps.to_bits(), curve.parent],
+                )
+            })
+            .unzip()
+    }
+
     pub fn bytes(&self) -> usize {
         size_of_val(self.curves.as_slice())
             + size_of_val(self.glyphs.as_slice())
             + size_of_val(self.bands.as_slice())
             + size_of_val(self.band_curves.as_slice())
+            + if self.area {
+                8 * size_of_val(self.band_curves.as_slice())
+            } else {
+                0
+            }
     }
 }
 

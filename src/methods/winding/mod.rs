@@ -389,12 +389,13 @@ pub enum Stage {
     Quads,
     /// After the per-fragment setup: derivatives, the pixel's frame, its band.
     Setup,
-    /// After the band walk: each visited curve loaded, mapped into the pixel's frame and
-    /// sorted into its zone, no term added.
+    /// After the band walk: each visited entry's end points loaded, mapped into the
+    /// pixel's frame and sorted into its zone, no term added.
     Walk,
     /// With the terms of the curves wholly right of the pixel, not those across it.
     Right,
-    /// The whole shader: terms, fill rule, the sub-pixel grid where it is needed.
+    /// The whole shader: the second pass over the curves across the pixel (each loaded
+    /// whole and integrated), the fill rule, the sub-pixel grid where it is needed.
     Full,
 }
 

@@ -5,20 +5,26 @@
 //! the walk reads them 2× faster than from storage buffers (the library bench's 500
 //! moving labels: the walk 46.7 → 20.2 ms); SwiftShader's frame did not change beyond
 //! its runs' noise. docs/methods/winding.md has the figures and their commands. A GPU's
-//! texture path reads them as fast as its storage path, or faster.
+//! texture path reads them as fast as its storage path, or faster. For `aa=area`, two
+//! more hold each list entry's curve inline: its end points, all its walk reads, and
+//! the rest, read for the curves across the pixel only
+//! ([`GlyphData::band_entries_inline`]).
 
 use super::bands::GlyphData;
 use crate::Error;
 use crate::gpu::GpuContext;
 use crate::gpu::kit::{self, Slot};
 
-/// The layout of `@group(1)`: glyphs (storage), bands, band curves, curves (textures).
+/// The layout of `@group(1)`: glyphs (storage), bands, band curves, curves, band
+/// entries' end points, their other halves (textures).
 pub fn group_layout(gpu: &GpuContext, label: &str) -> wgpu::BindGroupLayout {
     kit::layout(
         gpu,
         label,
         &[
             Slot::Storage,
+            Slot::DataTexture,
+            Slot::DataTexture,
             Slot::DataTexture,
             Slot::DataTexture,
             Slot::DataTexture,
@@ -81,7 +87,26 @@ impl Uploaded {
             curves,
             wgpu::TextureFormat::Rgba32Uint,
         )?;
-        let views = [&bands, &band_curves, &curves].map(|t| t.create_view(&Default::default()));
+        // aa=rays never reads them: a texel stands in.
+        let (ends, middles) = if data.area && !data.band_curves.is_empty() {
+            data.band_entries_inline()
+        } else {
+            (vec![[0; 4]], vec![[0; 4]])
+        };
+        let (ends, end_bytes) = kit::data_texture(
+            gpu,
+            &format!("{label} band ends"),
+            &ends,
+            wgpu::TextureFormat::Rgba32Uint,
+        )?;
+        let (middles, middle_bytes) = kit::data_texture(
+            gpu,
+            &format!("{label} band middles"),
+            &middles,
+            wgpu::TextureFormat::Rgba32Uint,
+        )?;
+        let views = [&bands, &band_curves, &curves, &ends, &middles]
+            .map(|t| t.create_view(&Default::default()));
         let bind_group = kit::bind_group(
             gpu,
             label,
@@ -91,11 +116,13 @@ impl Uploaded {
                 wgpu::BindingResource::TextureView(&views[0]),
                 wgpu::BindingResource::TextureView(&views[1]),
                 wgpu::BindingResource::TextureView(&views[2]),
+                wgpu::BindingResource::TextureView(&views[3]),
+                wgpu::BindingResource::TextureView(&views[4]),
             ],
         );
         Ok(Uploaded {
             bind_group,
-            bytes: glyphs.size() + band_bytes + list_bytes + curve_bytes,
+            bytes: glyphs.size() + band_bytes + list_bytes + curve_bytes + end_bytes + middle_bytes,
         })
     }
 }
