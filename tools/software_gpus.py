@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
 """The quick bench's ratios on two software GPUs, side by side, from the bench.json files
 tools/software-gpus.sh writes (DIR/<adapter>-<run>/bench.json): per scene, view and
-method at its default, the median ratio over the runs of each adapter with its spread
-(fastest–slowest run), and `differs` where the two adapters' spreads do not overlap.
+method at its default, each adapter's ratio with its span: the bench's own settled
+ratio (frames interleaved with the baseline's, its 95 % interval; `*` where it did not
+settle within the cap) when a run carries one, else the ratio of the medians; over
+several runs, the median of the runs' ratios and the span from the lowest interval's
+low to the highest's high. `differs` where the two adapters' spans do not overlap.
 
     python3 tools/software_gpus.py docs/bench/software-gpus > docs/bench/software-gpus/ratios.md
 """
@@ -13,25 +16,33 @@ import statistics
 import sys
 
 
-def default_frames(run):
-    """(scene, view, method) -> GPU + CPU ms per frame of each default case of a run."""
-    times = {}
+def default_cases(run):
+    """(scene, view, method) -> each default case of a run."""
+    cases = {}
     for case in run["cases"]:
         # The baseline's cache size is its one parameter at its default.
         params = [p for p in case["params"] if p[0] != "cache_px_per_em"]
         if not params and case["frame_ms"] is not None and case["method"] != "reference":
-            times[(case["scene"], case["view"], case["method"])] = case["frame_ms"]
-    return times
+            cases[(case["scene"], case["view"], case["method"])] = case
+    return cases
 
 
 def ratios(run, over):
-    """(scene, view, method) -> time over `over`'s in the same view of the same run."""
-    times = default_frames(run)
+    """(scene, view, method) -> (ratio, low, high, settled) over `over` in the same view
+    of the same run: the bench's interval where it has one (`ratio_atlas`,
+    `ratio_glyphon`), else the ratio of the two frames' medians."""
+    cases = default_cases(run)
     out = {}
-    for (scene, view, method), ms in times.items():
-        base = times.get((scene, view, over))
+    for key, case in cases.items():
+        scene, view, _ = key
+        measured = case.get(f"ratio_{over}")
+        if measured:
+            out[key] = (measured["value"], measured["low"], measured["high"], measured["settled"])
+            continue
+        base = cases.get((scene, view, over))
         if base:
-            out[(scene, view, method)] = ms / base
+            value = case["frame_ms"] / base["frame_ms"]
+            out[key] = (value, value, value, True)
     return out
 
 
@@ -49,24 +60,26 @@ def main(folder):
         f"{runs[n][0]['adapter'].split(' (')[0]} ({len(runs[n])} runs)" for n in names
     ) + " | |")
     print("|---|---|---|---|" + "---:|" * len(names) + "---|")
-    keys = sorted({k for n in names for r in runs[n] for k in default_frames(r)})
+    keys = sorted({k for n in names for r in runs[n] for k in default_cases(r)})
     for scene, view, method in keys:
         for over in ("atlas", "glyphon"):
             if method == over:
                 continue
             cells, spans = [], []
             for n in names:
-                values = [
+                found = [
                     r[(scene, view, method)]
                     for r in (ratios(run, over) for run in runs[n])
                     if (scene, view, method) in r
                 ]
-                if not values:
+                if not found:
                     break
-                spans.append((min(values), max(values)))
-                cells.append(
-                    f"{statistics.median(values):.2f} ({min(values):.2f}–{max(values):.2f})"
-                )
+                low = min(f[1] for f in found)
+                high = max(f[2] for f in found)
+                unsettled = "" if all(f[3] for f in found) else "*"
+                spans.append((low, high))
+                median = statistics.median(f[0] for f in found)
+                cells.append(f"{median:.2f} ({low:.2f}–{high:.2f}){unsettled}")
             if len(cells) != len(names):
                 continue
             (lo_a, hi_a), (lo_b, hi_b) = spans
