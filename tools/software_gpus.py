@@ -57,7 +57,7 @@ def main(folder):
     # A heading, so that docs/bench.md can quote the table and tests/figures.rs check it.
     print("## The quick bench on two software GPUs\n")
     print("| scene | view | method | over | " + " | ".join(
-        f"{runs[n][0]['adapter'].split(' (')[0]} ({len(runs[n])} runs)" for n in names
+        f"{runs[n][0]['adapter'].split(' (')[0]} ({len(runs[n])} run{'s' if len(runs[n]) > 1 else ''})" for n in names
     ) + " | |")
     print("|---|---|---|---|" + "---:|" * len(names) + "---|")
     keys = sorted({k for n in names for r in runs[n] for k in default_cases(r)})
