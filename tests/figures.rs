@@ -390,32 +390,32 @@ fn a_wrong_readme_figure_is_named() {
     let readme = read("README.md");
     for (right, wrong, named) in [
         (
-            "16.38× (15.87–16.97) · 0.36 · 0.417",
-            "16.38× (15.87–16.97) · 0.36 · 0.418",
+            "16.72× (14.73–18.91)* · 0.36 · 0.417",
+            "16.72× (14.73–18.91)* · 0.36 · 0.418",
             "`sdf-cells`, max: 0.418 where docs/bench/peers/bench.json gives 0.417",
         ),
         (
-            "— (723 ms CPU)",
-            "— (623 ms CPU)",
-            "`reference`, × atlas: 623 where docs/bench/peers/bench.json gives 723",
+            "— (460 ms CPU)",
+            "— (360 ms CPU)",
+            "`reference`, × atlas: 360 where docs/bench/peers/bench.json gives 460",
         ),
         (
-            "0.69× (0.67–0.71) · 1.00× · 3.21",
-            "0.70× (0.67–0.71) · 1.00× · 3.21",
-            "`glyphon`, × atlas: 0.70× (0.67–0.71) where docs/bench/peers/bench.json gives \
-             0.69× (0.67–0.71)",
+            "0.69× (0.68–0.70) · 1.00× · 3.21",
+            "0.70× (0.68–0.70) · 1.00× · 3.21",
+            "`glyphon`, × atlas: 0.70× (0.68–0.70) where docs/bench/peers/bench.json gives \
+             0.69× (0.68–0.70)",
         ),
         (
-            "2.30× (2.25–2.39) · 3.32× (3.16–3.39) · 0.00",
-            "2.30× (2.25–2.39) · 3.32× (3.16–3.40) · 0.00",
-            "`winding`, × glyphon: 3.32× (3.16–3.40) where docs/bench/peers/bench.json gives \
-             3.32× (3.16–3.39)",
+            "2.00× (1.97–2.10) · 3.01× (2.90–3.14) · 0.00",
+            "2.00× (1.97–2.10) · 3.01× (2.90–3.15) · 0.00",
+            "`winding`, × glyphon: 3.01× (2.90–3.15) where docs/bench/peers/bench.json gives \
+             3.01× (2.90–3.14)",
         ),
         (
-            "31.98× (31.01–34.36)* · 0.62",
-            "31.98× (31.01–34.36) · 0.62",
-            "`xor-stencil`, × glyphon: 31.98× (31.01–34.36) where \
-             docs/bench/peers/bench.json gives 31.98× (31.01–34.36)*",
+            "32.35× (31.17–37.09)* · 0.62",
+            "32.35× (31.17–37.09) · 0.62",
+            "`xor-stencil`, × glyphon: 32.35× (31.17–37.09) where \
+             docs/bench/peers/bench.json gives 32.35× (31.17–37.09)*",
         ),
     ] {
         assert_eq!(
@@ -434,24 +434,24 @@ fn a_wrong_readme_figure_is_named() {
 #[test]
 fn a_wrong_quoted_cell_is_named() {
     let doc = read("docs/bench.md");
-    let right = "| page | own | 2.30× (2.25–2.39) · 3.32× (3.16–3.39) · 0.00 · 0.03 · 0.001 · 0 |";
+    let right = "| page | own | 2.00× (1.97–2.10) · 3.01× (2.90–3.14) · 0.00 · 0.03 · 0.001 · 0 |";
     assert_eq!(doc.matches(right).count(), 1);
     let wrong = doc.replace(
         right,
-        "| page | own | 2.30× (2.25–2.49) · 3.32× (3.16–3.39) · 0.00 · 0.03 · 0.001 · 0 |",
+        "| page | own | 2.00× (1.97–2.20) · 3.01× (2.90–3.14) · 0.00 · 0.03 · 0.001 · 0 |",
     );
     let errors = quote_errors("docs/bench.md", &wrong, &committed_report);
     assert_eq!(errors.len(), 1, "{errors:?}");
     assert!(
-        errors[0].contains("row [\"page\", \"own\"], column 'winding': '2.30× (2.25–2.49)"),
+        errors[0].contains("row [\"page\", \"own\"], column 'winding': '2.00× (1.97–2.20)"),
         "{errors:?}"
     );
     let refusal =
-        "| rotated | own | 2.79× (2.67–2.92) · n/a · 0.00 · 0.04 · 0.001 · 0 | n/a — tilt |";
+        "| rotated | own | 2.41× (2.34–2.52) · n/a · 0.00 · 0.04 · 0.001 · 0 | n/a — tilt |";
     assert_eq!(doc.matches(refusal).count(), 1);
     let wrong = doc.replace(
         refusal,
-        "| rotated | own | 2.79× (2.67–2.92) · n/a · 0.00 · 0.04 · 0.001 · 0 | n/a — turns |",
+        "| rotated | own | 2.41× (2.34–2.52) · n/a · 0.00 · 0.04 · 0.001 · 0 | n/a — turns |",
     );
     let errors = quote_errors("docs/bench.md", &wrong, &committed_report);
     assert_eq!(errors.len(), 1, "{errors:?}");
