@@ -12,6 +12,7 @@
 //! (so its error is measured as every method's is). The `winding` row, the same shader
 //! drawing coverage, is timed beside it: the difference is the library's own harness.
 
+use crate::intervals::paired_ratio;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -248,6 +249,9 @@ struct Timed {
     refused: Option<String>,
     /// What it held on the GPU after its frames, where it can say.
     held_bytes: Option<u64>,
+    /// Its GPU + CPU frame in each round (None where it was not timed), so that its
+    /// ratio to another case is taken round by round.
+    rounds: Vec<Option<f64>>,
 }
 
 /// The scene of a UI's labels (`bench::ui`): timed with `--scenes ui`.
@@ -288,19 +292,25 @@ pub fn run_to(
     } else {
         format!(" --scenes {}", scene_names.join(","))
     };
+    let cap_s = crate::effort::Effort::of(quick).bench_settle_cap_s;
     let mut md = format!(
         "# The library's frame\n\n\
          Device: **{}**. `glyphscope bench --library{}{}`: `glyphscope::text` as an app \
          drives it (runs prepared and drawn every frame), the `winding` row (the same \
          shader, glyphscope's own harness), the atlas baseline and glyphon, each prepared \
-         anew in each of {} rounds, its frames timed after {} warm-up frames; the median \
-         of the rounds' medians. *GPU ms*: timestamps around the frame; *CPU ms*: \
+         anew in each round, at least {} rounds and more until every ratio below is settled \
+         (its 95 % interval within ±5 %) or {} s have gone by for the scene, its frames \
+         timed after {} warm-up frames; the median of the rounds' medians. *GPU ms*: timestamps around the frame; *CPU ms*: \
          recording it (for the library: `prepare` and `render`). *× atlas*, *× glyphon*: \
-         GPU + CPU per frame over theirs in the same run. Error against the reference.\n",
+         GPU + CPU per frame over theirs, round by round (the median over the rounds of \
+         the two frames' ratio in the same round), with its 95 % interval, a bootstrap \
+         over the rounds (`*`: wider than ±5 % when the time was up). Error against the \
+         reference.\n",
         gpu.adapter_name(),
         if quick { " --quick" } else { "" },
         scenes_flag,
         timing.rounds,
+        cap_s,
         timing.per_round.warmup,
     );
     for bench_scene in &bench_scenes {
@@ -338,7 +348,7 @@ pub fn run_to(
                 Box::new(|| glyphon::INFO.create(&[])),
             ),
         ];
-        let timed = measure(&gpu, &timing, &scene, &camera, &cases)?;
+        let timed = measure(&gpu, &timing, cap_s, &scene, &camera, &cases)?;
         let heading = format!(
             "\n## {}\n\n`glyphscope render --case {}`\n",
             bench_scene.name, bench_scene.name
@@ -346,7 +356,7 @@ pub fn run_to(
         write_scene(&mut md, &heading, &timed, false);
     }
     if ui_named {
-        let timed = measure_ui(&gpu, &timing)?;
+        let timed = measure_ui(&gpu, &timing, cap_s)?;
         let heading = format!(
             "\n## ui\n\n{} labels of {}–{} px in rows over {}×{} (`bench::ui`, the \
              labels `examples/ui_labels.rs` draws), a run (a glyphon buffer) per label, \
@@ -369,7 +379,7 @@ pub fn run_to(
 
 /// The `ui` scene's cases: the library and glyphon drawing the labels still and
 /// moving, and the atlas drawing them still.
-fn measure_ui(gpu: &GpuContext, timing: &Rounds) -> Result<Vec<Timed>, Error> {
+fn measure_ui(gpu: &GpuContext, timing: &Rounds, cap_s: f64) -> Result<Vec<Timed>, Error> {
     let font = crate::font::Font::default_font();
     let labels = std::sync::Arc::new(ui::labels(&font, ui::LABELS, ui::SIZE)?);
     if ui::any_overlap(&font, &labels)? {
@@ -442,7 +452,7 @@ fn measure_ui(gpu: &GpuContext, timing: &Rounds) -> Result<Vec<Timed>, Error> {
             library(true, *stage, name),
         ));
     }
-    measure(gpu, timing, &scene, &camera, &cases)
+    measure(gpu, timing, cap_s, &scene, &camera, &cases)
 }
 
 /// The moving labels with the coverage shader cut after each of `winding::Stage::ALL`
@@ -498,10 +508,13 @@ fn write_stages(md: &mut String, timed: &[Timed]) {
 }
 
 /// Times `cases` on `scene` through `camera`, interleaved in rounds, each prepared anew
-/// in each round; the error of each still case against the reference.
+/// in each round: `timing.rounds` at least, then more until every ratio to the atlas
+/// and to glyphon is settled (`intervals::TARGET`) or `cap_s` seconds have gone by
+/// since the first; the error of each still case against the reference.
 fn measure(
     gpu: &GpuContext,
     timing: &Rounds,
+    cap_s: f64,
     scene: &Scene,
     camera: &Camera,
     cases: &[Case],
@@ -519,13 +532,24 @@ fn measure(
                 error: None,
                 refused: None,
                 held_bytes: None,
+                rounds: Vec::new(),
             };
             (timed, Vec::new(), Vec::new())
         })
         .collect();
-    for _ in 0..timing.rounds {
+    let started = std::time::Instant::now();
+    let mut round = 0;
+    loop {
+        let done = round >= timing.rounds
+            && (started.elapsed().as_secs_f64() > cap_s
+                || all_settled(timed.iter().map(|(t, _, _)| t)));
+        if done {
+            break;
+        }
+        round += 1;
         for (case, (timed, gpu_ms, cpu_ms)) in cases.iter().zip(&mut timed) {
             if timed.refused.is_some() {
+                timed.rounds.push(None);
                 continue;
             }
             let mut method = (case.make)()?;
@@ -533,13 +557,17 @@ fn measure(
                 Ok((gpu_median, cpu_median)) => {
                     gpu_ms.push(gpu_median);
                     cpu_ms.push(cpu_median);
+                    timed.rounds.push(Some(gpu_median + cpu_median));
                     timed.held_bytes = Some(method.gpu_bytes());
                     if timed.error.is_none() && !case.moving {
                         let image = frame::render_image(gpu, method.as_mut(), camera)?;
                         timed.error = Some(metrics::compare(&image.clamp_to_union(), &expected)?);
                     }
                 }
-                Err(reason) => timed.refused = Some(reason),
+                Err(reason) => {
+                    timed.refused = Some(reason);
+                    timed.rounds.push(None);
+                }
             }
         }
     }
@@ -554,15 +582,27 @@ fn measure(
         .collect())
 }
 
+/// Whether every case's ratio to the atlas and to its glyphon case, where both were
+/// timed, is settled.
+fn all_settled<'a>(timed: impl Iterator<Item = &'a Timed> + Clone) -> bool {
+    let find = |name: &str| {
+        timed
+            .clone()
+            .find(|t| t.name == name && t.refused.is_none())
+    };
+    timed.clone().filter(|t| t.refused.is_none()).all(|t| {
+        ["atlas", t.glyphon]
+            .into_iter()
+            .filter(|&over| over != t.name)
+            .filter_map(find)
+            .all(|over| paired_ratio(&t.rounds, &over.rounds).is_none_or(|r| r.settled))
+    })
+}
+
 /// One scene's table, under `heading`; with `memory`, what each case held.
 fn write_scene(md: &mut String, heading: &str, timed: &[Timed], memory: bool) {
-    let frame_of = |case: &str| {
-        timed
-            .iter()
-            .find(|t| t.name == case && t.refused.is_none())
-            .map(|t| t.gpu_ms + t.cpu_ms)
-    };
-    let atlas = frame_of("atlas");
+    let case_named = |name: &str| timed.iter().find(|t| t.name == name && t.refused.is_none());
+    let atlas = case_named("atlas");
     let (memory_head, memory_rule) = if memory {
         (" GPU MB held |", "---:|")
     } else {
@@ -579,10 +619,10 @@ fn write_scene(md: &mut String, heading: &str, timed: &[Timed], memory: bool) {
             let _ = writeln!(md, "| {} | n/a — {reason} | | | | | | |", t.name);
             continue;
         }
-        let ratio = |of: Option<f64>| {
-            of.map_or("n/a".into(), |o| {
-                format!("{:.2}", (t.gpu_ms + t.cpu_ms) / o)
-            })
+        // Paired round by round, with its 95 % interval (`*`: wider than ±5 %).
+        let ratio = |of: Option<&Timed>| {
+            of.and_then(|o| paired_ratio(&t.rounds, &o.rounds))
+                .map_or("n/a".into(), |r| r.cell(2))
         };
         let (mae, edge, max) =
             t.error
@@ -608,7 +648,7 @@ fn write_scene(md: &mut String, heading: &str, timed: &[Timed], memory: bool) {
             t.gpu_ms,
             t.cpu_ms,
             ratio(atlas),
-            ratio(frame_of(t.glyphon)),
+            ratio(case_named(t.glyphon)),
         );
     }
 }
