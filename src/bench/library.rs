@@ -583,7 +583,8 @@ fn measure(
 }
 
 /// Whether every case's ratio to the atlas and to its glyphon case, where both were
-/// timed, is settled.
+/// timed, is settled: a ratio with a figure that is not a number has no interval and
+/// is not.
 fn all_settled<'a>(timed: impl Iterator<Item = &'a Timed> + Clone) -> bool {
     let find = |name: &str| {
         timed
@@ -595,7 +596,7 @@ fn all_settled<'a>(timed: impl Iterator<Item = &'a Timed> + Clone) -> bool {
             .into_iter()
             .filter(|&over| over != t.name)
             .filter_map(find)
-            .all(|over| paired_ratio(&t.rounds, &over.rounds).is_none_or(|r| r.settled))
+            .all(|over| paired_ratio(&t.rounds, &over.rounds).is_some_and(|r| r.settled))
     })
 }
 
@@ -650,5 +651,43 @@ fn write_scene(md: &mut String, heading: &str, timed: &[Timed], memory: bool) {
             ratio(atlas),
             ratio(case_named(t.glyphon)),
         );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Timed, all_settled};
+
+    fn timed(name: &'static str, rounds: &[f64]) -> Timed {
+        Timed {
+            name,
+            glyphon: "glyphon",
+            gpu_ms: f64::NAN,
+            cpu_ms: f64::NAN,
+            error: None,
+            refused: None,
+            held_bytes: None,
+            rounds: rounds.iter().map(|&ms| Some(ms)).collect(),
+        }
+    }
+
+    /// Ratios steady round by round are settled even where the frames drift (the
+    /// machine slowing every case of a round alike); one that jumps between rounds is
+    /// not; a refused case holds nothing up.
+    #[test]
+    fn settled_means_every_paired_ratio_within_the_target() {
+        let drift = [10.0, 12.0, 9.0, 11.0, 10.5];
+        let atlas = timed("atlas", &drift);
+        let glyphon = timed("glyphon", &drift.map(|ms| 0.5 * ms));
+        let steady = timed("steady", &drift.map(|ms| 2.0 * ms));
+        assert!(all_settled([&atlas, &glyphon, &steady].into_iter()));
+        let jumpy = timed("jumpy", &[20.0, 36.0, 14.0, 30.0, 17.0]);
+        assert!(!all_settled([&atlas, &glyphon, &jumpy].into_iter()));
+        let mut refused = timed("refused", &[1.0, 90.0, 3.0, 50.0, 7.0]);
+        refused.refused = Some("n/a".into());
+        assert!(all_settled([&atlas, &glyphon, &steady, &refused].into_iter()));
+        // A figure that is not a number never counts as settled.
+        let broken = timed("broken", &[20.0, f64::NAN, 18.0, 22.0, 21.0]);
+        assert!(!all_settled([&atlas, &glyphon, &broken].into_iter()));
     }
 }
