@@ -685,7 +685,9 @@ mod tests {
         assert!(!all_settled([&atlas, &glyphon, &jumpy].into_iter()));
         let mut refused = timed("refused", &[1.0, 90.0, 3.0, 50.0, 7.0]);
         refused.refused = Some("n/a".into());
-        assert!(all_settled([&atlas, &glyphon, &steady, &refused].into_iter()));
+        assert!(all_settled(
+            [&atlas, &glyphon, &steady, &refused].into_iter()
+        ));
         // A figure that is not a number never counts as settled.
         let broken = timed("broken", &[20.0, f64::NAN, 18.0, 22.0, 21.0]);
         assert!(!all_settled([&atlas, &glyphon, &broken].into_iter()));
