@@ -544,6 +544,9 @@ fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> Ar
     loop {
         let c = band_curve_inline(start + k, band_ends(start + k));
         let q = Bezier(frame_map(frame, c.p0p1.xy - centre), frame_map(frame, c.p0p1.zw - centre), frame_map(frame, c.p2 - centre));
+        // The walk's zone again, from the same points by the same operations (a
+        // subtraction and products, which no compiler fuses into another rounding): it
+        // tells entries past the 32 noted, stepped one by one, from those across.
         if area_zone(q, frame) == ZONE_ACROSS {
             if AXIS {
                 result.winding += across_axis(q, frame);

@@ -463,6 +463,43 @@ mod tests {
             .to_quadratics(tolerance)
     }
 
+    /// `aa=area`'s walk reads each list entry's curve inline: the end points in one
+    /// texel, the control point, overlap mark and parent in the other, and tells the
+    /// curve's zone from the end points alone, so every piece's control point lies in
+    /// its ends' box. Read back texel by texel, every entry is its listed curve.
+    #[test]
+    fn inline_entries_are_their_curves_and_the_ends_bound_them() {
+        let font = Font::default_font();
+        for c in "gS@&mWo".chars() {
+            let mut data = GlyphData::default();
+            data.push(&glyph(&font, c), 2048.0, BandCount::Auto, Layout::Area);
+            let (ends, middles) = data.band_entries_inline();
+            assert_eq!(
+                (ends.len(), middles.len()),
+                (data.band_curves.len(), data.band_curves.len())
+            );
+            for ((end, middle), &listed) in ends.iter().zip(&middles).zip(&data.band_curves) {
+                let curve = &data.curves[listed as usize];
+                let [x0, y0, x2, y2] = end.map(f32::from_bits);
+                let (x1, y1) = (f32::from_bits(middle[0]), f32::from_bits(middle[1]));
+                assert_eq!(
+                    [x0, y0, x1, y1],
+                    curve.p0p1,
+                    "'{c}' entry of curve {listed}"
+                );
+                assert_eq!([x2, y2], curve.p2);
+                assert_eq!(
+                    (f32::from_bits(middle[2]), middle[3]),
+                    (curve.overlaps, curve.parent)
+                );
+                assert!(
+                    x0.min(x2) <= x1 && x1 <= x0.max(x2) && y0.min(y2) <= y1 && y1 <= y0.max(y2),
+                    "'{c}': control point ({x1}, {y1}) outside its ends' box"
+                );
+            }
+        }
+    }
+
     /// Every curve that crosses a band's interior is in that band.
     #[test]
     fn bands_hold_every_curve_that_can_cross_them() {
