@@ -56,75 +56,47 @@ impl Uploaded {
             .bands
             .iter()
             .map(|b| [b.by_max, b.by_min, b.count, 0])
-            .chain(data.bands.is_empty().then_some([0; 4]))
             .collect();
-        let (bands, band_bytes) = kit::data_texture(
-            gpu,
-            &format!("{label} bands"),
-            &band_texels,
-            wgpu::TextureFormat::Rgba32Uint,
-        )?;
-        let band_curves = if data.band_curves.is_empty() {
-            &[0][..]
-        } else {
-            &data.band_curves
-        };
-        let (band_curves, list_bytes) = kit::data_texture(
-            gpu,
-            &format!("{label} band curves"),
-            band_curves,
-            wgpu::TextureFormat::R32Uint,
-        )?;
-        let zero = [bytemuck::Zeroable::zeroed()];
-        let curves = if data.curves.is_empty() {
-            &zero[..]
-        } else {
-            &data.curves
-        };
-        let (curves, curve_bytes) = kit::data_texture(
-            gpu,
-            &format!("{label} curves"),
-            curves,
-            wgpu::TextureFormat::Rgba32Uint,
-        )?;
-        // aa=rays never reads them: a texel stands in.
-        let (ends, middles) = if data.area && !data.band_curves.is_empty() {
+        // aa=rays never reads them.
+        let (ends, middles) = if data.area {
             data.band_entries_inline()
         } else {
-            (vec![[0; 4]], vec![[0; 4]])
+            (Vec::new(), Vec::new())
         };
-        let (ends, end_bytes) = kit::data_texture(
-            gpu,
-            &format!("{label} band ends"),
-            &ends,
-            wgpu::TextureFormat::Rgba32Uint,
-        )?;
-        let (middles, middle_bytes) = kit::data_texture(
-            gpu,
-            &format!("{label} band middles"),
-            &middles,
-            wgpu::TextureFormat::Rgba32Uint,
-        )?;
-        let views = [&bands, &band_curves, &curves, &ends, &middles]
-            .map(|t| t.create_view(&Default::default()));
-        let bind_group = kit::bind_group(
-            gpu,
-            label,
-            layout,
-            &[
-                glyphs.as_entire_binding(),
-                wgpu::BindingResource::TextureView(&views[0]),
-                wgpu::BindingResource::TextureView(&views[1]),
-                wgpu::BindingResource::TextureView(&views[2]),
-                wgpu::BindingResource::TextureView(&views[3]),
-                wgpu::BindingResource::TextureView(&views[4]),
-            ],
-        );
+        use wgpu::TextureFormat::{R32Uint, Rgba32Uint};
+        let textures = [
+            texture(gpu, label, "bands", &band_texels, Rgba32Uint)?,
+            texture(gpu, label, "band curves", &data.band_curves, R32Uint)?,
+            texture(gpu, label, "curves", &data.curves, Rgba32Uint)?,
+            texture(gpu, label, "band ends", &ends, Rgba32Uint)?,
+            texture(gpu, label, "band middles", &middles, Rgba32Uint)?,
+        ];
+        let views = textures
+            .each_ref()
+            .map(|(t, _)| t.create_view(&Default::default()));
+        let entries: Vec<wgpu::BindingResource> = std::iter::once(glyphs.as_entire_binding())
+            .chain(views.iter().map(wgpu::BindingResource::TextureView))
+            .collect();
+        let bind_group = kit::bind_group(gpu, label, layout, &entries);
         Ok(Uploaded {
             bind_group,
-            bytes: glyphs.size() + band_bytes + list_bytes + curve_bytes + end_bytes + middle_bytes,
+            bytes: glyphs.size() + textures.iter().map(|(_, bytes)| bytes).sum::<u64>(),
         })
     }
+}
+
+/// `items` as a data texture named `name`; none as one zeroed texel (a texture cannot
+/// be empty, and a glyph of no curves binds one all the same).
+fn texture<T: bytemuck::Pod>(
+    gpu: &GpuContext,
+    label: &str,
+    name: &str,
+    items: &[T],
+    format: wgpu::TextureFormat,
+) -> Result<(wgpu::Texture, u64), Error> {
+    let zero = [T::zeroed()];
+    let items = if items.is_empty() { &zero[..] } else { items };
+    kit::data_texture(gpu, &format!("{label} {name}"), items, format)
 }
 
 #[cfg(test)]
