@@ -29,6 +29,7 @@ median() { sort -g | awk '{v[NR] = $1} END {if (NR % 2) print v[(NR + 1) / 2]; e
 spread() { sort -g | awk '{v[NR] = $1} END {m = (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2; printf "%.2f (%.2f–%.2f)", m, v[1], v[NR]}'; }
 echo "| labels | library still ms | library moving ms | glyphon still ms | glyphon moving ms | still ÷ glyphon | moving ÷ glyphon | library memory growth MB (held) | glyphon memory growth MB |"
 echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+last=""
 runs=$(mktemp)
 trap 'rm -f "$runs"' EXIT
 for n in $labels; do
@@ -41,6 +42,12 @@ for n in $labels; do
         gly=$("$binary" --renderer glyphon --labels "$n" --frames "$frames" 2>&1 | grep '^{' || true)
         if [ -z "$lib" ]; then
             failed=$("$binary" --renderer library --labels "$n" --frames 1 2>&1 | grep -v XDG | tail -1 | cut -c1-120)
+            failed="${failed:-the library gave no figures}"
+            break
+        fi
+        # A ratio needs both sides: a glyphon that fails gives its error, not a division.
+        if [ -z "$gly" ]; then
+            failed="glyphon: $("$binary" --renderer glyphon --labels "$n" --frames 1 2>&1 | grep -v XDG | tail -1 | cut -c1-120)"
             break
         fi
         echo "$(echo "$lib" | field still_ms) $(echo "$lib" | field moving_ms) $(echo "$gly" | field still_ms) $(echo "$gly" | field moving_ms) $(echo "$lib" | field resident_growth_mb) $(echo "$lib" | field held_mb) $(echo "$gly" | field resident_growth_mb)" >>"$runs"
