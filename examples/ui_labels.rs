@@ -32,6 +32,8 @@ const SCROLL: f32 = 0.37;
 trait Labels {
     fn frame(&mut self, encoder: &mut wgpu::CommandEncoder, view: &wgpu::TextureView, scroll: f32);
     fn held_bytes(&self) -> Option<u64>;
+    /// The library's glyphs drawn straight into the target in the last frame.
+    fn direct_glyphs(&self) -> Option<usize>;
 }
 
 struct Library {
@@ -64,6 +66,10 @@ impl Labels for Library {
 
     fn held_bytes(&self) -> Option<u64> {
         Some(self.text.held().total())
+    }
+
+    fn direct_glyphs(&self) -> Option<usize> {
+        Some(self.text.direct_glyphs())
     }
 }
 
@@ -169,6 +175,10 @@ impl Labels for Glyphon {
     }
 
     fn held_bytes(&self) -> Option<u64> {
+        None
+    }
+
+    fn direct_glyphs(&self) -> Option<usize> {
         None
     }
 }
@@ -290,10 +300,13 @@ fn main() {
     let held = drawing
         .held_bytes()
         .map_or("null".into(), |b| format!("{:.1}", b as f64 / 1e6));
+    let direct = drawing
+        .direct_glyphs()
+        .map_or("null".into(), |n| n.to_string());
     println!(
         "{{\"renderer\": \"{renderer}\", \"labels\": {count}, \"still_ms\": {still:.2}, \
          \"moving_ms\": {moving:.2}, \"resident_growth_mb\": {growth}, \"held_mb\": {held}, \
-         \"adapter\": \"{}\"}}",
+         \"direct_glyphs\": {direct}, \"adapter\": \"{}\"}}",
         gpu.adapter_name()
     );
 }

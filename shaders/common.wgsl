@@ -17,6 +17,9 @@ struct GlyphInstance {
     to_local: mat3x3<f32>,
     // Index of the distinct glyph this instance draws.
     glyph: u32,
+    // The text library's colour for a glyph drawn straight into the caller's target:
+    // premultiplied, four 16-bit fractions of 65535; unused by the rows.
+    colour: vec2<u32>,
 }
 
 struct Frame {

@@ -129,7 +129,8 @@ override GRID: bool = true;       // aa=area: the draw's glyphs may need the sub
                                   // grid (some curves marked as overlapping)
 override USE_BANDS: bool = true;  // false: every curve of the glyph for every ray
 override OVERLAY: u32 = 0u;       // 0 none, 1 curve classes, 2 cost heat map, 3 count,
-                                  // 4 and 5 the cost breakdown's counts
+                                  // 4 and 5 the cost breakdown's counts, 6 the text
+                                  // library's colour over the caller's target
 // aa=area cut short, for the cost breakdown (src/methods/winding/cost.rs) to time each
 // stage by the difference from the one before: 0 writes 1 at once (rasterizing, the
 // quads), 1 stops after the per-fragment setup (derivatives, the pixel's frame, its
@@ -150,6 +151,8 @@ struct WindingQuad {
     // band_count_h, band_count_v, first_band
     @location(4) @interpolate(flat) bands: vec3<u32>,
     @location(5) @interpolate(flat) units_per_em: f32,
+    // The instance's premultiplied colour (OVERLAY 6 alone reads it).
+    @location(6) @interpolate(flat) colour: vec4<f32>,
 }
 
 // One quad per instance over the glyph's control-point bounds.
@@ -159,7 +162,9 @@ fn vs_main(@builtin(vertex_index) vertex: u32, @builtin(instance_index) index: u
     let g = glyphs[inst.glyph];
     let q = glyph_quad(inst, g.bounds.xy, g.bounds.zw, vertex, frame.size, true);
     let counts = vec3<u32>(g.band_count_h, g.band_count_v, g.first_band);
-    return WindingQuad(q.position, q.to_local_0, q.to_local_1, q.to_local_2, g.bounds, counts, g.units_per_em);
+    let c = inst.colour;
+    let colour = vec4<f32>(vec4<u32>(c.x & 0xffffu, c.x >> 16u, c.y & 0xffffu, c.y >> 16u)) / 65535.0;
+    return WindingQuad(q.position, q.to_local_0, q.to_local_1, q.to_local_2, g.bounds, counts, g.units_per_em, colour);
 }
 
 // A pixel's coverage, and how many curves it evaluated (the cost overlays).
@@ -192,12 +197,25 @@ fn fs_main(in: WindingQuad) -> @location(0) vec4<f32> {
         return vec4<f32>(1.0);
     }
     let g = Glyph(in.bounds, in.bands.x, in.bands.y, in.bands.z, in.units_per_em);
-    // (quad_local reads only the position and the map; the glyph came as its record.)
-    let local = quad_local(GlyphQuad(in.position, in.to_local_0, in.to_local_1, in.to_local_2, 0u));
-    // One pixel step in local units, x and y: the footprint under the full transform,
-    // perspective included.
-    let jx = dpdx(local);
-    let jy = dpdy(local);
+    var local: vec2<f32>;
+    var jx: vec2<f32>;
+    var jy: vec2<f32>;
+    if AXIS {
+        // An instance that keeps the image's axes is affine: a pixel step in local
+        // units is a column of its map, exactly and the same in every pixel, where
+        // derivatives are differences of rounded neighbours and a projection divides.
+        let w = 1.0 / in.to_local_2.z;
+        jx = in.to_local_0.xy * w;
+        jy = in.to_local_1.xy * w;
+        local = in.position.x * jx + in.position.y * jy + in.to_local_2.xy * w;
+    } else {
+        // (quad_local reads only the position and the map; the glyph came as its record.)
+        local = quad_local(GlyphQuad(in.position, in.to_local_0, in.to_local_1, in.to_local_2, 0u));
+        // One pixel step in local units, x and y: the footprint under the full
+        // transform, perspective included.
+        jx = dpdx(local);
+        jy = dpdy(local);
+    }
     // The algorithm: winding_area.wgsl's or winding_rays.wgsl's.
     var c: Coverage;
     if AREA {
@@ -235,6 +253,20 @@ fn fs_main(in: WindingQuad) -> @location(0) vec4<f32> {
     }
     if OVERLAY == 5u {
         return vec4<f32>(1.0, f32(coverage == 0.0), f32(coverage == 1.0), f32(breakdown_tally.z));
+    }
+    if OVERLAY == 6u {
+        // The text library's glyph drawn straight into the caller's target, blended as
+        // its page would composite it: the coverage rounded to a half float (11
+        // significant bits, subnormal below 2^-14) as the page stores it, so that a
+        // moving frame drawn this way and a still one composited from the pages agree.
+        // No blend where the glyph leaves the pixel as it was.
+        let parts = frexp(coverage);
+        let e = max(parts.exp, -13);
+        let stored = min(ldexp(round(ldexp(coverage, 11 - e)), e - 11), 1.0);
+        if stored == 0.0 {
+            discard;
+        }
+        return in.colour * stored;
     }
     return vec4<f32>(coverage);
 }

@@ -617,6 +617,92 @@ fn hundreds_of_labels_are_the_reference_composited_in_order() {
     assert!(held.coverage_bytes <= bound, "{held:?}");
 }
 
+/// Labels in motion: from the second frame in a row that moves them, the glyphs that
+/// share no pixel with another are drawn straight into the target. That frame is the
+/// reference composited label over label (where glyphs of a label or of two labels
+/// share a pixel, blending them one after the other would be off by up to a quarter of
+/// coverage: the bound holds only if those went through the pages); the first still
+/// frame after it, everything through the pages, draws the same pixels within one step
+/// of the encoding; the next uploads nothing.
+#[test]
+fn labels_in_motion_are_the_reference_drawn_straight_or_through_the_pages() {
+    let font = Font::default_font();
+    let mut text = renderer();
+    let id = text
+        .add_font(glyphscope::font::DEFAULT_FONT_BYTES.to_vec())
+        .unwrap();
+    // Sparse enough that many glyphs share no pixel, dense enough that many do.
+    let labels = labels(40, 23);
+    let moved =
+        |shift: f32, transform: &Mat3| Mat3::from_translation(vec2(0.0, shift)) * *transform;
+    let runs = |shift: f32| -> Vec<TextRun<'_>> {
+        labels
+            .iter()
+            .map(|(word, size, transform, colour)| TextRun {
+                font: id,
+                content: Content::Text(word),
+                size_px: *size,
+                transform: moved(shift, transform),
+                color: [colour[0], colour[1], colour[2], 1.0],
+            })
+            .collect()
+    };
+    let check = |pixels: &[u8], shift: f32, what: &str| {
+        let coverages: Vec<Vec<f32>> = labels
+            .iter()
+            .map(|(word, size, transform, _)| {
+                reference_of_label(&font, word, *size, moved(shift, transform))
+            })
+            .collect();
+        let layers: Vec<(&[f32], [f32; 3])> = coverages
+            .iter()
+            .map(Vec::as_slice)
+            .zip(labels.iter().map(|l| l.3))
+            .collect();
+        let (worst, at) = worst_excess(pixels, &layers);
+        println!("{what}: the worst pixel is {worst:.2e} from the bound (≤ 0 holds)");
+        assert!(worst <= 0.0, "{what}: pixel {at} past the bound by {worst}");
+    };
+    draw(&mut text, &runs(0.0));
+    assert_eq!(
+        text.direct_glyphs(),
+        0,
+        "a first frame draws into the pages"
+    );
+    let moving = draw(&mut text, &runs(0.37));
+    let direct = text.direct_glyphs();
+    println!("moving: {direct} glyphs drawn straight into the target");
+    assert!(direct > 0, "a moving frame's lone glyphs skip the pages");
+    // And the others went through them: more instances written than drawn straight.
+    let instance = 112;
+    let uploaded = text.last_uploads().instance_bytes;
+    assert!(
+        uploaded > (direct as u64 + 1) * instance,
+        "{uploaded} bytes"
+    );
+    check(&moving, 0.37, "moving");
+    let still = draw(&mut text, &runs(0.37));
+    assert_eq!(
+        text.direct_glyphs(),
+        0,
+        "a still frame draws into the pages"
+    );
+    check(&still, 0.37, "still");
+    let apart = (moving.iter().zip(&still))
+        .filter(|(a, b)| a.abs_diff(**b) > 1)
+        .count();
+    assert_eq!(
+        apart, 0,
+        "channels more than a step apart, moving and still"
+    );
+    let again = draw(&mut text, &runs(0.37));
+    assert_eq!(text.last_uploads(), Default::default());
+    assert!(
+        again == still,
+        "an unchanged frame draws what the last one drew"
+    );
+}
+
 /// Glyphs a `prepare` laid out for one run are uploaded even when a later run of the
 /// same call fails: the next good frame draws them (it drew garbage or nothing once).
 #[test]

@@ -24,7 +24,10 @@ pub struct GpuInstance {
     to_image: [[f32; 4]; 3],
     to_local: [[f32; 4]; 3],
     glyph: u32,
-    _pad: [u32; 3],
+    _pad: u32,
+    /// The text library's premultiplied colour for a glyph drawn straight into a
+    /// caller's target, as four 16-bit fractions of 65535; zero for the rows.
+    colour: [u32; 2],
 }
 
 impl GpuInstance {
@@ -34,7 +37,19 @@ impl GpuInstance {
             to_image: columns(to_image),
             to_local: columns(&to_image.inverse()),
             glyph,
-            _pad: [0; 3],
+            _pad: 0,
+            colour: [0; 2],
+        }
+    }
+
+    /// The same instance drawn in `colour` (premultiplied, each component in 0..=1,
+    /// rounded to a multiple of 1/65535: pass one that is, to draw it exactly).
+    pub fn coloured(self, colour: [f32; 4]) -> GpuInstance {
+        let fraction = |c: f32| (c.clamp(0.0, 1.0) * 65535.0).round() as u32;
+        let pair = |a: f32, b: f32| fraction(a) | (fraction(b) << 16);
+        GpuInstance {
+            colour: [pair(colour[0], colour[1]), pair(colour[2], colour[3])],
+            ..self
         }
     }
 }

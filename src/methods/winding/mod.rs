@@ -430,6 +430,9 @@ enum Output {
     /// The cost breakdown's counting passes ([`cost`]).
     CurveTally,
     FragmentTally,
+    /// The text library's glyphs that share no pixel with another glyph: each
+    /// instance's colour times its coverage, over the caller's colour target.
+    TextColour,
 }
 
 impl Output {
@@ -441,6 +444,7 @@ impl Output {
             Output::CurveCount => 3.0,
             Output::CurveTally => 4.0,
             Output::FragmentTally => 5.0,
+            Output::TextColour => 6.0,
         }
     }
 }
@@ -451,8 +455,8 @@ pub struct Winding {
     stage: Stage,
     layout: Option<(wgpu::BindGroupLayout, wgpu::PipelineLayout)>,
     /// The pipelines made so far: drawing, and counting once `curves_per_pixel` or the
-    /// cost breakdown asks, per variant drawn and kind of target drawn into.
-    pipelines: Vec<((Output, Variant, Channels), wgpu::RenderPipeline)>,
+    /// cost breakdown asks, per variant drawn and format of target drawn into.
+    pipelines: Vec<((Output, Variant, wgpu::TextureFormat), wgpu::RenderPipeline)>,
     prepared: Option<Prepared>,
 }
 
@@ -489,7 +493,20 @@ impl Winding {
         variant: Variant,
         channels: Channels,
     ) -> wgpu::RenderPipeline {
-        let key = (output, variant, channels);
+        self.pipeline_into(gpu, output, variant, channels.additive())
+    }
+
+    /// The pipeline drawing `output` of `variant` into a target `target` describes:
+    /// [`pipeline`](Self::pipeline)'s coverage targets, or (for the text library) a
+    /// caller's colour target.
+    fn pipeline_into(
+        &mut self,
+        gpu: &GpuContext,
+        output: Output,
+        variant: Variant,
+        target: wgpu::ColorTargetState,
+    ) -> wgpu::RenderPipeline {
+        let key = (output, variant, target.format);
         if let Some((_, pipeline)) = self.pipelines.iter().find(|(k, _)| *k == key) {
             return pipeline.clone();
         }
@@ -511,7 +528,7 @@ impl Winding {
         let layout = &self.layout(gpu).1;
         let pipeline = PipelineBuilder::new(NAME, layout, &module)
             .constants(&constants)
-            .build(&gpu.device, channels);
+            .build_into(&gpu.device, target);
         self.pipelines.push((key, pipeline.clone()));
         pipeline
     }

@@ -14,6 +14,15 @@
 //! order. So a frame's cost grows with the pixels the text covers, as an atlas's does,
 //! and runs are limited by memory alone.
 //!
+//! Text in motion skips the pages where it can: in a frame whose runs moved, as they
+//! did in the frame before, each glyph that shares no pixel with another glyph
+//! (`sharing.rs`) is drawn by `render` straight into the caller's target in its run's
+//! colour — exact there, since its coverage is the pixel's — and only the glyphs that
+//! share a pixel go through the pages. That drops, for most of a UI's glyphs, the page's
+//! clear, its half-float blend and the composite. A frame that follows a still one, or
+//! the first still frame after motion, draws everything into the pages, which the still
+//! frames after it composite without drawing anything.
+//!
 //! What is kept between frames: every glyph prepared (per font and outline, so a glyph
 //! met again in any run is not prepared again), every run's layout (per font and
 //! content), and the runs as last drawn. A frame whose runs are the same as the last
@@ -27,6 +36,7 @@
 mod glyphs;
 mod layouts;
 mod pages;
+mod sharing;
 
 use std::ops::Range;
 use std::sync::Arc;
@@ -45,6 +55,7 @@ use glyphs::PreparedGlyphs;
 pub use layouts::PositionedGlyph;
 use layouts::{ContentRef, LayoutCache, RunLayout};
 use pages::{Composite, CompositeRun, Pages, PixelRect, Placement};
+use sharing::{GlyphKey, PixelBox};
 
 /// A font added to a [`TextRenderer`] ([`TextRenderer::add_font`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -95,7 +106,8 @@ pub struct Uploads {
 pub struct Held {
     /// Every prepared glyph's outline and bands.
     pub glyph_bytes: u64,
-    /// The instance buffer and the runs' composite records.
+    /// The instance buffers (the pages' and the target's) and the runs' composite
+    /// records.
     pub instance_bytes: u64,
     /// The pages the runs' coverage is drawn into (half-float, the pixels the text
     /// covers, packed).
@@ -137,6 +149,11 @@ pub struct TextRenderer {
     glyphs: PreparedGlyphs,
     layouts: LayoutCache,
     instances: Instances,
+    /// The instances of the glyphs `render` draws straight into the caller's target.
+    direct_instances: Instances,
+    /// Whether a `trim` asked the direct instances' buffer to shrink: done at the next
+    /// frame that writes it, since `render` may still draw from it.
+    shrink_direct: bool,
     composite: Option<Composite>,
     pages: Option<Pages>,
     /// Whether the pages are far more than the frames use (see `trim`).
@@ -164,6 +181,14 @@ struct Drawn {
     pages_used: u32,
     height_used: u32,
     instances: usize,
+    /// Whether the runs of the last frame that drew had moved since the frame before.
+    moved: bool,
+    /// The glyphs drawn straight into the caller's target: per variant, its pipeline
+    /// and instances (empty where everything went through the pages), and the glyph
+    /// data they read (kept here: a `trim` may compact the renderer's).
+    direct: Vec<(wgpu::RenderPipeline, Range<u32>)>,
+    direct_glyphs: Option<wgpu::BindGroup>,
+    direct_instances: usize,
 }
 
 /// A run as last drawn: what decides whether its coverage must be drawn anew.
@@ -188,6 +213,7 @@ impl DrawnRun {
 /// pixels where any glyph of it reaches the viewport.
 struct PlacedRun {
     glyphs: Range<usize>,
+    /// The pixels of its glyphs that go through the pages.
     rect: Option<PixelRect>,
     /// Drawn alone, clipped to its rectangle: a run whose glyphs may reach past it (cut
     /// by the viewport, or turned, skewed or in perspective, where a quad's dilated
@@ -202,12 +228,23 @@ struct Work {
     placed: Vec<PlacedRun>,
     /// (prepared glyph, local → target pixels) of the glyphs reaching the viewport.
     glyphs: Vec<(u32, DMat3)>,
+    /// Each of those glyphs' box of ink in target pixels; where it may be drawn
+    /// straight into the target, its variant there, its pixels, its run and kind, and
+    /// whether it must go through the pages all the same (`sharing.rs`).
+    ink: Vec<Rect>,
+    variants: Vec<Variant>,
+    boxes: Vec<PixelBox>,
+    keys: Vec<GlyphKey>,
+    paged: Vec<bool>,
+    grid: sharing::Grid,
     rects: Vec<PixelRect>,
     order: Vec<u32>,
     placements: Vec<Placement>,
     /// (page, the clipped run's number + 1 or 0, variant) and the instance.
     staged: Vec<(DrawKey, GpuInstance)>,
     instances: Vec<GpuInstance>,
+    /// The glyphs drawn straight into the target, by variant.
+    staged_direct: Vec<(Variant, GpuInstance)>,
 }
 
 /// How instances are grouped into draws: per page, the unclipped runs together, each
@@ -220,6 +257,7 @@ impl TextRenderer {
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, format: wgpu::TextureFormat) -> Self {
         let gpu = GpuContext::from_device_and_queue(device.clone(), queue.clone());
         let instances = Instances::placed_by_caller(&gpu, 256);
+        let direct_instances = Instances::placed_by_caller(&gpu, 256);
         TextRenderer {
             winding: Winding::staged(Settings::default(), super::Stage::Full),
             gpu,
@@ -228,6 +266,8 @@ impl TextRenderer {
             glyphs: PreparedGlyphs::default(),
             layouts: LayoutCache::default(),
             instances,
+            direct_instances,
+            shrink_direct: false,
             composite: None,
             pages: None,
             shrink_pages: false,
@@ -320,12 +360,17 @@ impl TextRenderer {
             && !self.glyphs.need_upload()
             && (drawn.runs.iter().zip(runs).zip(&work.runs))
                 .all(|((d, run), (layout, _, _))| d.same_place(run, layout));
-        if in_place {
+        if in_place && self.drawn.direct.is_empty() {
             return self.recolour(runs);
         }
+        // Runs that moved in the last frame too are taken to be in motion: their lone
+        // glyphs go straight into the target. Otherwise (the first frame, motion just
+        // begun, or just stopped) everything goes into the pages, for still frames to
+        // composite.
+        let direct = !in_place && self.drawn.valid && self.drawn.moved;
 
         let page = self.page_size(viewport);
-        let (pages_needed, height_used) = self.place(work, viewport, page)?;
+        let (pages_needed, height_used) = self.place(work, viewport, page, direct)?;
         let gpu = self.gpu.clone();
         let limit = gpu.device.limits().max_texture_array_layers;
         if pages_needed > limit {
@@ -344,6 +389,7 @@ impl TextRenderer {
             ];
             self.commit(work, encoder, viewport, (needed, page), pages_needed, runs)
         })
+        .inspect(|()| self.drawn.moved = !in_place)
         .inspect_err(|_| {
             // What the GPU holds is not what `drawn` says: the next frame draws anew.
             self.drawn.valid = false;
@@ -356,6 +402,7 @@ impl TextRenderer {
     fn recolour(&mut self, runs: &[TextRun<'_>]) -> Result<(), Error> {
         let srgb = self.format.is_srgb();
         let drawn = &mut self.drawn;
+        drawn.moved = false;
         let mut changed = false;
         for (d, run) in drawn.runs.iter_mut().zip(runs) {
             let colour = run.color.map(f32::to_bits);
@@ -382,21 +429,23 @@ impl TextRenderer {
 
     /// Places every run: each glyph's map into the target, the run's rectangle of
     /// pixels, and where it goes in the pages; returns the pages needed and the height
-    /// they use. Fails, leaving
-    /// what is drawn as it was, where a transform puts text behind the eye.
+    /// they use. With `direct`, the glyphs that share no pixel with another are left
+    /// out of the rectangles (`render` draws them into the target). Fails, leaving what
+    /// is drawn as it was, where a transform puts text behind the eye.
     fn place(
         &self,
         work: &mut Work,
         viewport: [u32; 2],
         page: [u32; 2],
+        direct: bool,
     ) -> Result<(u32, u32), Error> {
         work.placed.clear();
         work.glyphs.clear();
+        work.ink.clear();
         work.rects.clear();
         let view = [f64::from(viewport[0]), f64::from(viewport[1])];
         for (k, (layout, to_text, scale)) in work.runs.iter().enumerate() {
             let first = work.glyphs.len();
-            let mut ink: Option<Rect> = None;
             for &(glyph, pen) in layout.iter() {
                 // Font units (y up) to text space (pixels, y down), then the run's map.
                 let local = DMat3::from_cols(
@@ -421,19 +470,61 @@ impl TextRenderer {
                     && bounds.max.y + 1.0 > 0.0
                     && bounds.min.y - 1.0 < view[1];
                 if reaches {
-                    ink = Some(ink.map_or(bounds, |r| r.union(bounds)));
                     work.glyphs.push((glyph, to_image));
+                    work.ink.push(bounds);
                 }
-            }
-            let (rect, cut) = ink.map_or((None, false), |ink| pixel_rect(&ink, viewport));
-            if let Some(rect) = rect {
-                work.rects.push(rect);
             }
             work.placed.push(PlacedRun {
                 glyphs: first..work.glyphs.len(),
-                rect,
-                clipped: cut || !keeps_axes(to_text),
+                rect: None,
+                clipped: !keeps_axes(to_text),
             });
+        }
+        work.paged.clear();
+        if direct {
+            // Each glyph's variant as drawn into the target, chosen over its run's ink
+            // as the pages choose it over the run's rectangle.
+            work.variants.clear();
+            work.keys.clear();
+            for (k, placed) in work.placed.iter_mut().enumerate() {
+                let glyphs = placed.glyphs.clone();
+                let Some(ink) = work.ink[glyphs.clone()].iter().copied().reduce(Rect::union) else {
+                    continue;
+                };
+                for (glyph, to_image) in &work.glyphs[glyphs] {
+                    let marked = self.glyphs.marked(*glyph);
+                    let variant = self.winding.settings.variant(marked, to_image, &ink);
+                    work.variants.push(variant);
+                    let kind = kind_of(variant);
+                    work.keys.push(GlyphKey {
+                        run: k as u32,
+                        kind,
+                    });
+                }
+            }
+            work.boxes.clear();
+            work.boxes.extend(
+                work.ink
+                    .iter()
+                    .map(|ink| PixelBox::of_ink(ink.min.to_array(), ink.max.to_array(), viewport)),
+            );
+            work.grid
+                .mark(&work.boxes, &work.keys, viewport, &mut work.paged);
+        }
+        for placed in &mut work.placed {
+            let mut paged: Option<Rect> = None;
+            for i in placed.glyphs.clone() {
+                if !direct || work.paged[i] {
+                    let bounds = work.ink[i];
+                    paged = Some(paged.map_or(bounds, |r| r.union(bounds)));
+                }
+            }
+            let (rect, cut) = paged.map_or((None, false), |ink| pixel_rect(&ink, viewport));
+            if let Some(rect) = rect {
+                work.rects.push(rect);
+            }
+            placed.rect = rect;
+            placed.clipped |= cut;
         }
         Ok(pages::pack(
             &work.rects,
@@ -482,8 +573,18 @@ impl TextRenderer {
         drawn.records.clear();
         drawn.record_runs.clear();
         work.staged.clear();
+        work.staged_direct.clear();
+        // Drawn straight into the target: a glyph `place` did not send through the
+        // pages (none where it tested nothing, `paged` then being empty).
+        let direct = |i: usize| work.paged.get(i) == Some(&false);
         let mut visible = 0usize;
         for (k, placed) in work.placed.iter().enumerate() {
+            let colour = premultiplied(runs[k].color, srgb);
+            for i in placed.glyphs.clone().filter(|&i| direct(i)) {
+                let (glyph, to_image) = work.glyphs[i];
+                let instance = GpuInstance::new(&to_image, glyph).coloured(colour);
+                work.staged_direct.push((work.variants[i], instance));
+            }
             let Some(rect) = placed.rect else { continue };
             let placement = work.placements[visible];
             visible += 1;
@@ -504,7 +605,8 @@ impl TextRenderer {
                     f64::from(placement.origin[1] + rect.height()),
                 ),
             };
-            for &(glyph, to_image) in &work.glyphs[placed.glyphs.clone()] {
+            for i in placed.glyphs.clone().filter(|&i| !direct(i)) {
+                let (glyph, to_image) = work.glyphs[i];
                 let to_page = to_page * to_image;
                 let variant =
                     self.winding
@@ -515,11 +617,9 @@ impl TextRenderer {
                     GpuInstance::new(&to_page, glyph),
                 ));
             }
-            drawn.records.push(CompositeRun::new(
-                rect,
-                placement,
-                premultiplied(runs[k].color, srgb),
-            ));
+            drawn
+                .records
+                .push(CompositeRun::new(rect, placement, colour));
             drawn.record_runs.push(k as u32);
         }
         // Stable: within a draw, instances keep the runs' order.
@@ -535,6 +635,41 @@ impl TextRenderer {
         }
         self.uploads.instance_bytes = self.instances.write(&gpu, page, &work.instances)
             + pages.write(&gpu, viewport, &drawn.records);
+
+        // The direct glyphs, one draw per variant (a stable sort: each in the runs'
+        // order), for `render`.
+        work.staged_direct.sort_by_key(|&(variant, _)| variant);
+        work.instances.clear();
+        drawn.direct.clear();
+        for (index, &(variant, instance)) in (0u32..).zip(&work.staged_direct) {
+            work.instances.push(instance);
+            match drawn.direct.last_mut() {
+                Some((_, range)) if work.staged_direct[range.start as usize].0 == variant => {
+                    range.end = index + 1;
+                }
+                _ => {
+                    let over_target = wgpu::ColorTargetState {
+                        format: self.format,
+                        blend: Some(wgpu::BlendState::PREMULTIPLIED_ALPHA_BLENDING),
+                        write_mask: wgpu::ColorWrites::ALL,
+                    };
+                    let pipeline =
+                        self.winding
+                            .pipeline_into(&gpu, Output::TextColour, variant, over_target);
+                    drawn.direct.push((pipeline, index..index + 1));
+                }
+            }
+        }
+        if !work.instances.is_empty() {
+            if std::mem::take(&mut self.shrink_direct) {
+                self.direct_instances
+                    .shrink_to(&gpu, work.instances.len().max(256));
+            }
+            self.uploads.instance_bytes +=
+                self.direct_instances.write(&gpu, viewport, &work.instances);
+        }
+        drawn.direct_instances = work.instances.len();
+        drawn.direct_glyphs = Some(self.glyphs.bind_group().expect("uploaded above").clone());
 
         // The passes: each page cleared, then its draws.
         let pipelines: Vec<wgpu::RenderPipeline> = groups
@@ -598,11 +733,25 @@ impl TextRenderer {
     /// [`prepare`](Self::prepare) (the pass's default viewport). Draws nothing before
     /// the first `prepare`.
     pub fn render(&self, pass: &mut wgpu::RenderPass<'_>) {
-        let (Some(pages), Some(composite)) = (&self.pages, &self.composite) else {
+        let drawn = &self.drawn;
+        if !drawn.valid {
             return;
-        };
-        if self.drawn.valid {
-            pages.composite(composite, pass, self.drawn.records.len() as u32);
+        }
+        // The direct glyphs first, each draw in the runs' order; the pages' runs over
+        // them in order (`sharing.rs` sent through the pages every glyph that must be
+        // over a paged one).
+        if let (false, Some(glyphs)) = (drawn.direct.is_empty(), &drawn.direct_glyphs) {
+            pass.set_bind_group(0, self.direct_instances.bind_group(), &[]);
+            pass.set_bind_group(1, glyphs, &[]);
+            for (pipeline, range) in &drawn.direct {
+                pass.set_pipeline(pipeline);
+                pass.draw(0..4, range.clone());
+            }
+        }
+        if let (Some(pages), Some(composite), false) =
+            (&self.pages, &self.composite, drawn.records.is_empty())
+        {
+            pages.composite(composite, pass, drawn.records.len() as u32);
         }
     }
 
@@ -639,6 +788,7 @@ impl TextRenderer {
         });
         let instances = self.drawn.instances.max(256);
         self.instances.shrink_to(&self.gpu, instances);
+        self.shrink_direct = true;
     }
 
     /// What the last [`prepare`](Self::prepare) uploaded.
@@ -646,11 +796,22 @@ impl TextRenderer {
         self.uploads
     }
 
+    /// Glyphs the last [`prepare`](Self::prepare) left for [`render`](Self::render) to
+    /// draw straight into the target: in a frame of text in motion, those that share no
+    /// pixel with another glyph. The others go through the renderer's pages.
+    pub fn direct_glyphs(&self) -> usize {
+        if self.drawn.valid {
+            self.drawn.direct_instances
+        } else {
+            0
+        }
+    }
+
     /// What the renderer holds on the GPU now.
     pub fn held(&self) -> Held {
         Held {
             glyph_bytes: self.glyphs.gpu_bytes(),
-            instance_bytes: self.instances.bytes(),
+            instance_bytes: self.instances.bytes() + self.direct_instances.bytes(),
             coverage_bytes: self.pages.as_ref().map_or(0, Pages::gpu_bytes),
         }
     }
@@ -699,6 +860,12 @@ impl TextRenderer {
             .insert(font_index, content, layout.clone(), self.frame);
         Ok(layout)
     }
+}
+
+/// A variant as a number: glyphs of one number are drawn straight into the target by
+/// one draw.
+fn kind_of(variant: Variant) -> u32 {
+    u32::from(variant.axis) | (u32::from(variant.square) << 1) | (u32::from(variant.grid) << 2)
 }
 
 /// The height of the pages `placements` of `rects` use.
@@ -807,10 +974,13 @@ fn premultiplied(color: [f32; 4], srgb_target: bool) -> [f32; 4] {
         }
     };
     let a = color[3];
+    // In 65535ths, as a glyph drawn straight into the target carries its colour
+    // (`GpuInstance::coloured`): the pages' composite then blends the same colour.
     [
         decode(color[0]) * a,
         decode(color[1]) * a,
         decode(color[2]) * a,
         a,
     ]
+    .map(|c| (c * 65535.0).round() / 65535.0)
 }
