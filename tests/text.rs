@@ -16,7 +16,7 @@ use glyphscope::camera::Camera;
 use glyphscope::font::Font;
 use glyphscope::reference;
 use glyphscope::scene::Scene;
-use glyphscope::text::{Content, PositionedGlyph, TextRenderer, TextRun};
+use glyphscope::text::{Content, FontId, PositionedGlyph, TextRenderer, TextRun};
 
 const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
 const WIDTH: u32 = 320;
@@ -508,6 +508,56 @@ fn labels(count: usize, seed: u64) -> Vec<(String, f32, Mat3, [f32; 3])> {
         .collect()
 }
 
+/// `labels` as runs of `font`, each moved down by `shift` pixels, its colour times
+/// `shade`.
+fn label_runs(
+    labels: &[(String, f32, Mat3, [f32; 3])],
+    font: FontId,
+    shift: f32,
+    shade: f32,
+) -> Vec<TextRun<'_>> {
+    labels
+        .iter()
+        .map(|(word, size, transform, colour)| TextRun {
+            font,
+            content: Content::Text(word),
+            size_px: *size,
+            transform: Mat3::from_translation(vec2(0.0, shift)) * *transform,
+            color: [colour[0] * shade, colour[1] * shade, colour[2] * shade, 1.0],
+        })
+        .collect()
+}
+
+/// The reference coverage of each of `runs` (labels: text through an affine map).
+fn label_coverages(font: &Font, runs: &[TextRun<'_>]) -> Vec<Vec<f32>> {
+    runs.iter()
+        .map(|run| {
+            let Content::Text(word) = run.content else {
+                unreachable!("labels are text")
+            };
+            reference_of_label(font, word, run.size_px, run.transform)
+        })
+        .collect()
+}
+
+/// Asserts that `pixels` are `coverages` composited over the background in order, each
+/// in its run's colour, within the composite bound.
+fn assert_composited_in_order(
+    pixels: &[u8],
+    coverages: &[Vec<f32>],
+    runs: &[TextRun<'_>],
+    what: &str,
+) {
+    let layers: Vec<(&[f32], [f32; 3])> = coverages
+        .iter()
+        .map(Vec::as_slice)
+        .zip(runs.iter().map(|r| [r.color[0], r.color[1], r.color[2]]))
+        .collect();
+    let (worst, at) = worst_excess(pixels, &layers);
+    println!("{what}: the worst pixel is {worst:.2e} from the bound (≤ 0 holds)");
+    assert!(worst <= 0.0, "{what}: pixel {at} past the bound by {worst}");
+}
+
 /// The reference coverage of a label drawn through `transform` (an affine map of text
 /// space, y down): the camera's matrix is the same map on font units, y up.
 fn reference_of_label(font: &Font, text: &str, size: f32, transform: Mat3) -> Vec<f32> {
@@ -542,32 +592,11 @@ fn hundreds_of_labels_are_the_reference_composited_in_order() {
         .add_font(glyphscope::font::DEFAULT_FONT_BYTES.to_vec())
         .unwrap();
     let labels = labels(300, 7);
-    let runs = |shade: f32| -> Vec<TextRun<'_>> {
-        labels
-            .iter()
-            .map(|(word, size, transform, colour)| TextRun {
-                font: id,
-                content: Content::Text(word),
-                size_px: *size,
-                transform: *transform,
-                color: [colour[0] * shade, colour[1] * shade, colour[2] * shade, 1.0],
-            })
-            .collect()
-    };
-    let coverages: Vec<Vec<f32>> = labels
-        .iter()
-        .map(|(word, size, transform, _)| reference_of_label(&font, word, *size, *transform))
-        .collect();
+    let runs = |shade: f32| label_runs(&labels, id, 0.0, shade);
+    // Recolouring leaves the coverages as they are.
+    let coverages = label_coverages(&font, &runs(1.0));
     let check = |pixels: &[u8], shade: f32, what: &str| {
-        let colours: Vec<[f32; 3]> = labels
-            .iter()
-            .map(|(_, _, _, c)| c.map(|v| v * shade))
-            .collect();
-        let layers: Vec<(&[f32], [f32; 3])> =
-            coverages.iter().map(Vec::as_slice).zip(colours).collect();
-        let (worst, at) = worst_excess(pixels, &layers);
-        println!("{what}: the worst pixel is {worst:.2e} from the bound (≤ 0 holds)");
-        assert!(worst <= 0.0, "{what}: pixel {at} past the bound by {worst}");
+        assert_composited_in_order(pixels, &coverages, &runs(shade), what);
     };
     let first = draw(&mut text, &runs(1.0));
     check(&first, 1.0, "300 labels");
@@ -617,8 +646,8 @@ fn hundreds_of_labels_are_the_reference_composited_in_order() {
     assert!(held.coverage_bytes <= bound, "{held:?}");
 }
 
-/// Labels in motion: from the second frame in a row that moves them, the glyphs that
-/// share no pixel with another are drawn straight into the target. That frame is the
+/// Labels in motion: from the second frame in a row that moves them, the glyphs whose
+/// runs' order allows it are drawn straight into the target. That frame is the
 /// reference composited label over label (where glyphs of a label or of two labels
 /// share a pixel, blending them one after the other would be off by up to a quarter of
 /// coverage: the bound holds only if those went through the pages); the first still
@@ -633,35 +662,10 @@ fn labels_in_motion_are_the_reference_drawn_straight_or_through_the_pages() {
         .unwrap();
     // Sparse enough that many glyphs share no pixel, dense enough that many do.
     let labels = labels(40, 23);
-    let moved =
-        |shift: f32, transform: &Mat3| Mat3::from_translation(vec2(0.0, shift)) * *transform;
-    let runs = |shift: f32| -> Vec<TextRun<'_>> {
-        labels
-            .iter()
-            .map(|(word, size, transform, colour)| TextRun {
-                font: id,
-                content: Content::Text(word),
-                size_px: *size,
-                transform: moved(shift, transform),
-                color: [colour[0], colour[1], colour[2], 1.0],
-            })
-            .collect()
-    };
-    let check = |pixels: &[u8], shift: f32, what: &str| {
-        let coverages: Vec<Vec<f32>> = labels
-            .iter()
-            .map(|(word, size, transform, _)| {
-                reference_of_label(&font, word, *size, moved(shift, transform))
-            })
-            .collect();
-        let layers: Vec<(&[f32], [f32; 3])> = coverages
-            .iter()
-            .map(Vec::as_slice)
-            .zip(labels.iter().map(|l| l.3))
-            .collect();
-        let (worst, at) = worst_excess(pixels, &layers);
-        println!("{what}: the worst pixel is {worst:.2e} from the bound (≤ 0 holds)");
-        assert!(worst <= 0.0, "{what}: pixel {at} past the bound by {worst}");
+    let runs = |shift: f32| label_runs(&labels, id, shift, 1.0);
+    let coverages = label_coverages(&font, &runs(0.37));
+    let check = |pixels: &[u8], what: &str| {
+        assert_composited_in_order(pixels, &coverages, &runs(0.37), what);
     };
     draw(&mut text, &runs(0.0));
     assert_eq!(
@@ -680,14 +684,14 @@ fn labels_in_motion_are_the_reference_drawn_straight_or_through_the_pages() {
         uploaded > (direct as u64 + 1) * instance,
         "{uploaded} bytes"
     );
-    check(&moving, 0.37, "moving");
+    check(&moving, "moving");
     let still = draw(&mut text, &runs(0.37));
     assert_eq!(
         text.direct_glyphs(),
         0,
         "a still frame draws into the pages"
     );
-    check(&still, 0.37, "still");
+    check(&still, "still");
     let apart = (moving.iter().zip(&still))
         .filter(|(a, b)| a.abs_diff(**b) > 1)
         .count();
@@ -863,23 +867,11 @@ fn scrolled_labels_are_the_reference_where_they_end() {
         text.trim();
     }
     let pixels = draw(&mut text, &runs(last));
-    let coverages: Vec<Vec<f32>> = runs(last)
-        .iter()
-        .zip(&labels)
-        .map(|(run, (word, size, _, _))| reference_of_label(&font, word, *size, run.transform))
-        .collect();
-    let layers: Vec<(&[f32], [f32; 3])> = coverages
-        .iter()
-        .map(Vec::as_slice)
-        .zip(
-            runs(last)
-                .iter()
-                .map(|r| [r.color[0], r.color[1], r.color[2]]),
-        )
-        .collect();
-    let (worst, at) = worst_excess(&pixels, &layers);
-    println!(
-        "200 labels after 8 frames of scrolling: the worst pixel is {worst:.2e} from the bound"
+    let coverages = label_coverages(&font, &runs(last));
+    assert_composited_in_order(
+        &pixels,
+        &coverages,
+        &runs(last),
+        "200 labels after 8 frames of scrolling",
     );
-    assert!(worst <= 0.0, "pixel {at} past the bound by {worst}");
 }

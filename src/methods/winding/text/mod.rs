@@ -15,10 +15,11 @@
 //! and runs are limited by memory alone.
 //!
 //! Text in motion skips the pages where it can: in a frame whose runs moved, as they
-//! did in the frame before, each glyph that shares no pixel with another glyph
-//! (`sharing.rs`) is drawn by `render` straight into the caller's target in its run's
-//! colour — exact there, since its coverage is the pixel's — and only the glyphs that
-//! share a pixel go through the pages. That drops, for most of a UI's glyphs, the page's
+//! did in the frame before, a glyph that meets no glyph of its own run (whose coverage
+//! it would have to be added to) and would not have to land over a glyph that goes
+//! through the pages (`sharing.rs`) is drawn by `render` straight into the caller's
+//! target in its run's colour — exact there, since its coverage is the pixel's, and in
+//! the runs' order within its draw. That drops, for most of a UI's glyphs, the page's
 //! clear, its half-float blend and the composite. A frame that follows a still one, or
 //! the first still frame after motion, draws everything into the pages, which the still
 //! frames after it composite without drawing anything.
@@ -26,7 +27,8 @@
 //! What is kept between frames: every glyph prepared (per font and outline, so a glyph
 //! met again in any run is not prepared again), every run's layout (per font and
 //! content), and the runs as last drawn. A frame whose runs are the same as the last
-//! frame's uploads and draws nothing but the composite; one that only recolours them
+//! frame's uploads and draws nothing but the composite (the first after motion draws
+//! them into the pages once); one that only recolours them
 //! uploads the composite's records; one that moves them draws their coverage anew
 //! ([`TextRenderer::last_uploads`] counts the bytes). [`TextRenderer::trim`] drops what
 //! no frame used since the last trim.
