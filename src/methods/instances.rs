@@ -30,6 +30,11 @@ pub struct GpuInstance {
     colour: [u32; 2],
 }
 
+// WGSL's layout of `GlyphInstance`: two padded mat3x3 (96 bytes), the glyph, a word of
+// padding for the vec2's alignment, the colour; 112 bytes in all.
+const _: () = assert!(size_of::<GpuInstance>() == 112);
+const _: () = assert!(std::mem::offset_of!(GpuInstance, colour) == 104);
+
 impl GpuInstance {
     /// Glyph `glyph` drawn through `to_image` (local font units to image pixels).
     pub fn new(to_image: &DMat3, glyph: u32) -> GpuInstance {

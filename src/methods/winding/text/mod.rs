@@ -154,7 +154,7 @@ pub struct TextRenderer {
     /// The instances of the glyphs `render` draws straight into the caller's target.
     direct_instances: Instances,
     /// Whether a `trim` asked the direct instances' buffer to shrink: done at the next
-    /// frame that writes it, since `render` may still draw from it.
+    /// frame that draws, since `render` may still draw from it until then.
     shrink_direct: bool,
     composite: Option<Composite>,
     pages: Option<Pages>,
@@ -508,7 +508,14 @@ impl TextRenderer {
             work.boxes.extend(
                 work.ink
                     .iter()
-                    .map(|ink| PixelBox::of_ink(ink.min.to_array(), ink.max.to_array(), viewport)),
+                    .zip(&work.glyphs)
+                    .map(|(ink, (_, to_image))| {
+                        // In perspective the shader's pixel footprint may reach a pixel
+                        // further (`PixelBox::of_ink`).
+                        let affine = to_image.x_axis.z == 0.0 && to_image.y_axis.z == 0.0;
+                        let grow = if affine { 0.0 } else { 1.0 };
+                        PixelBox::of_ink(ink.min.to_array(), ink.max.to_array(), viewport, grow)
+                    }),
             );
             work.grid
                 .mark(&work.boxes, &work.keys, viewport, &mut work.paged);
@@ -641,6 +648,7 @@ impl TextRenderer {
         // The direct glyphs, one draw per variant (a stable sort: each in the runs'
         // order), for `render`.
         work.staged_direct.sort_by_key(|&(variant, _)| variant);
+        let paged_instances = work.instances.len();
         work.instances.clear();
         drawn.direct.clear();
         for (index, &(variant, instance)) in (0u32..).zip(&work.staged_direct) {
@@ -662,11 +670,13 @@ impl TextRenderer {
                 }
             }
         }
+        // Room a trim found far past what frames use, given back now that the last
+        // frame's `render` is recorded (wgpu keeps the old buffer for it).
+        if std::mem::take(&mut self.shrink_direct) {
+            self.direct_instances
+                .shrink_to(&gpu, work.instances.len().max(256));
+        }
         if !work.instances.is_empty() {
-            if std::mem::take(&mut self.shrink_direct) {
-                self.direct_instances
-                    .shrink_to(&gpu, work.instances.len().max(256));
-            }
             self.uploads.instance_bytes +=
                 self.direct_instances.write(&gpu, viewport, &work.instances);
         }
@@ -724,7 +734,7 @@ impl TextRenderer {
         drawn.viewport = viewport;
         drawn.pages_used = pages_needed;
         drawn.height_used = height_used(&page, pages_needed, &work.placements, &work.rects);
-        drawn.instances = work.instances.len();
+        drawn.instances = paged_instances;
         drawn.valid = true;
         self.pages = Some(pages);
         Ok(())
@@ -733,7 +743,8 @@ impl TextRenderer {
     /// Records the prepared runs into `pass`, which must draw into a target of the
     /// format given to [`new`](Self::new), of the viewport given to
     /// [`prepare`](Self::prepare) (the pass's default viewport). Draws nothing before
-    /// the first `prepare`.
+    /// the first `prepare`. It sets its own pipelines and bind groups 0 to 2 on the
+    /// pass: set yours again after it.
     pub fn render(&self, pass: &mut wgpu::RenderPass<'_>) {
         let drawn = &self.drawn;
         if !drawn.valid {
@@ -798,9 +809,11 @@ impl TextRenderer {
         self.uploads
     }
 
-    /// Glyphs the last [`prepare`](Self::prepare) left for [`render`](Self::render) to
-    /// draw straight into the target: in a frame of text in motion, those that share no
-    /// pixel with another glyph. The others go through the renderer's pages.
+    /// Glyphs the last [`prepare`](Self::prepare) that drew left for
+    /// [`render`](Self::render) to draw straight into the target (a `prepare` that
+    /// failed left the frame before as it was): in a frame of text in motion, those no
+    /// glyph of their own run and no glyph going through the pages reach. The others go
+    /// through the renderer's pages.
     pub fn direct_glyphs(&self) -> usize {
         if self.drawn.valid {
             self.drawn.direct_instances

@@ -14,8 +14,9 @@
 //! run, a paged glyph of an earlier run, or a direct one of another variant.
 //!
 //! A glyph's coverage is zero outside the whole pixels its ink's box touches, so two
-//! glyphs can share a pixel only where those boxes meet: a test on boxes, never wrong
-//! the unsafe way, is enough. Boxes are sorted into a grid of cells so that each is
+//! glyphs can share a pixel only where those boxes meet (grown for f32's rounding, and
+//! in perspective for the shader's linear footprint): a test on boxes, wrong only the
+//! safe way, is enough. Boxes are sorted into a grid of cells so that each is
 //! tested against its neighbours only.
 
 /// The whole pixels [x0, x1) × [y0, y1) a glyph's coverage may reach.
@@ -29,12 +30,15 @@ pub struct PixelBox {
 
 impl PixelBox {
     /// The pixels a box of ink from `min` to `max` (target pixels) touches, within a
-    /// viewport of `size` pixels: pixel i is touched when i < max and i + 1 > min. A
-    /// thousandth of a pixel more each side: the GPU maps pixels into the glyph in f32.
-    pub fn of_ink(min: [f64; 2], max: [f64; 2], size: [u32; 2]) -> PixelBox {
-        const SLACK: f64 = 1e-3;
-        let low = |v: f64, n: u32| (v - SLACK).floor().clamp(0.0, f64::from(n)) as i32;
-        let high = |v: f64, n: u32| (v + SLACK).ceil().clamp(0.0, f64::from(n)) as i32;
+    /// viewport of `size` pixels: pixel i is touched when i < max and i + 1 > min —
+    /// more by a thousandth of a pixel and by f32's rounding at that distance (the GPU
+    /// maps pixels into the glyph in f32), and by `grow` pixels (a glyph seen in
+    /// perspective: the shader takes a pixel's footprint as the tangent parallelogram
+    /// at its centre, which may reach past the pixel's own preimage).
+    pub fn of_ink(min: [f64; 2], max: [f64; 2], size: [u32; 2], grow: f64) -> PixelBox {
+        let slack = |v: f64| grow + 1e-3 + v.abs() * f64::from(f32::EPSILON) * 4.0;
+        let low = |v: f64, n: u32| (v - slack(v)).floor().clamp(0.0, f64::from(n)) as i32;
+        let high = |v: f64, n: u32| (v + slack(v)).ceil().clamp(0.0, f64::from(n)) as i32;
         PixelBox {
             x0: low(min[0], size[0]),
             y0: low(min[1], size[1]),
@@ -108,7 +112,8 @@ impl Grid {
                     let cell = &mut self.cells[c];
                     if full {
                         // Past the limit: this box goes through the pages, and so do
-                        // the boxes of its own run it meets (the last ones in).
+                        // the boxes of its own run it meets (the last ones in before
+                        // the cell filled; those after are paged as this one is).
                         paged[i] = true;
                         for &j in cell.iter().rev() {
                             if keys[j as usize].run != key.run {
@@ -134,9 +139,9 @@ impl Grid {
                             }
                         }
                     }
-                    cell.push(i as u32);
-                    if cell.len() > CELL_LIMIT {
-                        self.full[c] = true;
+                    if !full {
+                        cell.push(i as u32);
+                        self.full[c] = cell.len() > CELL_LIMIT;
                     }
                 }
             }
@@ -176,18 +181,23 @@ mod tests {
     fn ink_touches_the_pixels_it_enters() {
         // Ink from 3.2 to 4.7 enters pixels 3 and 4.
         assert_eq!(
-            PixelBox::of_ink([3.2, 7.5], [4.7, 7.6], VIEW),
+            PixelBox::of_ink([3.2, 7.5], [4.7, 7.6], VIEW, 0.0),
             pixels(3, 7, 5, 8)
         );
         // Ink ending on a pixel's edge may reach into it by the GPU's rounding: counted.
         assert_eq!(
-            PixelBox::of_ink([3.0, 7.0], [5.0, 8.0], VIEW),
+            PixelBox::of_ink([3.0, 7.0], [5.0, 8.0], VIEW, 0.0),
             pixels(2, 6, 6, 9)
         );
         // Cut by the viewport.
         assert_eq!(
-            PixelBox::of_ink([-4.0, 90.5], [2.5, 130.0], VIEW),
+            PixelBox::of_ink([-4.0, 90.5], [2.5, 130.0], VIEW, 0.0),
             pixels(0, 90, 3, 100)
+        );
+        // In perspective: a pixel more each side.
+        assert_eq!(
+            PixelBox::of_ink([3.2, 7.5], [4.7, 7.6], VIEW, 1.0),
+            pixels(2, 6, 6, 9)
         );
     }
 
@@ -250,26 +260,43 @@ mod tests {
     }
 
     #[test]
-    fn a_crowded_cell_sends_later_boxes_and_their_runs_to_the_pages() {
-        // Disjoint boxes of one pixel, each its own run, fill a cell past its limit:
-        // those in before it are direct, the ones after go through the pages.
+    fn a_crowded_cell_sends_later_boxes_to_the_pages() {
+        // Disjoint boxes of one pixel, each its own run, fill the first cell past its
+        // limit: those in before it are direct.
         let mut boxes: Vec<PixelBox> = (0..=CELL_LIMIT as i32)
             .map(|k| pixels(k % 30, k / 30 * 2, k % 30 + 1, k / 30 * 2 + 1))
             .collect();
         let mut keys: Vec<GlyphKey> = (0..boxes.len() as u32).map(|r| key(r, 0)).collect();
-        let last_run = keys.len() as u32;
-        // A run of two glyphs sharing a pixel, arriving at the full cell, and one
-        // elsewhere.
-        boxes.push(pixels(31, 20, 32, 22));
-        boxes.push(pixels(31, 21, 32, 24));
-        keys.push(key(last_run, 0));
-        keys.push(key(last_run, 0));
+        let next = keys.len() as u32;
+        // A box of a new run meeting none of them, reaching into the full cell: paged.
+        boxes.push(pixels(31, 31, 33, 33));
+        keys.push(key(next, 0));
+        // A later run's box meeting that one in the next cell: paged (over a paged
+        // glyph of an earlier run). One elsewhere: direct.
+        boxes.push(pixels(32, 32, 34, 34));
+        keys.push(key(next + 1, 0));
         boxes.push(pixels(150, 50, 151, 51));
-        keys.push(key(last_run + 1, 0));
+        keys.push(key(next + 2, 0));
         let paged = marked_with(&boxes, &keys);
         let n = paged.len();
         assert!(paged[..n - 3].iter().all(|&p| !p), "{paged:?}");
         assert_eq!(paged[n - 3..], [true, true, false]);
+    }
+
+    #[test]
+    fn a_full_cell_still_pages_the_glyph_of_the_same_run_it_meets() {
+        // One run fills the cell with disjoint boxes, its last one in a corner; its
+        // next box arrives at the full cell and meets that last one: both paged (their
+        // coverages are summed), the others direct.
+        let mut boxes: Vec<PixelBox> = (0..CELL_LIMIT as i32)
+            .map(|k| pixels(k % 16, k / 16 * 2, k % 16 + 1, k / 16 * 2 + 1))
+            .collect();
+        boxes.push(pixels(20, 20, 24, 24));
+        boxes.push(pixels(22, 22, 26, 26));
+        let one_run = vec![key(0, 0); boxes.len()];
+        let paged = marked_with(&boxes, &one_run);
+        assert!(paged[..CELL_LIMIT].iter().all(|&p| !p), "{paged:?}");
+        assert_eq!(paged[CELL_LIMIT..], [true, true]);
     }
 
     #[test]
