@@ -36,10 +36,30 @@ impl GpuContext {
     }
 
     async fn open_async(wanted: Option<&str>) -> Result<GpuContext, Error> {
-        let instance =
-            wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+        // The primary backends (Vulkan, Metal, DX12) first, GL only where none of them
+        // has an adapter; `WGPU_BACKEND`, when set, decides alone. An instance with GL
+        // makes an EGL context per GL adapter it enumerates, and egui_wgpu enumerates
+        // every adapter of the instance it is given again: dropping those failed with
+        // EGL_BAD_ACCESS in one run of four of tests/app.rs on lavapipe.
+        let descriptor = |primary_only: bool| {
+            let mut descriptor = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
+            if primary_only {
+                descriptor.backends &= wgpu::Backends::PRIMARY;
+            }
+            descriptor
+        };
+        let backend_from_env = std::env::var_os("WGPU_BACKEND").is_some();
         let from_env = std::env::var("WGPU_ADAPTER_NAME").ok();
-        let adapter = choose_adapter(&instance, wanted.or(from_env.as_deref())).await?;
+        let wanted = wanted.or(from_env.as_deref());
+        let mut instance = wgpu::Instance::new(descriptor(!backend_from_env));
+        let adapter = match choose_adapter(&instance, wanted).await {
+            Ok(adapter) => adapter,
+            Err(_) if !backend_from_env => {
+                instance = wgpu::Instance::new(descriptor(false));
+                choose_adapter(&instance, wanted).await?
+            }
+            Err(e) => return Err(e),
+        };
         let (device, queue) = adapter
             .request_device(&Self::device_descriptor(&adapter))
             .await
