@@ -108,11 +108,10 @@ pub struct Uploads {
 pub struct Held {
     /// Every prepared glyph's outline and bands.
     pub glyph_bytes: u64,
-    /// The instance buffers (the pages' and the target's) and the runs' composite
-    /// records.
+    /// The instance buffers (the pages' and the target's).
     pub instance_bytes: u64,
     /// The pages the runs' coverage is drawn into (half-float, the pixels the text
-    /// covers, packed).
+    /// covers, packed), and the runs' composite records.
     pub coverage_bytes: u64,
 }
 
