@@ -372,14 +372,6 @@ fn bad_input_is_an_error_not_a_panic() {
             "invertible",
         ),
         (
-            "an empty string",
-            TextRun {
-                content: Content::Text(""),
-                ..good
-            },
-            "nothing",
-        ),
-        (
             "a zero size",
             TextRun {
                 size_px: 0.0,
@@ -578,6 +570,42 @@ fn reference_of_label(font: &Font, text: &str, size: f32, transform: Mat3) -> Ve
         f64::from(y.y),
     );
     reference::rasterize(&scene, &camera).unwrap().data
+}
+
+/// A UI's empty label (a search box before anything is typed, a counter not yet
+/// shown) is no error: runs of empty or blank text, or of no glyphs, draw nothing, and
+/// the runs beside them draw exactly what they draw alone.
+#[test]
+fn blank_runs_draw_nothing_and_are_no_error() {
+    let mut text = renderer();
+    let font = text
+        .add_font(glyphscope::font::DEFAULT_FONT_BYTES.to_vec())
+        .unwrap();
+    let run = |content| TextRun {
+        font,
+        content,
+        size_px: 24.0,
+        transform: Mat3::from_translation(vec2(10.0, 60.0)),
+        color: [0.9, 0.2, 0.1, 1.0],
+    };
+    let alone = draw(&mut text, &[run(Content::Text("Search"))]);
+    let mut beside_blanks = renderer();
+    let font_again = beside_blanks
+        .add_font(glyphscope::font::DEFAULT_FONT_BYTES.to_vec())
+        .unwrap();
+    assert_eq!(font_again, font);
+    let runs = [
+        run(Content::Text("")),
+        run(Content::Text("Search")),
+        run(Content::Text("   \n ")),
+        run(Content::Glyphs(&[])),
+    ];
+    let with_blanks = draw(&mut beside_blanks, &runs);
+    assert!(with_blanks == alone, "blank runs changed the pixels");
+    // And a frame of nothing but blank runs draws the background alone.
+    let blank = draw(&mut beside_blanks, &[run(Content::Text(""))]);
+    let background = blank.chunks(4).all(|p| p == &blank[..4]);
+    assert!(background, "a blank frame drew something");
 }
 
 /// Three hundred labels — more than the 256 layers the first version could hold, runs

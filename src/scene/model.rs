@@ -97,17 +97,28 @@ impl Scene {
         }
     }
 
-    /// Shapes `text` (possibly several lines) in `font`.
+    /// Shapes `text` (possibly several lines) in `font`. Text that draws nothing (only
+    /// blank glyphs) is an error: a scene to look at has something in it.
     pub fn from_text(font: &Font, text: &str) -> Result<Scene, Error> {
+        let scene = Self::from_text_or_blank(font, text)?;
+        if scene.instances.is_empty() {
+            return Err(Error::Input(
+                "the text draws nothing (it is empty, or only blank glyphs)".into(),
+            ));
+        }
+        Ok(scene)
+    }
+
+    /// Shapes `text` in `font` as [`Scene::from_text`] does, but text that draws
+    /// nothing (empty, or only blank glyphs) is an empty scene: a UI's empty label.
+    pub fn from_text_or_blank(font: &Font, text: &str) -> Result<Scene, Error> {
+        if shaping::line_breaks(text).trim().is_empty() {
+            return Ok(Self::build(font, std::iter::empty()));
+        }
         let shaped = shaping::shape(font, text)?;
         let mut scene = Self::build(font, shaped.iter().map(|g| (g.glyph, g.position)));
         if let Some(source) = &mut scene.source {
             source.text = Some(shaping::line_breaks(text));
-        }
-        if scene.instances.is_empty() {
-            return Err(Error::Input(
-                "the text draws nothing (only blank glyphs)".into(),
-            ));
         }
         Ok(scene)
     }

@@ -306,8 +306,10 @@ impl TextRenderer {
     /// changed since the last call, and records into `encoder` the passes that draw the
     /// runs' coverage into the renderer's own pages (submit it before, or with, the
     /// encoder of the pass given to [`render`](Self::render); a frame whose runs did not
-    /// move records none). Runs are drawn in order, each over those before it. Bad input
-    /// — an unknown font, empty content, a glyph id the font lacks, a size or colour out
+    /// move records none). Runs are drawn in order, each over those before it; a run
+    /// whose content draws nothing (empty or blank text, no glyphs) is no error and
+    /// draws nothing, as a UI's empty label. Bad input
+    /// — an unknown font, a glyph id the font lacks, a size or colour out
     /// of range, a transform that is not finite, cannot be inverted or puts text behind
     /// the eye, a viewport past the device's largest texture — is an [`Error::Input`], and
     /// the last prepared frame stays as it was. Submit `encoder`: a later frame whose runs
@@ -854,7 +856,7 @@ impl TextRenderer {
         }
         let font = &self.fonts[font_index];
         let scene = match run.content {
-            Content::Text(text) => Scene::from_text(font, text)?,
+            Content::Text(text) => Scene::from_text_or_blank(font, text)?,
             Content::Glyphs(glyphs) => scene_of_glyphs(font, glyphs, run.size_px)?,
         };
         // As the `winding` row draws by default: overlapping instances joined, then every
@@ -915,13 +917,6 @@ fn check_run(k: usize, run: &TextRun<'_>, fonts: usize) -> Result<DMat3, Error> 
     let bad = |what: String| Error::Input(format!("run {k}: {what}"));
     if run.font.0 >= fonts {
         return Err(bad(format!("font {} was not added", run.font.0)));
-    }
-    let empty = match run.content {
-        Content::Text(text) => text.trim().is_empty(),
-        Content::Glyphs(glyphs) => glyphs.is_empty(),
-    };
-    if empty {
-        return Err(bad("it draws nothing (empty text)".into()));
     }
     if !(run.size_px.is_finite() && run.size_px > 0.0) {
         return Err(bad(format!(
