@@ -12,7 +12,9 @@
 //! wall time is measured; the median of `--frames` frames after 5 warm-up frames is
 //! printed for each, with the process's resident memory before the renderer was made
 //! and after its last frame (on a software GPU the GPU's memory is the process's), and
-//! for the library what it says it holds (`TextRenderer::held`). One line of JSON, so
+//! for the library what it says it holds (`TextRenderer::held`), and the CPU time the
+//! whole process spent per moving frame (every thread: on a software GPU that is the
+//! GPU's work too, a figure less moved by other processes than wall time). One line of JSON, so
 //! that `tools/ui-labels.sh` can run one renderer per process and tabulate them.
 
 use std::sync::Arc;
@@ -202,6 +204,18 @@ fn clearing_pass<'e>(
     })
 }
 
+/// The CPU time the whole process has used, every thread (on a software GPU the GPU's
+/// work too), milliseconds (Linux: /proc/self/stat, in clock ticks of 10 ms; None
+/// elsewhere).
+fn process_cpu_ms() -> Option<f64> {
+    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
+    // Fields after the command name, which is in parentheses and may hold spaces.
+    let fields: Vec<&str> = stat.rsplit_once(')')?.1.split_whitespace().collect();
+    // utime and stime are the stat's fields 14 and 15, the 12th and 13th after ')'.
+    let ticks: u64 = fields.get(11)?.parse::<u64>().ok()? + fields.get(12)?.parse::<u64>().ok()?;
+    Some(ticks as f64 * 10.0)
+}
+
 /// The process's resident memory, bytes (Linux: /proc/self/statm; None elsewhere).
 fn resident_bytes() -> Option<u64> {
     let statm = std::fs::read_to_string("/proc/self/statm").ok()?;
@@ -291,7 +305,13 @@ fn main() {
         median(times)
     };
     let still = time(&|_| 0.0);
+    let cpu_before = process_cpu_ms();
     let moving = time(&|frame| SCROLL * (frame + 1) as f32);
+    // Per frame of the moving phase, warm-up frames included (as many as were timed).
+    let moving_cpu = match (cpu_before, process_cpu_ms()) {
+        (Some(b), Some(a)) => format!("{:.2}", (a - b) / (WARMUP + frames) as f64),
+        _ => "null".into(),
+    };
     let after = resident_bytes();
     let growth = match (before, after) {
         (Some(b), Some(a)) => format!("{:.1}", (a as f64 - b as f64) / 1e6),
@@ -305,7 +325,8 @@ fn main() {
         .map_or("null".into(), |n| n.to_string());
     println!(
         "{{\"renderer\": \"{renderer}\", \"labels\": {count}, \"still_ms\": {still:.2}, \
-         \"moving_ms\": {moving:.2}, \"resident_growth_mb\": {growth}, \"held_mb\": {held}, \
+         \"moving_ms\": {moving:.2}, \"moving_cpu_ms\": {moving_cpu}, \
+         \"resident_growth_mb\": {growth}, \"held_mb\": {held}, \
          \"direct_glyphs\": {direct}, \"adapter\": \"{}\"}}",
         gpu.adapter_name()
     );

@@ -11,6 +11,9 @@
 #   LABELS="500 2000" FRAMES=60 ROUNDS=5 tools/ui-labels.sh
 #   UI_LABELS=/path/to/ui_labels tools/ui-labels.sh   # another build of the example
 #
+# Beside wall time, each renderer's CPU time per moving frame (the whole process, every
+# thread: on a software GPU the GPU's work too), which other processes move less.
+#
 # A renderer that fails on a count prints its error in the row instead of figures.
 set -eu
 cd "$(dirname "$0")/.."
@@ -27,8 +30,8 @@ field() { sed -n "s/.*\"$1\": \([^,}]*\).*/\1/p" | tr -d '"'; }
 median() { sort -g | awk '{v[NR] = $1} END {if (NR % 2) print v[(NR + 1) / 2]; else printf "%.2f\n", (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 # "median (least–most)" of the numbers on standard input.
 spread() { sort -g | awk '{v[NR] = $1} END {m = (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2; printf "%.2f (%.2f–%.2f)", m, v[1], v[NR]}'; }
-echo "| labels | library still ms | library moving ms | glyphon still ms | glyphon moving ms | still ÷ glyphon | moving ÷ glyphon | library memory growth MB (held) | glyphon memory growth MB |"
-echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+echo "| labels | library still ms | library moving ms | glyphon still ms | glyphon moving ms | still ÷ glyphon | moving ÷ glyphon | moving CPU ms, library / glyphon | moving CPU ÷ glyphon | library memory growth MB (held) | glyphon memory growth MB |"
+echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 last=""
 runs=$(mktemp)
 trap 'rm -f "$runs"' EXIT
@@ -50,17 +53,18 @@ for n in $labels; do
             failed="glyphon: $("$binary" --renderer glyphon --labels "$n" --frames 1 2>&1 | grep -v XDG | tail -1 | cut -c1-120)"
             break
         fi
-        echo "$(echo "$lib" | field still_ms) $(echo "$lib" | field moving_ms) $(echo "$gly" | field still_ms) $(echo "$gly" | field moving_ms) $(echo "$lib" | field resident_growth_mb) $(echo "$lib" | field held_mb) $(echo "$gly" | field resident_growth_mb)" >>"$runs"
+        echo "$(echo "$lib" | field still_ms) $(echo "$lib" | field moving_ms) $(echo "$gly" | field still_ms) $(echo "$gly" | field moving_ms) $(echo "$lib" | field resident_growth_mb) $(echo "$lib" | field held_mb) $(echo "$gly" | field resident_growth_mb) $(echo "$lib" | field moving_cpu_ms) $(echo "$gly" | field moving_cpu_ms)" >>"$runs"
         last="$lib"
     done
     if [ -n "$failed" ]; then
-        echo "| $n | error: $failed | | $(echo "$gly" | field still_ms) | $(echo "$gly" | field moving_ms) | | | | $(echo "$gly" | field resident_growth_mb) |"
+        echo "| $n | error: $failed | | $(echo "$gly" | field still_ms) | $(echo "$gly" | field moving_ms) | | | | | | $(echo "$gly" | field resident_growth_mb) |"
         continue
     fi
     col() { awk -v c="$1" '{print $c}' "$runs" | median; }
     still_ratio=$(awk '{printf "%.4f\n", $1 / $3}' "$runs" | spread)
     moving_ratio=$(awk '{printf "%.4f\n", $2 / $4}' "$runs" | spread)
-    echo "| $n | $(col 1) | $(col 2) | $(col 3) | $(col 4) | $still_ratio | $moving_ratio | $(col 5) ($(col 6)) | $(col 7) |"
+    cpu_ratio=$(awk '{printf "%.4f\n", $8 / $9}' "$runs" | spread)
+    echo "| $n | $(col 1) | $(col 2) | $(col 3) | $(col 4) | $still_ratio | $moving_ratio | $(col 8) / $(col 9) | $cpu_ratio | $(col 5) ($(col 6)) | $(col 7) |"
 done
 echo
-echo "Adapter: $(echo "$last" | sed -n 's/.*"adapter": "\([^"]*\)".*/\1/p'). \`tools/ui-labels.sh\` (LABELS=\"$labels\" FRAMES=$frames ROUNDS=$rounds), median wall ms per frame over each run's frames (prepare + render + submit + wait, 1920×1080 Rgba8UnormSrgb), then the median over the rounds; ratios within each round, their median (least–most)."
+echo "Adapter: $(echo "$last" | sed -n 's/.*"adapter": "\([^"]*\)".*/\1/p'). \`tools/ui-labels.sh\` (LABELS=\"$labels\" FRAMES=$frames ROUNDS=$rounds), median wall ms per frame over each run's frames (prepare + render + submit + wait, 1920×1080 Rgba8UnormSrgb), then the median over the rounds; ratios within each round, their median (least–most). *Moving CPU*: the CPU time the whole process spent per moving frame, every thread (on a software GPU, the GPU's work too; a figure other processes move less than wall time)."
