@@ -2,7 +2,9 @@
 //! coloured background in an sRGB target equals the reference coverage composited the
 //! same way; two runs of two fonts and colours in one pass; a transform changed every
 //! frame re-uploads instances, never outlines, and an unchanged frame uploads nothing;
-//! bad input is an error value.
+//! hundreds of labels, still and in motion (drawn straight into the target where the
+//! runs' order allows, through the pages elsewhere), are the reference composited in
+//! order; blank runs draw nothing; bad input is an error value.
 //!
 //! The composite bound, set before the first run: per pixel, in linear light, the
 //! method's claim (0.02 of coverage) times the contrast between text and background,
