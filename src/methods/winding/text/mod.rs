@@ -57,7 +57,7 @@ use glyphs::PreparedGlyphs;
 pub use layouts::PositionedGlyph;
 use layouts::{ContentRef, LayoutCache, RunLayout};
 use pages::{Composite, CompositeRun, Pages, PixelRect, Placement};
-use sharing::{GlyphKey, PixelBox};
+use sharing::GlyphKey;
 
 /// A font added to a [`TextRenderer`] ([`TextRenderer::add_font`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -234,7 +234,7 @@ struct Work {
     /// whether it must go through the pages all the same (`sharing.rs`).
     ink: Vec<Rect>,
     variants: Vec<Variant>,
-    boxes: Vec<PixelBox>,
+    boxes: Vec<PixelRect>,
     keys: Vec<GlyphKey>,
     paged: Vec<bool>,
     grid: sharing::Grid,
@@ -512,10 +512,15 @@ impl TextRenderer {
                     .zip(&work.glyphs)
                     .map(|(ink, (_, to_image))| {
                         // In perspective the shader's pixel footprint may reach a pixel
-                        // further (`PixelBox::of_ink`).
+                        // further (`sharing::pixels_of_ink`).
                         let affine = to_image.x_axis.z == 0.0 && to_image.y_axis.z == 0.0;
                         let grow = if affine { 0.0 } else { 1.0 };
-                        PixelBox::of_ink(ink.min.to_array(), ink.max.to_array(), viewport, grow)
+                        sharing::pixels_of_ink(
+                            ink.min.to_array(),
+                            ink.max.to_array(),
+                            viewport,
+                            grow,
+                        )
                     }),
             );
             work.grid

@@ -23,6 +23,11 @@ impl PixelRect {
     pub fn height(&self) -> u32 {
         self.y1 - self.y0
     }
+
+    /// Whether the two share a pixel.
+    pub fn meets(&self, other: &PixelRect) -> bool {
+        self.x0 < other.x1 && other.x0 < self.x1 && self.y0 < other.y1 && other.y0 < self.y1
+    }
 }
 
 /// Where a run's rectangle lies in the pages: which page, and its top-left corner there.

@@ -19,41 +19,28 @@
 //! safe way, is enough. Boxes are sorted into a grid of cells so that each is
 //! tested against its neighbours only.
 
-/// The whole pixels [x0, x1) × [y0, y1) a glyph's coverage may reach.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct PixelBox {
-    pub x0: i32,
-    pub y0: i32,
-    pub x1: i32,
-    pub y1: i32,
-}
+use super::pages::PixelRect;
 
-impl PixelBox {
-    /// The pixels a box of ink from `min` to `max` (target pixels) touches, within a
-    /// viewport of `size` pixels: pixel i is touched when i < max and i + 1 > min —
-    /// more by a thousandth of a pixel and by f32's rounding at that distance (the GPU
-    /// maps pixels into the glyph in f32), and by `grow` pixels (a glyph seen in
-    /// perspective: the shader takes a pixel's footprint as the tangent parallelogram
-    /// at its centre, which may reach past the pixel's own preimage).
-    pub fn of_ink(min: [f64; 2], max: [f64; 2], size: [u32; 2], grow: f64) -> PixelBox {
-        let slack = |v: f64| grow + 1e-3 + v.abs() * f64::from(f32::EPSILON) * 4.0;
-        let low = |v: f64, n: u32| (v - slack(v)).floor().clamp(0.0, f64::from(n)) as i32;
-        let high = |v: f64, n: u32| (v + slack(v)).ceil().clamp(0.0, f64::from(n)) as i32;
-        PixelBox {
-            x0: low(min[0], size[0]),
-            y0: low(min[1], size[1]),
-            x1: high(max[0], size[0]),
-            y1: high(max[1], size[1]),
-        }
-    }
-
-    fn meets(&self, other: &PixelBox) -> bool {
-        self.x0 < other.x1 && other.x0 < self.x1 && self.y0 < other.y1 && other.y0 < self.y1
+/// The whole pixels a glyph's box of ink from `min` to `max` (target pixels) may reach,
+/// within a viewport of `size` pixels: pixel i is touched when i < max and i + 1 > min —
+/// more by a thousandth of a pixel and by f32's rounding at that distance (the GPU maps
+/// pixels into the glyph in f32), and by `grow` pixels (a glyph seen in perspective:
+/// the shader takes a pixel's footprint as the tangent parallelogram at its centre,
+/// which may reach past the pixel's own preimage, as the pages' rectangles allow for).
+pub fn pixels_of_ink(min: [f64; 2], max: [f64; 2], size: [u32; 2], grow: f64) -> PixelRect {
+    let slack = |v: f64| grow + 1e-3 + v.abs() * f64::from(f32::EPSILON) * 4.0;
+    let low = |v: f64, n: u32| (v - slack(v)).floor().clamp(0.0, f64::from(n)) as u32;
+    let high = |v: f64, n: u32| (v + slack(v)).ceil().clamp(0.0, f64::from(n)) as u32;
+    PixelRect {
+        x0: low(min[0], size[0]),
+        y0: low(min[1], size[1]),
+        x1: high(max[0], size[0]),
+        y1: high(max[1], size[1]),
     }
 }
 
 /// Cells of the grid, pixels a side: a label's glyph falls in one to four of them.
-const CELL: i32 = 32;
+const CELL: u32 = 32;
 /// Boxes one cell holds before it stops testing them pairwise: past it (text stacked
 /// on text) every box reaching the cell goes through the pages, which is never wrong
 /// for a box arriving later, and a frame's cost stays linear in its glyphs.
@@ -80,7 +67,7 @@ impl Grid {
     /// through the pages, in a viewport of `size` pixels. Empty boxes meet nothing.
     pub fn mark(
         &mut self,
-        boxes: &[PixelBox],
+        boxes: &[PixelRect],
         keys: &[GlyphKey],
         size: [u32; 2],
         paged: &mut Vec<bool>,
@@ -88,8 +75,8 @@ impl Grid {
         debug_assert!(keys.windows(2).all(|k| k[0].run <= k[1].run));
         paged.clear();
         paged.resize(boxes.len(), false);
-        let columns = size[0].div_ceil(CELL as u32).max(1) as i32;
-        let rows = size[1].div_ceil(CELL as u32).max(1) as i32;
+        let columns = size[0].div_ceil(CELL).max(1);
+        let rows = size[1].div_ceil(CELL).max(1);
         let cells = (columns * rows) as usize;
         self.cells
             .resize_with(cells.max(self.cells.len()), Vec::new);
@@ -156,14 +143,14 @@ mod tests {
     const VIEW: [u32; 2] = [200, 100];
 
     /// Each box of its own run, all of one kind.
-    fn marked(boxes: &[PixelBox]) -> Vec<bool> {
+    fn marked(boxes: &[PixelRect]) -> Vec<bool> {
         let keys: Vec<GlyphKey> = (0..boxes.len() as u32)
             .map(|run| GlyphKey { run, kind: 0 })
             .collect();
         marked_with(boxes, &keys)
     }
 
-    fn marked_with(boxes: &[PixelBox], keys: &[GlyphKey]) -> Vec<bool> {
+    fn marked_with(boxes: &[PixelRect], keys: &[GlyphKey]) -> Vec<bool> {
         let mut paged = Vec::new();
         Grid::default().mark(boxes, keys, VIEW, &mut paged);
         paged
@@ -173,30 +160,30 @@ mod tests {
         GlyphKey { run, kind }
     }
 
-    fn pixels(x0: i32, y0: i32, x1: i32, y1: i32) -> PixelBox {
-        PixelBox { x0, y0, x1, y1 }
+    fn pixels(x0: u32, y0: u32, x1: u32, y1: u32) -> PixelRect {
+        PixelRect { x0, y0, x1, y1 }
     }
 
     #[test]
     fn ink_touches_the_pixels_it_enters() {
         // Ink from 3.2 to 4.7 enters pixels 3 and 4.
         assert_eq!(
-            PixelBox::of_ink([3.2, 7.5], [4.7, 7.6], VIEW, 0.0),
+            pixels_of_ink([3.2, 7.5], [4.7, 7.6], VIEW, 0.0),
             pixels(3, 7, 5, 8)
         );
         // Ink ending on a pixel's edge may reach into it by the GPU's rounding: counted.
         assert_eq!(
-            PixelBox::of_ink([3.0, 7.0], [5.0, 8.0], VIEW, 0.0),
+            pixels_of_ink([3.0, 7.0], [5.0, 8.0], VIEW, 0.0),
             pixels(2, 6, 6, 9)
         );
         // Cut by the viewport.
         assert_eq!(
-            PixelBox::of_ink([-4.0, 90.5], [2.5, 130.0], VIEW, 0.0),
+            pixels_of_ink([-4.0, 90.5], [2.5, 130.0], VIEW, 0.0),
             pixels(0, 90, 3, 100)
         );
         // In perspective: a pixel more each side.
         assert_eq!(
-            PixelBox::of_ink([3.2, 7.5], [4.7, 7.6], VIEW, 1.0),
+            pixels_of_ink([3.2, 7.5], [4.7, 7.6], VIEW, 1.0),
             pixels(2, 6, 6, 9)
         );
     }
@@ -263,7 +250,7 @@ mod tests {
     fn a_crowded_cell_sends_later_boxes_to_the_pages() {
         // Disjoint boxes of one pixel, each its own run, fill the first cell past its
         // limit: those in before it are direct.
-        let mut boxes: Vec<PixelBox> = (0..=CELL_LIMIT as i32)
+        let mut boxes: Vec<PixelRect> = (0..=CELL_LIMIT as u32)
             .map(|k| pixels(k % 30, k / 30 * 2, k % 30 + 1, k / 30 * 2 + 1))
             .collect();
         let mut keys: Vec<GlyphKey> = (0..boxes.len() as u32).map(|r| key(r, 0)).collect();
@@ -288,7 +275,7 @@ mod tests {
         // One run fills the cell with disjoint boxes, its last one in a corner; its
         // next box arrives at the full cell and meets that last one: both paged (their
         // coverages are summed), the others direct.
-        let mut boxes: Vec<PixelBox> = (0..CELL_LIMIT as i32)
+        let mut boxes: Vec<PixelRect> = (0..CELL_LIMIT as u32)
             .map(|k| pixels(k % 16, k / 16 * 2, k % 16 + 1, k / 16 * 2 + 1))
             .collect();
         boxes.push(pixels(20, 20, 24, 24));
