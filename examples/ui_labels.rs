@@ -34,8 +34,9 @@ const SCROLL: f32 = 0.37;
 trait Labels {
     fn frame(&mut self, encoder: &mut wgpu::CommandEncoder, view: &wgpu::TextureView, scroll: f32);
     fn held_bytes(&self) -> Option<u64>;
-    /// The library's glyphs drawn straight into the target in the last frame.
-    fn direct_glyphs(&self) -> Option<usize>;
+    /// The library's glyphs in the last frame: all of them, and those drawn straight
+    /// into the target.
+    fn glyphs(&self) -> Option<(usize, usize)>;
 }
 
 struct Library {
@@ -70,8 +71,8 @@ impl Labels for Library {
         Some(self.text.held().total())
     }
 
-    fn direct_glyphs(&self) -> Option<usize> {
-        Some(self.text.direct_glyphs())
+    fn glyphs(&self) -> Option<(usize, usize)> {
+        Some((self.text.drawn_glyphs(), self.text.direct_glyphs()))
     }
 }
 
@@ -180,7 +181,7 @@ impl Labels for Glyphon {
         None
     }
 
-    fn direct_glyphs(&self) -> Option<usize> {
+    fn glyphs(&self) -> Option<(usize, usize)> {
         None
     }
 }
@@ -320,14 +321,16 @@ fn main() {
     let held = drawing
         .held_bytes()
         .map_or("null".into(), |b| format!("{:.1}", b as f64 / 1e6));
-    let direct = drawing
-        .direct_glyphs()
-        .map_or("null".into(), |n| n.to_string());
+    let (glyphs, direct) = drawing
+        .glyphs()
+        .map_or(("null".into(), "null".into()), |(all, direct)| {
+            (all.to_string(), direct.to_string())
+        });
     println!(
         "{{\"renderer\": \"{renderer}\", \"labels\": {count}, \"still_ms\": {still:.2}, \
          \"moving_ms\": {moving:.2}, \"moving_cpu_ms\": {moving_cpu}, \
          \"resident_growth_mb\": {growth}, \"held_mb\": {held}, \
-         \"direct_glyphs\": {direct}, \"adapter\": \"{}\"}}",
+         \"glyphs\": {glyphs}, \"direct_glyphs\": {direct}, \"adapter\": \"{}\"}}",
         gpu.adapter_name()
     );
 }

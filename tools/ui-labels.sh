@@ -29,7 +29,7 @@ field() { sed -n "s/.*\"$1\": \([^,}]*\).*/\1/p" | tr -d '"'; }
 # The median of the numbers on standard input, one a line.
 median() { sort -g | awk '{v[NR] = $1} END {if (NR % 2) print v[(NR + 1) / 2]; else printf "%.2f\n", (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 # "median (least–most)" of the numbers on standard input.
-spread() { sort -g | awk '{v[NR] = $1} END {m = (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2; printf "%.2f (%.2f–%.2f)", m, v[1], v[NR]}'; }
+spread() { sort -g | awk '{v[NR] = $1} END {if (NR == 0) {printf "n/a"; exit} m = (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2; printf "%.2f (%.2f–%.2f)", m, v[1], v[NR]}'; }
 echo "| labels | library still ms | library moving ms | glyphon still ms | glyphon moving ms | still ÷ glyphon | moving ÷ glyphon | moving CPU ms, library / glyphon | moving CPU ÷ glyphon | library memory growth MB (held) | glyphon memory growth MB |"
 echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 last=""
@@ -63,7 +63,8 @@ for n in $labels; do
     col() { awk -v c="$1" '{print $c}' "$runs" | median; }
     still_ratio=$(awk '{printf "%.4f\n", $1 / $3}' "$runs" | spread)
     moving_ratio=$(awk '{printf "%.4f\n", $2 / $4}' "$runs" | spread)
-    cpu_ratio=$(awk '{printf "%.4f\n", $8 / $9}' "$runs" | spread)
+    # Where the CPU time is unknown (not Linux: "null"), no ratio rather than a division by 0.
+    cpu_ratio=$(awk '($9 + 0) > 0 {printf "%.4f\n", $8 / $9}' "$runs" | spread)
     echo "| $n | $(col 1) | $(col 2) | $(col 3) | $(col 4) | $still_ratio | $moving_ratio | $(col 8) / $(col 9) | $cpu_ratio | $(col 5) ($(col 6)) | $(col 7) |"
 done
 echo

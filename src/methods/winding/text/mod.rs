@@ -828,6 +828,16 @@ impl TextRenderer {
         }
     }
 
+    /// Glyphs the last [`prepare`](Self::prepare) that drew placed in the viewport: those
+    /// [`direct_glyphs`](Self::direct_glyphs) counts and those in the pages.
+    pub fn drawn_glyphs(&self) -> usize {
+        if self.drawn.valid {
+            self.drawn.instances + self.drawn.direct_instances
+        } else {
+            0
+        }
+    }
+
     /// What the renderer holds on the GPU now.
     pub fn held(&self) -> Held {
         Held {
