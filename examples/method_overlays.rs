@@ -20,6 +20,7 @@ use std::path::Path;
 use glam::DVec2;
 use glyphscope::bench::scenes::PAGE_TEXT;
 use glyphscope::camera::Camera;
+use glyphscope::coverage::Png as _;
 use glyphscope::geometry::{Contour, Outline};
 use glyphscope::gpu::GpuContext;
 use glyphscope::measure::{self, FrameTiming};

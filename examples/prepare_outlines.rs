@@ -5,7 +5,7 @@
 
 use std::time::Instant;
 
-use glyphscope::font::{Font, SHIPPED_FONTS};
+use glyphscope::font::SHIPPED_FONTS;
 use glyphscope::geometry::{DEFAULT_QUAD_TOLERANCE_EM, Segment};
 
 fn main() {
@@ -14,7 +14,7 @@ fn main() {
     );
     println!("|---|---:|---:|---:|---:|---:|---:|");
     for (index, (name, _, _)) in SHIPPED_FONTS.iter().enumerate() {
-        let font = Font::shipped(index);
+        let font = glyphscope::font::shipped(index);
         let tolerance = DEFAULT_QUAD_TOLERANCE_EM * font.units_per_em();
         // Best of a few runs: the first touches cold pages of the font data.
         let mut best = (f64::INFINITY, f64::INFINITY);

@@ -122,7 +122,7 @@ fn glyphs_report(gpu: &GpuContext) {
     let mut artifacts: BTreeMap<(usize, GlyphId), [(usize, usize); 3]> = BTreeMap::new();
     let mut overlap_rows = Vec::new();
     for (index, (name, _, _)) in SHIPPED_FONTS.iter().enumerate() {
-        let font = Font::shipped(index);
+        let font = glyphscope::font::shipped(index);
         let ids = glyphs(&font, TEXTS[index]);
         let tolerance = DEFAULT_QUAD_TOLERANCE_EM * font.units_per_em();
         let overlapping: Vec<bool> = ids
@@ -164,7 +164,7 @@ fn glyphs_report(gpu: &GpuContext) {
     println!("|---|---|---:|---:|---:|");
     let mut clean_glyphs = Vec::new();
     for ((index, id), counts) in &artifacts {
-        let font = Font::shipped(*index);
+        let font = glyphscope::font::shipped(*index);
         let label = glyph_label(&font, *id, TEXTS[*index]);
         if counts.iter().all(|c| c.0 == 0) {
             clean_glyphs.push(format!("{} {label}", SHIPPED_FONTS[*index].0));
@@ -191,7 +191,7 @@ fn glyph_label(font: &Font, id: GlyphId, text: &str) -> String {
 }
 
 fn page_report(gpu: &GpuContext) {
-    let font = Font::default_font();
+    let font = glyphscope::font::default_font();
     let scene = Scene::from_text(&font, glyphscope::bench::scenes::PAGE_TEXT).unwrap();
     let camera = Camera::new(1920, 1080, 16.0, DVec2::new(24.0, 40.0));
     let expected = reference::rasterize(&scene, &camera).unwrap();
@@ -283,7 +283,7 @@ fn page_culprits(
     expected: &glyphscope::coverage::CoverageImage,
     text: &str,
 ) -> String {
-    let font = Font::default_font();
+    let font = glyphscope::font::default_font();
     let boxes: Vec<_> = scene
         .instances
         .iter()

@@ -10,7 +10,6 @@
 
 use glam::DVec2;
 use glyphscope::camera::Camera;
-use glyphscope::font::Font;
 use glyphscope::gpu::{Channels, CoverageTarget, GpuContext};
 use glyphscope::methods::frame::{render_frame, time_frames};
 use glyphscope::methods::{Method, registry};
@@ -44,7 +43,7 @@ struct Run {
 
 fn main() {
     let text = glyphscope::bench::scenes::PAGE_TEXT;
-    let scene = Scene::from_text(&Font::default_font(), text).unwrap();
+    let scene = Scene::from_text(&glyphscope::font::default_font(), text).unwrap();
     let camera = Camera::new(1920, 1080, 16.0, DVec2::new(24.0, 40.0));
     let gpu = GpuContext::new().unwrap();
     let target =

@@ -1,84 +1,26 @@
-//! Coverage images: one linear coverage value in [0, 1] per pixel, row-major, y down.
+//! Coverage images (`glyphscope_core::coverage`) and their 8-bit PNG files, which only
+//! the command line, the lab and the explorer write and read.
 
 use std::path::Path;
 
+pub use glyphscope_core::coverage::*;
+
 use crate::Error;
 
-/// The values of an image before any clamp (see [`CoverageImage::range`]).
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
-pub struct ValueRange {
-    /// Smallest and largest finite value (∞ and −∞ when there is none).
-    pub min: f64,
-    pub max: f64,
-    /// NaN and infinite values.
-    pub non_finite: usize,
+/// A coverage image as an 8-bit grayscale PNG: linear (255 = covered), no gamma.
+pub trait Png: Sized {
+    /// 8-bit grayscale, each value clamped to [0, 1] and rounded.
+    fn to_gray8(&self) -> image::GrayImage;
+    /// The coverage an 8-bit grayscale image holds.
+    fn from_gray8(img: &image::GrayImage) -> Self;
+    /// Writes [`Png::to_gray8`] to `path`.
+    fn save_png(&self, path: &Path) -> Result<(), Error>;
+    /// Reads a PNG (any colour type, taken as luma).
+    fn load_png(path: &Path) -> Result<Self, Error>;
 }
 
-impl ValueRange {
-    /// Whether every value is finite and within [lo, hi].
-    pub fn within(&self, lo: f64, hi: f64) -> bool {
-        self.non_finite == 0 && (self.min >= lo || self.min.is_infinite()) && self.max <= hi
-    }
-}
-
-#[derive(Clone, Debug, PartialEq)]
-pub struct CoverageImage {
-    pub width: u32,
-    pub height: u32,
-    pub data: Vec<f32>,
-}
-
-impl CoverageImage {
-    pub fn new(width: u32, height: u32) -> Self {
-        CoverageImage {
-            width,
-            height,
-            data: vec![0.0; width as usize * height as usize],
-        }
-    }
-
-    pub fn get(&self, x: u32, y: u32) -> f32 {
-        self.data[y as usize * self.width as usize + x as usize]
-    }
-
-    /// Total covered area in pixels.
-    pub fn sum(&self) -> f64 {
-        self.data.iter().map(|&v| f64::from(v)).sum()
-    }
-
-    /// What the values are before anything is clamped: the smallest and largest finite
-    /// value, and how many are not finite.
-    pub fn range(&self) -> ValueRange {
-        let mut range = ValueRange {
-            min: f64::INFINITY,
-            max: f64::NEG_INFINITY,
-            non_finite: 0,
-        };
-        for &v in &self.data {
-            if v.is_finite() {
-                range.min = range.min.min(f64::from(v));
-                range.max = range.max.max(f64::from(v));
-            } else {
-                range.non_finite += 1;
-            }
-        }
-        range
-    }
-
-    /// Takes coverage above 1 down to 1: where a method adds overlapping instances'
-    /// coverage up, their union is at most 1. Nothing else is touched — a negative or
-    /// non-finite value stays, for the metrics to count as the artifact it is.
-    pub fn clamp_to_union(mut self) -> Self {
-        for v in &mut self.data {
-            if *v > 1.0 {
-                *v = 1.0;
-            }
-        }
-        self
-    }
-
-    /// 8-bit grayscale, linear (255 = covered), no gamma.
-    pub fn to_gray8(&self) -> image::GrayImage {
+impl Png for CoverageImage {
+    fn to_gray8(&self) -> image::GrayImage {
         let pixels = self
             .data
             .iter()
@@ -87,7 +29,7 @@ impl CoverageImage {
         image::GrayImage::from_raw(self.width, self.height, pixels).expect("size matches")
     }
 
-    pub fn from_gray8(img: &image::GrayImage) -> Self {
+    fn from_gray8(img: &image::GrayImage) -> Self {
         CoverageImage {
             width: img.width(),
             height: img.height(),
@@ -95,15 +37,25 @@ impl CoverageImage {
         }
     }
 
-    pub fn save_png(&self, path: &Path) -> Result<(), Error> {
+    fn save_png(&self, path: &Path) -> Result<(), Error> {
         self.to_gray8()
             .save(path)
             .map_err(|e| Error::Output(format!("cannot write '{}': {e}", path.display())))
     }
 
-    pub fn load_png(path: &Path) -> Result<Self, Error> {
+    fn load_png(path: &Path) -> Result<Self, Error> {
         let img = image::open(path)
             .map_err(|e| Error::Input(format!("cannot read image '{}': {e}", path.display())))?;
         Ok(Self::from_gray8(&img.to_luma8()))
     }
+}
+
+/// The overlay picture of a [`Channels::Picture`](crate::gpu::Channels::Picture)
+/// target ([`CoverageTarget::readback_rgb8`](crate::gpu::CoverageTarget::readback_rgb8)) as an RGB image.
+pub fn read_overlay(
+    gpu: &crate::gpu::GpuContext,
+    target: &crate::gpu::CoverageTarget,
+) -> Result<image::RgbImage, Error> {
+    let rgb = target.readback_rgb8(gpu)?;
+    Ok(image::RgbImage::from_raw(target.width, target.height, rgb).expect("size matches"))
 }

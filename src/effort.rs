@@ -6,6 +6,9 @@
 /// How much a run measures.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Effort {
+    /// The flag that picks this effort as a report's command line writes it: `""` or
+    /// `" --quick"`.
+    pub flag: &'static str,
     /// The stability sweep's sub-pixel offsets (x, y), in pixels, each seen at every
     /// rotation of [`Effort::sweep_rotations_deg`].
     pub sweep_offsets: &'static [(f64, f64)],
@@ -18,6 +21,10 @@ pub struct Effort {
     pub sweep_reruns_worst_cameras: bool,
     /// Frames each hard case drifts through in the stability run's motion stage.
     pub stability_motion_frames: usize,
+    /// `bench`: every bench setting of each method's row, and after caching each
+    /// method's default; or only the settings its row marks for `--quick`, and after
+    /// caching only the peers' and the contrast's (`bench::method_settings`).
+    pub bench_every_setting: bool,
     /// `bench`: rounds that interleave a view's cases, each preparing the method anew
     /// (`bench::result::Rounds`).
     pub bench_rounds: usize,
@@ -44,6 +51,7 @@ impl Effort {
     /// 45° and 89.9° (and every 30° for a full turn), whose grid is where every listed
     /// worst camera was found.
     pub const FULL: Effort = Effort {
+        flag: "",
         sweep_offsets: &[
             (0.0, 0.0),
             (0.25, 0.0),
@@ -66,6 +74,7 @@ impl Effort {
         sweep_full_turn_step_deg: 30.0,
         sweep_reruns_worst_cameras: false,
         stability_motion_frames: 16,
+        bench_every_setting: true,
         bench_rounds: 5,
         bench_frames_per_round: 7,
         bench_settle_cap_s: 30.0,
@@ -90,11 +99,13 @@ impl Effort {
     /// at 1.32×, 2.16× and 3.04× the atlas (a slow spell of a few seconds covering one
     /// case's frames).
     pub const QUICK: Effort = Effort {
+        flag: " --quick",
         sweep_offsets: &[(0.0, 0.0), (0.25, 0.5), (0.5, 0.75), (0.75, 0.25)],
         sweep_rotations_deg: &[0.0, 45.0],
         sweep_full_turn_step_deg: 90.0,
         sweep_reruns_worst_cameras: true,
         stability_motion_frames: 8,
+        bench_every_setting: false,
         bench_rounds: 3,
         bench_frames_per_round: 3,
         bench_settle_cap_s: 25.0,

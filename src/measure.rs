@@ -142,7 +142,7 @@ pub fn measure(
         stats.coverage_range = Some(raw.range());
         let image = raw.clamp_to_union();
         if overlay_drawn {
-            overlay = Some(target.readback_color(gpu)?);
+            overlay = Some(crate::coverage::read_overlay(gpu, &target)?);
         }
         stats.curves_per_pixel = method.curves_per_pixel(gpu, camera)?;
         let timed = time_frames(gpu, method.as_mut(), &target, camera, timing)?;

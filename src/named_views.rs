@@ -6,7 +6,7 @@
 use crate::Error;
 use crate::bench::scenes::{self, SCENE_NAMES};
 use crate::camera::Camera;
-use crate::font::{Font, SHIPPED_FONTS};
+use crate::font::SHIPPED_FONTS;
 use crate::scene::Scene;
 use crate::stability::hard_cases;
 
@@ -62,8 +62,8 @@ pub fn build(name: &str) -> Result<(Scene, Camera), Error> {
             SHIPPED_FONTS.iter().position(|(_, f, _)| file == *f)
         });
         let font = match shipped {
-            Some(index) if args.variation.is_empty() => Font::shipped(index),
-            Some(index) => Font::shipped(index).with_variations(&args.variation)?,
+            Some(index) if args.variation.is_empty() => crate::font::shipped(index),
+            Some(index) => crate::font::shipped(index).with_variations(&args.variation)?,
             None => args.font()?,
         };
         return args.build_with(font);

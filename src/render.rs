@@ -8,6 +8,7 @@ use web_time::Instant;
 
 use crate::Error;
 use crate::coverage::CoverageImage;
+use crate::coverage::Png as _;
 use crate::gpu::GpuContext;
 use crate::magnify::{self, Focus, Window};
 use crate::measure::{self, Measured, RENDER_TIMING, RenderStats};

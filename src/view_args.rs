@@ -182,7 +182,7 @@ impl ViewArgs {
 pub fn load_font(path: Option<&Path>, variation: &[(String, f32)]) -> Result<Font, Error> {
     let font = match path {
         Some(path) => Font::from_path(path)?,
-        None => Font::default_font(),
+        None => crate::font::default_font(),
     };
     if variation.is_empty() {
         Ok(font)

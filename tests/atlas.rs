@@ -7,7 +7,6 @@ mod common;
 use common::gpu;
 use glam::DVec2;
 use glyphscope::camera::Camera;
-use glyphscope::font::Font;
 use glyphscope::methods::atlas::{self, AUTO_CACHE_MAX_PX_PER_EM, Atlas};
 use glyphscope::methods::frame::render_image;
 use glyphscope::methods::{Method, registry};
@@ -45,7 +44,8 @@ fn error_of(name: &str, list: &[(&str, &str)], scene: &Scene, camera: &Camera) -
 /// Every glyph of "Hamburgefonstiv&@gQ§8" in a row, each pen `offset` pixels past a
 /// whole pixel at `SIZE` px/em (DejaVu Sans: 2048 units per em, 128 units a pixel).
 fn row(offset: DVec2) -> (Scene, Camera) {
-    let mut scene = Scene::from_text(&Font::default_font(), "Hamburgefonstiv&@gQ§8").unwrap();
+    let mut scene =
+        Scene::from_text(&glyphscope::font::default_font(), "Hamburgefonstiv&@gQ§8").unwrap();
     let units_per_px = scene.units_per_em / SIZE;
     for (i, instance) in scene.instances.iter_mut().enumerate() {
         let pen = DVec2::new(14.0 * i as f64, 0.0) + offset * DVec2::new(1.0, -1.0);
@@ -235,7 +235,7 @@ fn auto_caches_at_the_first_frame_size_up_to_a_limit() {
     assert_eq!(atlas.cached_px_per_em(), Some(SIZE));
 
     let mut huge = atlas_with(&[]);
-    let one = Scene::from_text(&Font::default_font(), "l").unwrap();
+    let one = Scene::from_text(&glyphscope::font::default_font(), "l").unwrap();
     huge.prepare(gpu(), &one).unwrap();
     let far_in = Camera::new(64, 64, 20_000.0, DVec2::new(-100.0, 20_000.0));
     render_image(gpu(), &mut huge, &far_in).unwrap();
@@ -267,7 +267,7 @@ fn bad_parameters_are_rejected() {
 /// ~170 M texels, past a 16384² texture (268 M) already with two glyphs' worth.
 #[test]
 fn a_cache_too_large_for_one_texture_is_refused_before_rasterizing() {
-    let font = Font::default_font();
+    let font = glyphscope::font::default_font();
     let scene = Scene::from_text(&font, "ABCDEFGHIJKLMNOPQRSTabcdefghijklmnopqrst").unwrap();
     let mut atlas = atlas_with(&[("cache_px_per_em", "4096")]);
     // A cache size given is built by `prepare`.

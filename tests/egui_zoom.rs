@@ -20,7 +20,6 @@ use egui_kittest::wgpu::WgpuTestRenderer;
 use glam::DVec2;
 use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
-use glyphscope::font::Font;
 use glyphscope::metrics;
 use glyphscope::reference;
 use glyphscope::scene::Scene;
@@ -82,7 +81,7 @@ fn coverage_at(centre: egui::Pos2) -> (CoverageImage, glam::Mat3) {
 /// The reference of the first label at 20× with its baseline's start at `origin`
 /// (screen pixels), on a frame of `image`'s size.
 fn reference_at(image: &CoverageImage, origin: DVec2) -> CoverageImage {
-    let font = Font::default_font();
+    let font = glyphscope::font::default_font();
     let scene = Scene::from_text(&font, zoom::LABELS[0]).unwrap();
     let size = f64::from(zoom::SIZE * ZOOM);
     reference::rasterize(

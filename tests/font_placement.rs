@@ -180,7 +180,7 @@ fn moved_from_before(font: &Font, glyph: u16) -> Option<(f64, f64)> {
 fn on_the_shipped_fonts_only_glyphs_no_shipped_scene_draws_move() {
     use glyphscope::font::SHIPPED_FONTS;
     for (index, (_, file, _)) in SHIPPED_FONTS.iter().enumerate() {
-        let font = Font::shipped(index);
+        let font = glyphscope::font::shipped(index);
         let moved: Vec<_> = (0..font.glyph_count())
             .filter_map(|g| moved_from_before(&font, g).map(|m| (g, m)))
             .collect();
@@ -214,7 +214,7 @@ fn on_the_shipped_fonts_only_glyphs_no_shipped_scene_draws_move() {
     // One of those, as FreeType 2.13 reports it: Inter's 'ť' at wght 900 advances by its
     // USE_MY_METRICS component 't' (1140), where HarfBuzz takes the composite's own
     // HVAR advance (1310).
-    let inter = Font::shipped(2)
+    let inter = glyphscope::font::shipped(2)
         .with_variations(&[("wght".into(), 900.0)])
         .unwrap();
     assert_eq!(inter.advance(inter.glyph_for_char('ť').unwrap()), 1140.0);

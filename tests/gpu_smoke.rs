@@ -246,7 +246,7 @@ fn a_device_opened_elsewhere_renders_the_same() {
 #[test]
 fn a_coverage_only_target_holds_the_picture_targets_coverage_bit_for_bit() {
     let gpu = gpu();
-    let scene = Scene::from_text(&glyphscope::font::Font::shipped(0), "Hamburg ffi").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::shipped(0), "Hamburg ffi").unwrap();
     let camera = Camera::new(140, 30, 18.0, DVec2::new(2.3, 22.6));
     let mut checked = 0;
     for info in registry::METHODS

@@ -505,7 +505,7 @@ fn a_loop(edges: &[FolderEdge]) -> Option<Vec<FolderEdge>> {
 /// Each folder's loops, one line each: `bench: run → motion → run (…)`. The loops are
 /// found one at a time: each found loop's last edge is set aside so the next walk can
 /// find another.
-fn folder_loops(edges: Vec<(Vec<String>, FolderEdge)>) -> Vec<String> {
+fn folder_loops(src: &str, edges: Vec<(Vec<String>, FolderEdge)>) -> Vec<String> {
     let mut folders: std::collections::BTreeMap<Vec<String>, Vec<FolderEdge>> = Default::default();
     for (folder, edge) in edges {
         folders.entry(folder).or_default().push(edge);
@@ -520,10 +520,10 @@ fn folder_loops(edges: Vec<(Vec<String>, FolderEdge)>) -> Vec<String> {
                 .collect();
             let evidence: Vec<String> = cycle
                 .iter()
-                .map(|e| format!("src/{}.rs uses crate::{}", e.file, e.used))
+                .map(|e| format!("{src}/{}.rs uses crate::{}", e.file, e.used))
                 .collect();
             found.push(format!(
-                "{}/: {} ({})",
+                "{src}/{}/: {} ({})",
                 folder.join("/"),
                 names.join(" → "),
                 evidence.join("; ")
@@ -537,26 +537,36 @@ fn folder_loops(edges: Vec<(Vec<String>, FolderEdge)>) -> Vec<String> {
 
 /// No two files of one folder import each other, directly or around a loop, so each
 /// can be read and changed alone: a folder's files point one way, with `mod.rs` (which
-/// declares the others) one of them.
+/// declares the others) one of them. In every crate of the workspace: this package's
+/// `src/` and each `crates/*/src/` (between crates, cargo forbids a loop itself).
 #[test]
 fn no_files_of_one_folder_import_each_other_around_a_loop() {
-    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
-    let mut paths = Vec::new();
-    rust_files(&src, &mut paths);
-    let files: Vec<(Vec<String>, String)> = paths
-        .iter()
-        .map(|file| {
-            (
-                module_path(file.strip_prefix(&src).unwrap()),
-                std::fs::read_to_string(file).unwrap(),
-            )
-        })
-        .collect();
-    let is_entry = |folder: &[String], name: &str| {
-        let dir = folder.iter().fold(src.clone(), |dir, part| dir.join(part));
-        dir.join(format!("{name}.rs")).is_file() || dir.join(name).is_dir()
-    };
-    let loops = folder_loops(folder_edges(&files, is_entry));
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut sources = vec![root.join("src")];
+    for entry in std::fs::read_dir(root.join("crates")).unwrap() {
+        sources.push(entry.unwrap().path().join("src"));
+    }
+    assert!(sources.len() >= 4, "{sources:?}");
+    let mut loops = Vec::new();
+    for src in sources {
+        let mut paths = Vec::new();
+        rust_files(&src, &mut paths);
+        let files: Vec<(Vec<String>, String)> = paths
+            .iter()
+            .map(|file| {
+                (
+                    module_path(file.strip_prefix(&src).unwrap()),
+                    std::fs::read_to_string(file).unwrap(),
+                )
+            })
+            .collect();
+        let is_entry = |folder: &[String], name: &str| {
+            let dir = folder.iter().fold(src.clone(), |dir, part| dir.join(part));
+            dir.join(format!("{name}.rs")).is_file() || dir.join(name).is_dir()
+        };
+        let name = src.strip_prefix(root).unwrap().display().to_string();
+        loops.extend(folder_loops(&name, folder_edges(&files, is_entry)));
+    }
     assert!(
         loops.is_empty(),
         "files of one folder that import each other around a loop:\n{}",
@@ -604,12 +614,12 @@ fn the_folder_check_catches_what_it_is_for() {
             "use crate::methods::registry::Role;",
         ),
     ];
-    let loops = folder_loops(folder_edges(&looped, is_entry));
+    let loops = folder_loops("src", folder_edges(&looped, is_entry));
     assert_eq!(loops.len(), 3, "{loops:#?}");
     assert!(
         loops
             .iter()
-            .any(|l| l.starts_with("bench/: mod → run → mod")),
+            .any(|l| l.starts_with("src/bench/: mod → run → mod")),
         "{loops:#?}"
     );
     assert!(
@@ -621,7 +631,7 @@ fn the_folder_check_catches_what_it_is_for() {
     assert!(
         loops
             .iter()
-            .any(|l| l.starts_with("methods/: registry → winding → registry")),
+            .any(|l| l.starts_with("src/methods/: registry → winding → registry")),
         "{loops:#?}"
     );
     let one_way = [
@@ -646,7 +656,7 @@ fn the_folder_check_catches_what_it_is_for() {
         ),
     ];
     assert_eq!(
-        folder_loops(folder_edges(&one_way, is_entry)),
+        folder_loops("src", folder_edges(&one_way, is_entry)),
         Vec::<String>::new()
     );
 }

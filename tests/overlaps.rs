@@ -135,7 +135,7 @@ fn check_font(font: &Font, label: &str) -> (u32, u32) {
 
 #[test]
 fn merging_inter_changes_no_pixel_at_either_weight() {
-    let inter = Font::shipped(2);
+    let inter = glyphscope::font::shipped(2);
     for weight in [400.0, 900.0] {
         let font = inter.with_variations(&[("wght".into(), weight)]).unwrap();
         let (merged, glyphs) = check_font(&font, &format!("Inter wght {weight}"));
@@ -148,7 +148,7 @@ fn merging_inter_changes_no_pixel_at_either_weight() {
 
 #[test]
 fn merging_lohit_bengali_changes_no_pixel() {
-    let (merged, _) = check_font(&Font::shipped(3), "Lohit Bengali");
+    let (merged, _) = check_font(&glyphscope::font::shipped(3), "Lohit Bengali");
     assert!(merged > 0, "no conjunct of Lohit overlaps");
 }
 

@@ -9,7 +9,6 @@ use std::time::Instant;
 use glam::DVec2;
 use glyphscope::Error;
 use glyphscope::camera::Camera;
-use glyphscope::font::Font;
 use glyphscope::gpu::{Channels, CoverageTarget};
 use glyphscope::measure::{self, FrameTiming};
 use glyphscope::methods::{frame, peers, registry};
@@ -160,7 +159,7 @@ fn peers_refuse_what_their_apis_cannot_draw() {
         (0.0, 100.0),
     ]]));
     assert!(refused(peers::glyphon::NAME, &synthetic, &upright).contains("no font"));
-    let one_glyph = Scene::from_glyph_id(&Font::default_font(), 36).unwrap();
+    let one_glyph = Scene::from_glyph_id(&glyphscope::font::default_font(), 36).unwrap();
     assert!(refused(peers::glyphon::NAME, &one_glyph, &upright).contains("id"));
     // The shipped variable font has a weight axis only: the rule is checked on the
     // variations themselves.
@@ -168,7 +167,7 @@ fn peers_refuse_what_their_apis_cannot_draw() {
         .iter()
         .position(|f| f.1 == "Inter-roman.var.ttf")
         .expect("Inter is shipped");
-    let axes = Font::shipped(inter).axes();
+    let axes = glyphscope::font::shipped(inter).axes();
     let weight = |variations: &[(&str, f32)]| {
         let variations: Vec<(String, f32)> =
             variations.iter().map(|&(t, v)| (t.to_owned(), v)).collect();

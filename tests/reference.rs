@@ -8,7 +8,7 @@ use common::*;
 use glam::{DMat3, DVec2};
 use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
-use glyphscope::font::{Font, SHIPPED_FONTS};
+use glyphscope::font::SHIPPED_FONTS;
 use glyphscope::geometry::{Outline, project};
 use glyphscope::metrics::compare;
 use glyphscope::reference::{rasterize, rasterize_with_tolerance};
@@ -274,7 +274,7 @@ fn converges_with_supersampling_on_real_glyphs() {
         (2, "Bé4"),
         (3, "\u{0995}\u{09CD}\u{09B7}"),
     ] {
-        let font = Font::shipped(font_index);
+        let font = glyphscope::font::shipped(font_index);
         let scene = Scene::from_text(&font, text).unwrap();
         for (k, size) in [6.0, 17.0, 48.0, 130.0].into_iter().enumerate() {
             let matrix = matrices[k % matrices.len()];
@@ -311,7 +311,7 @@ fn converges_with_supersampling_on_real_glyphs() {
 #[test]
 fn flattening_error_is_below_a_1024th() {
     // Tightening the tolerance 16x barely moves anything: the default is converged.
-    let scene = Scene::from_text(&Font::shipped(1), "Sog").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::shipped(1), "Sog").unwrap();
     for size in [3.0, 40.0, 700.0] {
         let cam = framed(&scene, size, [1.0, 0.2, -0.1, 1.0], DVec2::new(0.3, 0.8));
         let fine = rasterize_with_tolerance(&scene, &cam, 1.0 / 262144.0).unwrap();
@@ -323,7 +323,7 @@ fn flattening_error_is_below_a_1024th() {
 
 #[test]
 fn world_offset_changes_nothing() {
-    let scene = Scene::from_text(&Font::default_font(), "Ag").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::default_font(), "Ag").unwrap();
     let mut cam = framed(&scene, 37.0, [0.9, 0.3, -0.2, 1.1], DVec2::new(0.25, 0.5));
     let near = rasterize(&scene, &cam).unwrap();
     for offset in [1.0e5, 1.0e6] {
@@ -335,7 +335,7 @@ fn world_offset_changes_nothing() {
 
 #[test]
 fn perspective_tilt_matches_supersampling() {
-    let scene = Scene::from_text(&Font::default_font(), "Tilt").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::default_font(), "Tilt").unwrap();
     let mut cam = framed(&scene, 40.0, [1.0, 0.0, 0.0, 1.0], DVec2::ZERO);
     cam.tilt_deg = 35.0;
     let got = rasterize(&scene, &cam).unwrap();
@@ -349,8 +349,11 @@ fn view_on_the_edge_of_a_huge_glyph() {
     // are flattened; those left of it become chords. Compare with supersampling of the
     // same view.
     let scene = Scene::from_glyph_id(
-        &Font::default_font(),
-        Font::default_font().glyph_for_char('o').unwrap().into(),
+        &glyphscope::font::default_font(),
+        glyphscope::font::default_font()
+            .glyph_for_char('o')
+            .unwrap()
+            .into(),
     )
     .unwrap();
     let mut cam = Camera::new(64, 64, 20_000.0, DVec2::ZERO);
@@ -426,7 +429,10 @@ fn swept_area_x2(points: &[DVec2]) -> f64 {
 fn covered_area_is_the_exact_outline_area() {
     use glyphscope::geometry::Segment;
     use glyphscope::reference::DEFAULT_TOLERANCE_PX;
-    for (font, text) in [(Font::default_font(), "g&@S"), (Font::shipped(1), "Qa§g")] {
+    for (font, text) in [
+        (glyphscope::font::default_font(), "g&@S"),
+        (glyphscope::font::shipped(1), "Qa§g"),
+    ] {
         let scene = Scene::from_text(&font, text).unwrap();
         let size = 40.0;
         let camera = Camera::new(220, 80, size, DVec2::new(10.0, 60.0));

@@ -52,7 +52,7 @@ fn prepare_every_glyph(mode: &str) {
     let settings = Settings::from_params(&params(&[("mode", mode)]));
     let (mut past_slots, mut with_escapes, mut total) = (0, 0, 0);
     for (index, (name, _, _)) in SHIPPED_FONTS.iter().enumerate() {
-        let font = Font::shipped(index);
+        let font = glyphscope::font::shipped(index);
         assert_eq!(font.glyph_count(), GLYPH_COUNTS[index], "{name}");
         let (mut prepared, mut blank, mut cells, mut escaped) = (0, 0, 0, 0);
         for id in 0..font.glyph_count() {
@@ -161,7 +161,7 @@ fn exact_mode_is_within_half_a_pixel_of_the_reference() {
     let mut exact = Renderer::new(&[("mode", "exact")]);
     let mut checked = 0;
     for (index, text) in SAMPLES {
-        let font = Font::shipped(index);
+        let font = glyphscope::font::shipped(index);
         for glyph in Scene::from_text(&font, text).unwrap().glyphs {
             let overlaps = reference::overlapping_contours(&quadratic_outline(&font, glyph.id));
             let scene = Scene::from_glyph_id(&font, u32::from(glyph.id)).unwrap();
@@ -192,7 +192,7 @@ fn exact_mode_is_within_half_a_pixel_of_the_reference() {
 #[test]
 fn the_standard_page_exact_clean_estimate_with_its_measured_artifacts() {
     let text = glyphscope::bench::scenes::PAGE_TEXT;
-    let scene = Scene::from_text(&Font::default_font(), text).unwrap();
+    let scene = Scene::from_text(&glyphscope::font::default_font(), text).unwrap();
     let camera = Camera::new(1920, 1080, 16.0, DVec2::new(24.0, 40.0));
     let expected = reference::rasterize(&scene, &camera).unwrap();
     let estimate = compare(
@@ -218,7 +218,7 @@ fn the_standard_page_exact_clean_estimate_with_its_measured_artifacts() {
 fn glyphs_past_font_demos_limits_render_with_every_encoding() {
     // DejaVu glyphs past the 256 slots (512 points) of kocsis1david's font-demo: found,
     // not assumed.
-    let font = Font::default_font();
+    let font = glyphscope::font::default_font();
     let big: Vec<GlyphId> = (0..font.glyph_count())
         .filter(|&id| CurveLayout::new(&quadratic_outline(&font, id)).slots() > 256)
         .take(2)
@@ -373,7 +373,7 @@ fn purple_marks_font_demos_tie_regions_and_nothing_else() {
 
 #[test]
 fn purple_marks_the_tie_regions_of_a_real_glyph() {
-    let font = Font::default_font();
+    let font = glyphscope::font::default_font();
     let scene = Scene::from_glyph_id(&font, u32::from(font.glyph_for_char('a').unwrap())).unwrap();
     // About 10 font units per pixel, turned so nothing lines up with the pixels.
     let camera = framed(
@@ -396,7 +396,7 @@ fn for_each_pixel(
     pairs: &[(&str, &str)],
     mut check: impl FnMut(&PreparedGlyph, DVec2, f32, &image::Rgb<u8>),
 ) -> (CurveCost, Camera) {
-    let font = Font::default_font();
+    let font = glyphscope::font::default_font();
     let scene = Scene::from_glyph_id(&font, u32::from(font.glyph_for_char(c).unwrap())).unwrap();
     let camera = framed(&scene, 150.0, [1.0, 0.0, 0.0, 1.0], DVec2::new(0.25, 0.5));
     let (coverage, picture, mut method) = render(&scene, &camera, pairs);
@@ -598,7 +598,7 @@ fn straight_edges_get_the_exact_box_filter_under_any_transform() {
 
 #[test]
 fn a_far_world_offset_changes_nothing() {
-    let font = Font::shipped(1);
+    let font = glyphscope::font::shipped(1);
     let scene = Scene::from_text(&font, "Sg").unwrap();
     let near = framed(&scene, 37.0, [0.9, 0.3, -0.2, 1.1], DVec2::new(0.25, 0.5));
     let far = Camera {
@@ -716,7 +716,7 @@ fn winding(polylines: &[Vec<DVec2>], p: DVec2) -> i32 {
 
 #[test]
 fn overlapping_contours_crack_only_along_the_curves_inside_the_fill() {
-    let font = Font::shipped(2);
+    let font = glyphscope::font::shipped(2);
     // As the font draws them; the default merges them first (checked at the end).
     let mut exact = Renderer::new(&[("mode", "exact"), ("overlaps", "keep")]);
     let mut merged = Renderer::new(&[("mode", "exact")]);

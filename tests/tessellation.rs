@@ -11,7 +11,7 @@ use common::*;
 use glam::DVec2;
 use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
-use glyphscope::font::{Font, SHIPPED_FONTS};
+use glyphscope::font::SHIPPED_FONTS;
 use glyphscope::geometry::{Contour, Outline, Segment, project};
 use glyphscope::gpu::{Channels, CoverageTarget};
 use glyphscope::methods::frame::render_frame;
@@ -118,7 +118,7 @@ fn reproduces_glyphs_table_on_its_own_g() {
 
 #[test]
 fn dejavu_g_trade_off_is_monotone() {
-    let font = Font::default_font();
+    let font = glyphscope::font::default_font();
     let outline = font.outline(font.glyph_for_char('g').unwrap());
     let g = TaggedContour::from_outline(&outline);
     let height = font.units_per_em() / subdivision::GLYPH_TABLE_EM_PER_HEIGHT;
@@ -171,7 +171,7 @@ fn same_cycle(a: &[Segment], b: &[Segment]) -> bool {
 fn the_tag_state_machine_rebuilds_every_outline() {
     let (mut virtual_points, mut glyphs) = (0, 0);
     for (index, (name, _, _)) in SHIPPED_FONTS.iter().enumerate() {
-        let font = Font::shipped(index);
+        let font = glyphscope::font::shipped(index);
         for id in 0..font.glyph_count() {
             for contour in &font.outline(id).contours {
                 let tagged = TaggedContour::from_contour(contour);
@@ -203,7 +203,7 @@ fn lyon_triangles_cover_the_nonzero_area_of_every_glyph() {
     // exactly, so its covered area is the nonzero area the triangles must have.
     let mut checked = 0;
     for (index, (name, _, _)) in SHIPPED_FONTS.iter().enumerate() {
-        let font = Font::shipped(index);
+        let font = glyphscope::font::shipped(index);
         let height = font.units_per_em() / subdivision::GLYPH_TABLE_EM_PER_HEIGHT;
         let snap = (font.units_per_em() / f64::from(1 << 21)) as f32;
         for id in 0..font.glyph_count() {
@@ -328,7 +328,7 @@ fn screen_space_mode_is_within_half_a_pixel_from_8_to_20000_px_per_em() {
     eprintln!("| font | px/em | mode | msaa | MAE /255 | max | pixels > 0.5 |");
     let mut facets_at_20000 = 0;
     for (font_index, text) in TEXTS {
-        let font = Font::shipped(font_index);
+        let font = glyphscope::font::shipped(font_index);
         let scene = Scene::from_text(&font, text).unwrap();
         for (k, size) in SIZES.into_iter().enumerate() {
             let views: Vec<(Camera, CoverageImage)> = views(&scene, size, k)
@@ -392,7 +392,7 @@ fn a_page_of_repeated_glyphs_matches_the_reference() {
         .take(4)
         .collect::<Vec<_>>()
         .join("\n");
-    let scene = Scene::from_text(&Font::default_font(), &text).unwrap();
+    let scene = Scene::from_text(&glyphscope::font::default_font(), &text).unwrap();
     let mut camera = Camera::new(700, 90, 16.0, DVec2::new(-3.3, 20.6));
     camera.tilt_deg = 35.0;
     let expected = reference::rasterize(&scene, &camera).unwrap();
@@ -412,7 +412,7 @@ fn a_page_of_repeated_glyphs_matches_the_reference() {
 
 #[test]
 fn far_world_offset_changes_nothing() {
-    let scene = Scene::from_text(&Font::default_font(), "Sg").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::default_font(), "Sg").unwrap();
     let mut camera = Camera::new(64, 48, 30.0, DVec2::new(3.4, 36.2));
     camera.matrix = Camera::matrix_from_rows(0.9, -0.3, 0.4, 1.1);
     let near = coverage(&[], &scene, &camera);
@@ -460,7 +460,7 @@ fn overlaps_and_self_intersections_fill_by_the_nonzero_rule() {
 #[test]
 fn screen_space_meshes_are_rebuilt_only_across_scale_buckets() {
     let gpu = gpu();
-    let scene = Scene::from_text(&Font::default_font(), "agag").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::default_font(), "agag").unwrap();
     let mut method = tessellation(&[]);
     method.prepare(gpu, &scene).unwrap();
     assert_eq!(
@@ -504,7 +504,7 @@ fn screen_space_meshes_are_rebuilt_only_across_scale_buckets() {
 
 #[test]
 fn overlays_draw_over_unchanged_coverage() {
-    let scene = Scene::from_text(&Font::default_font(), "g").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::default_font(), "g").unwrap();
     let camera = Camera::new(90, 110, 100.0, DVec2::new(8.0, 78.0));
     let plain = coverage(&[("subdivision", "asa")], &scene, &camera);
     type Colour = fn(&[u8; 3]) -> bool;

@@ -203,8 +203,8 @@ fn renderer() -> TextRenderer {
 /// background as the reference's coverage composites: within the bound everywhere.
 #[test]
 fn text_over_a_background_is_the_reference_composited() {
-    let dejavu = Font::default_font();
-    let latin = Font::shipped(1);
+    let dejavu = glyphscope::font::default_font();
+    let latin = glyphscope::font::shipped(1);
     let mut text = renderer();
     let a = text
         .add_font(glyphscope::font::DEFAULT_FONT_BYTES.to_vec())
@@ -616,7 +616,7 @@ fn blank_runs_draw_nothing_and_are_no_error() {
 /// a frame that only recolours the labels draws the new colours.
 #[test]
 fn hundreds_of_labels_are_the_reference_composited_in_order() {
-    let font = Font::default_font();
+    let font = glyphscope::font::default_font();
     let mut text = renderer();
     let id = text
         .add_font(glyphscope::font::DEFAULT_FONT_BYTES.to_vec())
@@ -689,7 +689,7 @@ fn hundreds_of_labels_are_the_reference_composited_in_order() {
 /// of the encoding; the next uploads nothing.
 #[test]
 fn labels_in_motion_are_the_reference_drawn_straight_or_through_the_pages() {
-    let font = Font::default_font();
+    let font = glyphscope::font::default_font();
     let mut text = renderer();
     let id = text
         .add_font(glyphscope::font::DEFAULT_FONT_BYTES.to_vec())
@@ -745,7 +745,7 @@ fn labels_in_motion_are_the_reference_drawn_straight_or_through_the_pages() {
 /// same call fails: the next good frame draws them (it drew garbage or nothing once).
 #[test]
 fn glyphs_of_a_failed_prepare_are_uploaded_by_the_next() {
-    let font = Font::default_font();
+    let font = glyphscope::font::default_font();
     let mut text = renderer();
     let id = text
         .add_font(glyphscope::font::DEFAULT_FONT_BYTES.to_vec())
@@ -783,7 +783,7 @@ fn glyphs_of_a_failed_prepare_are_uploaded_by_the_next() {
 /// what is drawn after a compaction is still the reference.
 #[test]
 fn trimmed_every_frame_dynamic_text_holds_only_what_it_draws() {
-    let font = Font::default_font();
+    let font = glyphscope::font::default_font();
     let mut text = renderer();
     let id = text
         .add_font(glyphscope::font::DEFAULT_FONT_BYTES.to_vec())
@@ -864,7 +864,7 @@ fn trimmed_every_frame_dynamic_text_holds_only_what_it_draws() {
 /// reference of the labels where they are then.
 #[test]
 fn scrolled_labels_are_the_reference_where_they_end() {
-    let font = Font::default_font();
+    let font = glyphscope::font::default_font();
     let mut text = renderer();
     let id = text
         .add_font(glyphscope::font::DEFAULT_FONT_BYTES.to_vec())

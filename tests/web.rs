@@ -31,6 +31,7 @@ use base64::Engine;
 use explorer::{harness, settle};
 use glyphscope::app::settings::{PaneSource, Settings};
 use glyphscope::coverage::CoverageImage;
+use glyphscope::coverage::Png as _;
 use image::RgbaImage;
 use serde_json::{Value, json};
 

@@ -7,7 +7,7 @@ mod common;
 use common::*;
 use glam::DVec2;
 use glyphscope::camera::Camera;
-use glyphscope::font::{Font, SHIPPED_FONTS};
+use glyphscope::font::SHIPPED_FONTS;
 use glyphscope::gpu::GpuContext;
 use glyphscope::methods::{Method, frame, registry};
 use glyphscope::metrics::{ErrorStats, compare};
@@ -90,7 +90,7 @@ fn real_glyphs_stay_within_half_a_level_everywhere() {
     let mut worst: f64 = 0.0;
     println!("| font | px/em | transform | mean MAE /255 | max | pixels > 0.5 |");
     for (index, text) in SAMPLE_TEXT.iter().enumerate() {
-        let font = Font::shipped(index);
+        let font = glyphscope::font::shipped(index);
         for size in [8.0, 16.0, 48.0, 400.0] {
             // At 400 px/em two glyphs hold thousands of edge pixels at every phase.
             let text: String = text
@@ -171,7 +171,7 @@ fn a_ray_meeting_curves_along_itself_beside_a_vertex_does_not_outweigh_one_meeti
 #[test]
 fn far_from_the_origin_nothing_changes() {
     let gpu = gpu();
-    let scene = Scene::from_text(&Font::default_font(), "Rg").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::default_font(), "Rg").unwrap();
     let mut cam = framed(&scene, 37.0, [0.9, 0.3, -0.2, 1.1], DVec2::new(0.25, 0.5));
     let mut method = winding(&[]);
     let near = render(method.as_mut(), &scene, &cam);
@@ -186,7 +186,7 @@ fn far_from_the_origin_nothing_changes() {
 
 #[test]
 fn a_huge_glyph_viewed_on_its_edge() {
-    let font = Font::default_font();
+    let font = glyphscope::font::default_font();
     let scene = Scene::from_glyph_id(&font, font.glyph_for_char('o').unwrap().into()).unwrap();
     for (name, matrix) in transforms() {
         let mut cam = Camera::new(64, 64, 20_000.0, DVec2::ZERO);
@@ -211,7 +211,7 @@ fn a_huge_glyph_viewed_on_its_edge() {
 
 #[test]
 fn perspective_tilt() {
-    let scene = Scene::from_text(&Font::default_font(), "Tilted").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::default_font(), "Tilted").unwrap();
     let mut cam = framed(&scene, 60.0, [1.0, 0.0, 0.0, 1.0], DVec2::new(0.3, 0.6));
     cam.tilt_deg = 40.0;
     let s = assert_within_half("40° perspective tilt", &scene, &cam);
@@ -221,7 +221,7 @@ fn perspective_tilt() {
 #[test]
 fn bands_change_the_cost_not_the_image() {
     let gpu = gpu();
-    let scene = Scene::from_text(&Font::shipped(1), "Bands &g").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::shipped(1), "Bands &g").unwrap();
     let cam = framed(
         &scene,
         41.0,
@@ -250,7 +250,7 @@ fn bands_change_the_cost_not_the_image() {
 
 #[test]
 fn settings_trade_accuracy_for_cost() {
-    let scene = Scene::from_text(&Font::default_font(), "Hamburgefonstiv").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::default_font(), "Hamburgefonstiv").unwrap();
     let (s, c) = 12f64.to_radians().sin_cos();
     let cam = framed(&scene, 13.0, [c, -s, s, c], DVec2::new(0.37, 0.21));
     let one_ray = error(&[("rays", "1"), ("samples", "1")], &scene, &cam);
@@ -296,7 +296,7 @@ fn fill_rules_on_overlaps_and_self_intersections() {
 
 #[test]
 fn overlays_draw_classes_and_cost() {
-    let scene = Scene::from_text(&Font::default_font(), "Sg").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::default_font(), "Sg").unwrap();
     let cam = framed(&scene, 80.0, [1.0, 0.0, 0.0, 1.0], DVec2::new(0.5, 0.5));
     let picture = |params: &[(&str, &str)]| {
         let (coverage, picture) = render_with_picture(winding(params).as_mut(), &scene, &cam);

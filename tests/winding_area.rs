@@ -91,7 +91,7 @@ const TEXTS: [&str; 4] = [
 fn every_font_size_and_transform_is_exact_where_contours_do_not_overlap() {
     println!("| font | px/em | transform | glyphs | worst MAE /255 | max |");
     for (index, text) in TEXTS.iter().enumerate() {
-        let font = Font::shipped(index);
+        let font = glyphscope::font::shipped(index);
         let all = glyphs_of(&font, text, false);
         assert!(
             all.instances.len() >= 2,
@@ -139,7 +139,7 @@ fn every_font_size_and_transform_is_exact_where_contours_do_not_overlap() {
 /// 48 px/em, under every transform at four offsets, drawn by winding with `params`: each
 /// view named, with its error.
 fn overlapping_inter_views(params: &[(&str, &str)]) -> Vec<(String, ErrorStats)> {
-    let inter = Font::shipped(2);
+    let inter = glyphscope::font::shipped(2);
     let mut views = Vec::new();
     for weight in [400.0, 900.0] {
         let font = inter.with_variations(&[("wght".into(), weight)]).unwrap();
@@ -220,7 +220,7 @@ fn a_straight_edge_at_any_angle_and_phase() {
 /// a mirror: the shader's formulation is the one the CPU checks against closed forms.
 #[test]
 fn the_shader_is_its_cpu_mirror() {
-    let font = Font::shipped(1);
+    let font = glyphscope::font::shipped(1);
     let scene = Scene::from_text(&font, "Qg").unwrap();
     let glyph = &scene.glyphs[0];
     let tolerance = DEFAULT_QUAD_TOLERANCE_EM * scene.units_per_em;
@@ -264,7 +264,7 @@ fn the_shader_is_its_cpu_mirror() {
 /// that costs stays within the same bound.
 #[test]
 fn a_perspective_tilt_stays_within_the_bound() {
-    let scene = Scene::from_text(&Font::default_font(), "Tilted").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::default_font(), "Tilted").unwrap();
     for tilt in [20.0, 40.0] {
         let mut cam = framed(&scene, 60.0, [1.0, 0.0, 0.0, 1.0], DVec2::new(0.3, 0.6));
         cam.tilt_deg = tilt;
@@ -276,7 +276,7 @@ fn a_perspective_tilt_stays_within_the_bound() {
 
 #[test]
 fn bands_change_the_cost_not_the_image() {
-    let scene = Scene::from_text(&Font::shipped(1), "Bands &g").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::shipped(1), "Bands &g").unwrap();
     let cam = framed(
         &scene,
         41.0,
@@ -313,12 +313,12 @@ fn sub_pixels_only_where_overlapping_curves_cross() {
         let cost = method.curves_per_pixel(gpu(), &cam).unwrap().unwrap();
         (image, cost.mean)
     };
-    let plain = glyphs_of(&Font::default_font(), "gSe", false);
+    let plain = glyphs_of(&glyphscope::font::default_font(), "gSe", false);
     let (auto, auto_cost) = run(&plain, "auto");
     let (one, one_cost) = run(&plain, "1");
     assert_eq!(auto, one);
     assert_eq!(auto_cost, one_cost);
-    let inter = Font::shipped(2)
+    let inter = glyphscope::font::shipped(2)
         .with_variations(&[("wght".into(), 900.0)])
         .unwrap();
     let overlapping = glyphs_of(&inter, "ÖkonomieAB", true);
@@ -359,7 +359,7 @@ fn fill_rules_on_overlaps_and_self_intersections() {
 /// The class and cost overlays draw with aa=area too, and leave coverage alone.
 #[test]
 fn overlays_keep_working() {
-    let scene = Scene::from_text(&Font::default_font(), "Sg").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::default_font(), "Sg").unwrap();
     let cam = framed(&scene, 80.0, [1.0, 0.0, 0.0, 1.0], DVec2::new(0.5, 0.5));
     let plain = render(area_method(&[]).as_mut(), &scene, &cam);
     let picture = |params: &[(&str, &str)]| {
@@ -405,13 +405,13 @@ fn bad_settings_are_clear_errors() {
 /// The default is the integral; a ray count alone asks for rays.
 #[test]
 fn the_default_integrates_and_a_ray_count_casts_rays() {
-    use glyphscope::methods::winding::{self, Antialiasing, Settings};
+    use glyphscope::methods::winding::{self, Antialiasing};
     let settings = |params: &[(&str, &str)]| {
         let params: Vec<(String, String)> = params
             .iter()
             .map(|(k, v)| (k.to_string(), v.to_string()))
             .collect();
-        Settings::from_params(&winding::INFO.parse_params(&params).unwrap()).unwrap()
+        winding::settings_from_params(&winding::INFO.parse_params(&params).unwrap()).unwrap()
     };
     assert_eq!(settings(&[]).aa, Antialiasing::Area);
     assert_eq!(settings(&[("rays", "1")]).aa, Antialiasing::Rays);

@@ -16,7 +16,7 @@ use common::*;
 use glam::{DMat3, DVec2};
 use glyphscope::camera::Camera;
 use glyphscope::coverage::CoverageImage;
-use glyphscope::font::{Font, SHIPPED_FONTS};
+use glyphscope::font::SHIPPED_FONTS;
 use glyphscope::geometry::{Contour, Outline, Segment, project};
 use glyphscope::gpu::{Channels, CoverageTarget};
 use glyphscope::methods::frame::render_frame;
@@ -204,7 +204,7 @@ fn real_glyphs_sample_for_sample() {
         (2, "B\u{e9}4W", 27.0),
         (3, "\u{0995}\u{09CD}\u{09B7}", 35.0),
     ] {
-        let scene = Scene::from_text(&Font::shipped(font), text).unwrap();
+        let scene = Scene::from_text(&glyphscope::font::shipped(font), text).unwrap();
         let base = framed(&scene, size, UPRIGHT, DVec2::new(0.31, 0.57));
         for (name, camera) in cameras(base) {
             for (samples, passes) in [(1, 1), (4, 1), (1, 3), (4, 2)] {
@@ -222,7 +222,7 @@ fn real_glyphs_sample_for_sample() {
 #[test]
 fn even_odd_sample_for_sample() {
     // Inter's overlapping contours: where they overlap, even-odd leaves a hole.
-    let black = Font::shipped(2)
+    let black = glyphscope::font::shipped(2)
         .with_variations(&[("wght".to_string(), 900.0)])
         .unwrap();
     let scene = Scene::from_text(&black, "B\u{e9}4Wx").unwrap();
@@ -324,7 +324,7 @@ fn overlapping_instances_unite_under_even_odd() {
 /// Area error against the exact reference on real glyphs, straight at 13 px/em and
 /// rotated at 37: (mean in 1/255 over the framed image, max).
 fn reference_error(settings: Settings) -> (f64, f64) {
-    let scene = Scene::from_text(&Font::shipped(0), "Hamburgefonstiv @g").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::shipped(0), "Hamburgefonstiv @g").unwrap();
     let (mut mean, mut max) = (0.0, 0.0f64);
     let cases = [
         (13.0, [1.0, 0.0, 0.0, 1.0]),
@@ -390,7 +390,7 @@ fn default_settings_beat_skia_1x() {
 
 #[test]
 fn wireframe_overlay_draws_both_kinds_and_keeps_coverage() {
-    let scene = Scene::from_text(&Font::shipped(0), "g@").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::shipped(0), "g@").unwrap();
     let camera = framed(&scene, 60.0, UPRIGHT, DVec2::new(0.5, 0.25));
     let params = [("overlay".to_string(), "wireframe".to_string())];
     let mut method = registry::create("xor-stencil", &params).unwrap();
@@ -459,7 +459,7 @@ fn curve_evaluations_are_counted_per_sample_and_pass() {
 #[test]
 fn frames_start_clear_and_culled_scenes_draw_nothing() {
     let gpu = gpu();
-    let scene = Scene::from_text(&Font::shipped(0), "ab").unwrap();
+    let scene = Scene::from_text(&glyphscope::font::shipped(0), "ab").unwrap();
     let camera = framed(&scene, 20.0, UPRIGHT, DVec2::ZERO);
     let target = CoverageTarget::new(gpu, camera.width, camera.height, Channels::Coverage).unwrap();
     for fill in [FillRule::NonZero, FillRule::EvenOdd] {
@@ -524,7 +524,7 @@ fn extreme_zoom_on_the_edge_of_an_o() {
     // converted again as the zoom grows, so they stay within the conversion's 1/16 px
     // (at the default tolerance they would be 0.3 and 4.6 px off).
     for (font, near) in [(0, NEAR_EDGE_PX), (1, 1.0 / 16.0)] {
-        let font = Font::shipped(font);
+        let font = glyphscope::font::shipped(font);
         let id = font.glyph_for_char('o').unwrap();
         let scene = Scene::from_glyph_id(&font, id.into()).unwrap();
         for size in [20_000.0, 300_000.0] {
@@ -567,7 +567,7 @@ fn within_half_a_level_of_the_reference_with_four_or_more_samples() {
                 .chars()
                 .take(if size > 100.0 { 2 } else { 4 })
                 .collect();
-            let scene = Scene::from_text(&Font::shipped(font), &text).unwrap();
+            let scene = Scene::from_text(&glyphscope::font::shipped(font), &text).unwrap();
             let mut row = Vec::new();
             for (samples, passes) in ladder {
                 let mut method =

@@ -4,6 +4,7 @@
 # Two builds' folders compared with `diff -r` show whether a change moved any pixel or
 # figure (the check behind "behaviour unchanged" refactors).
 #   tools/render_snapshot.sh target/release/glyphscope DIR
+# Needs jq (apt install jq), to drop the timings from the statistics.
 set -euo pipefail
 # shellcheck source=tools/methods.sh
 . "$(dirname "$0")/methods.sh"
@@ -36,8 +37,12 @@ for method in $methods; do
             continue
         fi
         rm "$base.refused"
-        # Timings and the adapter vary from run to run; everything else must not.
-        grep -v '_ms\|"adapter"\|gpu_clock\|^ *[0-9.e-]*,\?$\|gpu_ms_range' "$base.json" >"$base.stats"
+        # Timings, how they were sampled and the adapter vary from run to run;
+        # everything else must not.
+        jq 'walk(if type == "object" then with_entries(select(.key
+            | test("_ms|^adapter$|^gpu_clock$|^frames_per_submission$|^warmup_frames$") | not))
+            else . end)' \
+            "$base.json" >"$base.stats"
         rm "$base.json"
         for overlay in $overlays; do
             "$bin" render "${args[@]}" --method "$method" --param "overlay=$overlay" \

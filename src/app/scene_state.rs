@@ -33,7 +33,7 @@ impl SceneState {
         self.merged = Default::default();
         if self.font.as_ref().map(|(c, _)| c) != Some(&wanted.font) {
             let font = match &wanted.font {
-                FontChoice::Shipped(i) if *i < SHIPPED_FONTS.len() => Ok(Font::shipped(*i)),
+                FontChoice::Shipped(i) if *i < SHIPPED_FONTS.len() => Ok(crate::font::shipped(*i)),
                 FontChoice::Shipped(i) => Err(format!("there is no shipped font {i}")),
                 FontChoice::File(path) => Font::from_path(path).map_err(|e| e.to_string()),
                 FontChoice::Opened { name, bytes } => {
@@ -137,7 +137,7 @@ mod tests {
 
     #[test]
     fn glyph_mode_takes_a_character_or_an_id() {
-        let font = Font::default_font();
+        let font = crate::font::default_font();
         let mut s = SceneSettings {
             glyph_mode: true,
             glyph: "g".into(),

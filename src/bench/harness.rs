@@ -14,6 +14,7 @@ use std::path::Path;
 use super::method_settings::baseline_cache_param;
 use super::side_run::{SideRun, time_round, write_report};
 use crate::Error;
+use crate::effort::Effort;
 use crate::gpu::{Channels, CoverageTarget};
 use crate::methods::Method;
 use crate::methods::atlas::{self, Atlas, Stage, auto_cache_size};
@@ -102,7 +103,7 @@ struct Timed {
 /// report's path.
 pub fn run_to(
     scene_names: &[String],
-    quick: bool,
+    effort: &Effort,
     frames: Option<usize>,
     adapter: Option<&str>,
     out: &Path,
@@ -115,7 +116,7 @@ pub fn run_to(
     } = SideRun::open(
         scene_names,
         DEFAULT_SCENES,
-        quick,
+        effort,
         frames,
         adapter,
         "the harness breakdown times GPU passes",
@@ -128,7 +129,7 @@ pub fn run_to(
          *step*: the difference from the row above on the same target. *× glyphon*: GPU + \
          CPU per frame over glyphon's in the same run.\n",
         gpu.adapter_name(),
-        if quick { " --quick" } else { "" },
+        effort.flag,
         scenes_flag,
         timing.rounds,
         timing.per_round.warmup,

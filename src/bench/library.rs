@@ -24,6 +24,7 @@ use super::side_run::{SideRun, time_round, write_report};
 use super::ui;
 use crate::Error;
 use crate::camera::Camera;
+use crate::effort::Effort;
 use crate::gpu::{Channels, CoverageTarget, GpuContext};
 use crate::methods::atlas::{self, auto_cache_size};
 use crate::methods::peers::glyphon;
@@ -262,7 +263,7 @@ pub const UI_SCENE: &str = "ui";
 /// in rounds; writes `library.md` into `out` and returns its path.
 pub fn run_to(
     scene_names: &[String],
-    quick: bool,
+    effort: &Effort,
     frames: Option<usize>,
     adapter: Option<&str>,
     out: &Path,
@@ -282,7 +283,7 @@ pub fn run_to(
     } = SideRun::open(
         &others,
         defaults,
-        quick,
+        effort,
         frames,
         adapter,
         "the library's frames are timed by them",
@@ -292,7 +293,7 @@ pub fn run_to(
     } else {
         format!(" --scenes {}", scene_names.join(","))
     };
-    let cap_s = crate::effort::Effort::of(quick).bench_settle_cap_s;
+    let cap_s = effort.bench_settle_cap_s;
     let mut md = format!(
         "# The library's frame\n\n\
          Device: **{}**. `glyphscope bench --library{}{}`: `glyphscope::text` as an app \
@@ -307,7 +308,7 @@ pub fn run_to(
          over the rounds (`*`: wider than ±5 % when the time was up). Error against the \
          reference.\n",
         gpu.adapter_name(),
-        if quick { " --quick" } else { "" },
+        effort.flag,
         scenes_flag,
         timing.rounds,
         cap_s,
@@ -380,7 +381,7 @@ pub fn run_to(
 /// The `ui` scene's cases: the library and glyphon drawing the labels still and
 /// moving, and the atlas drawing them still.
 fn measure_ui(gpu: &GpuContext, timing: &Rounds, cap_s: f64) -> Result<Vec<Timed>, Error> {
-    let font = crate::font::Font::default_font();
+    let font = crate::font::default_font();
     let labels = std::sync::Arc::new(ui::labels(&font, ui::LABELS, ui::SIZE)?);
     if ui::any_overlap(&font, &labels)? {
         return Err(Error::Internal(

@@ -47,19 +47,21 @@ pub fn rounds(effort: &Effort, frames: Option<usize>) -> Rounds {
 /// What to measure.
 #[derive(Clone, Debug)]
 pub struct BenchOptions {
-    pub quick: bool,
+    /// How much to measure: what `--quick` picks.
+    pub effort: Effort,
     /// Scene names; empty for all.
     pub scenes: Vec<String>,
     /// Method names (the benched methods of the registry, and the reference); empty
     /// for all.
     pub methods: Vec<String>,
-    /// Timed frames per case, over all rounds, overriding [`Effort`]'s (21, or 9
-    /// with `quick`; for the scaling series, 5, or 2 with `quick`).
+    /// Timed frames per case, over all rounds, overriding [`Effort`]'s
+    /// (`bench_rounds` × `bench_frames_per_round`; for the scaling series,
+    /// `bench_scaling_frames`).
     pub frames: Option<usize>,
-    /// Points per scaling series, overriding [`Effort`]'s (11, or 3 with `quick`).
+    /// Points per scaling series, overriding [`Effort`]'s `bench_scaling_points`.
     pub scaling_points: Option<usize>,
-    /// Seconds an unsettled case is timed on for, overriding [`Effort`]'s (30, or 25
-    /// with `quick`); 0 for the least rounds only.
+    /// Seconds an unsettled case is timed on for, overriding [`Effort`]'s
+    /// `bench_settle_cap_s`; 0 for the least rounds only.
     pub settle_cap_s: Option<f64>,
     /// A part of the name of the adapter to measure on (see [`GpuContext::open`]).
     pub adapter: Option<String>,
@@ -243,20 +245,21 @@ fn check(options: &BenchOptions, effort: &Effort) -> Result<Plan, Error> {
 fn settings_for(
     method: &MethodInfo,
     view: SceneCamera,
-    quick: bool,
+    effort: &Effort,
     cache_px_per_em: f64,
 ) -> Vec<Vec<(String, String)>> {
     if method.is_reference() {
         return vec![Vec::new()];
     }
     let is_baseline = method.role == Role::Baseline;
-    let mut all = method_settings::settings(method, quick);
+    let mut all = method_settings::settings(method, effort.bench_every_setting);
     if view == SceneCamera::Moved && !is_baseline {
-        let kept = if quick && method.name != CONTRAST.name && !method.is_peer() {
-            0
-        } else {
-            1
-        };
+        let kept =
+            if !effort.bench_every_setting && method.name != CONTRAST.name && !method.is_peer() {
+                0
+            } else {
+                1
+            };
         all.truncate(kept);
     }
     if is_baseline {
@@ -269,7 +272,7 @@ fn settings_for(
 
 /// Runs the bench, showing progress on stderr when it is a terminal.
 pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
-    let effort = Effort::of(options.quick);
+    let effort = options.effort;
     let plan = check(options, &effort)?;
     let (chosen, methods) = (&plan.scenes, &plan.methods);
     let scaling_timing = FrameTiming {
@@ -283,7 +286,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
     let per_view = |view| -> usize {
         methods
             .iter()
-            .map(|m| settings_for(m, view, options.quick, 0.0).len())
+            .map(|m| settings_for(m, view, &effort, 0.0).len())
             .sum()
     };
     let total =
@@ -303,7 +306,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
             }),
         settle_cap_s,
         gpu_clock: None,
-        quick: options.quick,
+        quick: effort == Effort::QUICK,
         timing,
         scenes: Vec::new(),
         measurements: Vec::new(),
@@ -353,7 +356,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
             let plan: Vec<(&MethodInfo, Vec<(String, String)>)> = methods
                 .iter()
                 .flat_map(|m| {
-                    settings_for(m, view, options.quick, cache)
+                    settings_for(m, view, &effort, cache)
                         .into_iter()
                         .map(move |p| (*m, p))
                 })
@@ -414,7 +417,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchResult, Error> {
                     .filter(|m| !m.is_reference())
                     .map(|m| MethodSpec {
                         name: m.name.into(),
-                        params: settings_for(m, view, options.quick, cache).swap_remove(0),
+                        params: settings_for(m, view, &effort, cache).swap_remove(0),
                     })
                     .collect();
                 result.motion.extend(motion::measure(

@@ -7,7 +7,6 @@ use glam::{DMat2, DVec2};
 
 use crate::Error;
 use crate::camera::Camera;
-use crate::font::Font;
 use crate::geometry::Segment;
 use crate::view_args::ViewArgs;
 
@@ -180,7 +179,7 @@ fn rotation_rows(degrees: f64) -> [f64; 4] {
 fn edge_args() -> Result<ViewArgs, Error> {
     const SIZE: f64 = 20_000.0;
     const SIDE: u32 = 512;
-    let font = Font::default_font();
+    let font = crate::font::default_font();
     let outline = font.outline(font.glyph_for_char('O')?);
     let on_edge = outline
         .segments()

@@ -30,7 +30,7 @@ impl SideRun {
     pub fn open(
         scene_names: &[String],
         defaults: &[&str],
-        quick: bool,
+        effort: &Effort,
         frames: Option<usize>,
         adapter: Option<&str>,
         what: &str,
@@ -61,7 +61,7 @@ impl SideRun {
         };
         Ok(SideRun {
             scenes,
-            timing: rounds(&Effort::of(quick), frames),
+            timing: rounds(effort, frames),
             gpu,
             scenes_flag,
         })

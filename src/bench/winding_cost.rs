@@ -10,9 +10,9 @@ use super::result::{BenchResult, Rounds, SceneCamera, WindingCost};
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::{Channels, CoverageTarget, GpuContext};
+use crate::methods::frame;
 use crate::methods::info::MethodInfo;
 use crate::methods::winding::{self, Settings, Stage, Winding};
-use crate::methods::{Method, frame};
 use crate::metrics;
 use crate::scene::Scene;
 

@@ -145,7 +145,7 @@ pub struct Claim {
 pub const MARGIN: f64 = 0.8;
 
 /// What a claim bounds on one case, over every camera the sweep sees it through.
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Bound {
     /// No pixel off by more than this (coverage, 0..1).
     pub max: f64,
@@ -185,7 +185,7 @@ impl Claim {
 
 /// A property of an outline that a method's claim may leave out of its scope. Each
 /// says what the outline is, never how a method fails on it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Trait {
     /// Contours overlap or cross themselves: a distance to the outline is not a
     /// distance to the filled area's boundary.

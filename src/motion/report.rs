@@ -13,7 +13,6 @@ use super::run::{MethodMotion, MotionResult};
 use crate::Error;
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
-use crate::font::Font;
 use crate::magnify::{self, Layers, Window};
 use crate::methods::registry;
 use crate::reference;
@@ -259,7 +258,7 @@ pub fn animation(panels: &[Panel], factor: u32, path: &Path) -> Result<(), Error
 
 /// A label drawn by the reference from the embedded font: white on the background.
 fn label_image(text: &str, width: u32, height: u32) -> Result<CoverageImage, Error> {
-    let font = Font::default_font();
+    let font = crate::font::default_font();
     let scene = Scene::from_text(&font, text)?;
     let camera = Camera::new(
         width,

@@ -11,7 +11,6 @@ use glam::{DMat2, DVec2};
 
 use crate::Error;
 use crate::camera::{Camera, MAX_SIZE_PX_PER_EM};
-use crate::font::Font;
 use crate::geometry::{Contour, Outline, Segment, project};
 use crate::scene::Scene;
 
@@ -122,11 +121,11 @@ pub fn all() -> Vec<HardCase> {
         traits: &[Trait::OverlappingGlyphs],
         ..case
     };
-    let default_font = Font::default_font();
+    let default_font = crate::font::default_font();
     let text = |text: &str| Scene::from_text(&default_font, text).expect("DejaVu shapes it");
     let glyph_o = text("o");
     let bowl = glyph_o.glyphs[0].bounds;
-    let inter = Font::shipped(2);
+    let inter = crate::font::shipped(2);
     let real = |name, what, scene, size_px_per_em| HardCase {
         name,
         what,
@@ -486,7 +485,7 @@ pub fn all() -> Vec<HardCase> {
         real(
             "latin-modern-cubics",
             "Latin Modern 'g§' (CFF cubics) at 31 px/em",
-            Scene::from_text(&Font::shipped(1), "g§").expect("Latin Modern shapes it"),
+            Scene::from_text(&crate::font::shipped(1), "g§").expect("Latin Modern shapes it"),
             31.0,
         ),
         HardCase {
@@ -526,7 +525,7 @@ pub fn all() -> Vec<HardCase> {
             "bengali-line",
             "a Bengali line in Lohit Bengali at 32 px/em: conjuncts, vowel signs over and \
              around their bases, the headline running from letter to letter",
-            Scene::from_text(&Font::shipped(3), BENGALI_LINE).expect("Lohit shapes it"),
+            Scene::from_text(&crate::font::shipped(3), BENGALI_LINE).expect("Lohit shapes it"),
             32.0,
         )),
         between_glyphs(real(

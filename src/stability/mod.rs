@@ -15,6 +15,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use crate::Error;
+use crate::coverage::Png as _;
 use crate::methods::info::MARGIN;
 use crate::metrics;
 use claims::Variant;

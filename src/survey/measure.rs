@@ -17,6 +17,7 @@ use super::traits;
 use crate::Error;
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
+use crate::coverage::Png as _;
 use crate::font::Font;
 use crate::gpu::GpuContext;
 use crate::methods::info::Trait;

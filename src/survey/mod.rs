@@ -20,7 +20,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::Error;
 use crate::gpu::GpuContext;
-use plan::Plan;
+use plan::{Plan, PlanFile};
 use report::FontRows;
 use row::{Verdict, file_safe};
 
@@ -73,31 +73,50 @@ pub fn font_folder(label: &str) -> String {
 
 /// Writes the plan into `out`, or checks it against the one there: a folder holds the
 /// results of one plan.
-fn claim_folder(out: &Path, plan: &serde_json::Value) -> Result<(), Error> {
+fn claim_folder(out: &Path, plan: &PlanFile) -> Result<(), Error> {
     std::fs::create_dir_all(out.join(FONTS_DIR)).map_err(|e| output(out, &e))?;
     let path = out.join(PLAN_FILE);
     match std::fs::read_to_string(&path) {
         Ok(text) => {
-            let found: serde_json::Value = serde_json::from_str(&text).map_err(|e| {
-                Error::Input(format!("'{}' is not a survey's plan: {e}", path.display()))
-            })?;
+            let found = read_plan(&path, &text)?;
             if &found != plan {
                 return Err(Error::Input(format!(
-                    "'{}' holds a survey of another plan ({found}); give the same sizes, \
+                    "'{}' holds a survey of another plan ({}); give the same sizes, \
                      transforms, methods, instances and glyphs to resume it, or another --out",
-                    out.display()
+                    out.display(),
+                    to_json(&found)
                 )));
             }
             Ok(())
         }
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-            write_atomically(&path, &(plan.to_string() + "\n"))
+            write_atomically(&path, &(to_json(plan) + "\n"))
         }
         Err(e) => Err(Error::Input(format!(
             "cannot read '{}': {e}",
             path.display()
         ))),
     }
+}
+
+/// A plan file's text read, or why it is not one.
+fn read_plan(path: &Path, text: &str) -> Result<PlanFile, Error> {
+    serde_json::from_str(text)
+        .map_err(|e| Error::Input(format!("'{}' is not a survey's plan: {e}", path.display())))
+}
+
+/// Which fonts a folder is to hold (`FONTS_FILE`): a shard's, or a merge's.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+struct FontsFile {
+    /// (index, count) of a shard; None for a whole run or a merge.
+    shard: Option<(usize, usize)>,
+    /// The fonts' labels, as found under `--fonts`.
+    fonts: Vec<String>,
+}
+
+/// One line of JSON.
+fn to_json(value: &impl serde::Serialize) -> String {
+    serde_json::to_string(value).expect("plain data serializes")
 }
 
 /// Writes `text` to `path` through a temporary file renamed over it.
@@ -124,9 +143,12 @@ pub fn run(options: &SurveyOptions) -> Result<bool, Error> {
         }
     }
     let labels: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
-    let expected = serde_json::json!({ "shard": options.shard, "fonts": labels });
+    let expected = FontsFile {
+        shard: options.shard,
+        fonts: labels.clone(),
+    };
     let path = options.out.join(FONTS_FILE);
-    write_atomically(&path, &(expected.to_string() + "\n"))?;
+    write_atomically(&path, &(to_json(&expected) + "\n"))?;
     let to_do: Vec<(&PathBuf, &String)> = files
         .iter()
         .zip(&labels)
@@ -246,7 +268,7 @@ fn finished_fonts(out: &Path, only: Option<&[String]>) -> Result<Vec<FontRows>, 
 /// says whether every claim held.
 fn write_outputs(
     out: &Path,
-    description: &serde_json::Value,
+    description: &PlanFile,
     plan: &Plan,
     labels: &[String],
 ) -> Result<bool, Error> {
@@ -292,14 +314,13 @@ fn conclude(out: &Path, fonts: &[FontRows]) -> Result<bool, Error> {
 /// `glyphscope survey merge`: the finished fonts of every folder in `dirs` (shards of
 /// one plan) copied into `out`, and the outputs written from them as one run would.
 pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<bool, Error> {
-    let mut description: Option<serde_json::Value> = None;
+    let mut description: Option<PlanFile> = None;
     for dir in dirs {
         let path = dir.join(PLAN_FILE);
         let text = std::fs::read_to_string(&path).map_err(|e| {
             Error::Input(format!("'{}' is not a survey's folder: {e}", dir.display()))
         })?;
-        let plan: serde_json::Value = serde_json::from_str(&text)
-            .map_err(|e| Error::Input(format!("'{}': {e}", path.display())))?;
+        let plan = read_plan(&path, &text)?;
         match &description {
             Some(first) if *first != plan => {
                 return Err(Error::Input(format!(
@@ -314,7 +335,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<bool, Error> {
     let description = description
         .ok_or_else(|| Error::Input("survey merge: give the folders to merge".into()))?;
     check_shards_complete(dirs)?;
-    let plan = plan_from(&description)?;
+    let plan = Plan::from_file(&description)?;
     claim_folder(out, &description)?;
     let mut labels: Vec<String> = Vec::new();
     for dir in dirs {
@@ -335,8 +356,11 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<bool, Error> {
         }
     }
     labels.sort();
-    let merged = serde_json::json!({ "shard": null, "fonts": labels });
-    write_atomically(&out.join(FONTS_FILE), &(merged.to_string() + "\n"))?;
+    let merged = FontsFile {
+        shard: None,
+        fonts: labels.clone(),
+    };
+    write_atomically(&out.join(FONTS_FILE), &(to_json(&merged) + "\n"))?;
     write_outputs(out, &description, &plan, &labels)
 }
 
@@ -347,7 +371,7 @@ fn check_shards_complete(dirs: &[PathBuf]) -> Result<(), Error> {
     let mut shards: Vec<(usize, usize)> = Vec::new();
     for dir in dirs {
         let path = dir.join(FONTS_FILE);
-        let expected: serde_json::Value = std::fs::read_to_string(&path)
+        let expected: FontsFile = std::fs::read_to_string(&path)
             .ok()
             .and_then(|t| serde_json::from_str(&t).ok())
             .ok_or_else(|| Error::Input(format!("'{}' is not a survey's folder", dir.display())))?;
@@ -355,11 +379,10 @@ fn check_shards_complete(dirs: &[PathBuf]) -> Result<(), Error> {
             .into_iter()
             .map(|f| f.label)
             .collect();
-        let missing: Vec<&str> = expected["fonts"]
-            .as_array()
-            .into_iter()
-            .flatten()
-            .filter_map(|v| v.as_str())
+        let missing: Vec<&str> = expected
+            .fonts
+            .iter()
+            .map(String::as_str)
             .filter(|label| !finished.iter().any(|f| f == label))
             .collect();
         if !missing.is_empty() {
@@ -371,10 +394,8 @@ fn check_shards_complete(dirs: &[PathBuf]) -> Result<(), Error> {
                 missing[0]
             )));
         }
-        if let Ok((index, count)) =
-            serde_json::from_value::<(usize, usize)>(expected["shard"].clone())
-        {
-            shards.push((index, count));
+        if let Some(shard) = expected.shard {
+            shards.push(shard);
         }
     }
     if let Some(&(_, count)) = shards.first() {
@@ -388,31 +409,6 @@ fn check_shards_complete(dirs: &[PathBuf]) -> Result<(), Error> {
         }
     }
     Ok(())
-}
-
-/// The plan a folder's description names, rebuilt (its methods' claims from today's
-/// registry).
-fn plan_from(description: &serde_json::Value) -> Result<Plan, Error> {
-    let bad = || Error::Input(format!("not a survey's plan: {description}"));
-    let strings = |key: &str| -> Result<Vec<String>, Error> {
-        description[key]
-            .as_array()
-            .ok_or_else(bad)?
-            .iter()
-            .map(|v| v.as_str().map(str::to_owned).ok_or_else(bad))
-            .collect()
-    };
-    let sizes: Vec<f64> =
-        serde_json::from_value(description["sizes"].clone()).map_err(|_| bad())?;
-    let instances = serde_json::from_value(description["instances"].clone()).map_err(|_| bad())?;
-    let glyphs = serde_json::from_value(description["glyphs"].clone()).map_err(|_| bad())?;
-    Plan::new(
-        &sizes,
-        &strings("transforms")?,
-        &strings("methods")?,
-        instances,
-        glyphs,
-    )
 }
 
 fn copy_folder(from: &Path, to: &Path) -> Result<(), Error> {

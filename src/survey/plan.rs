@@ -8,7 +8,7 @@ use serde::Serialize;
 
 use crate::Error;
 use crate::camera::{Camera, MAX_SIZE_PX_PER_EM};
-use crate::methods::info::{Claim, MethodInfo, Role};
+use crate::methods::info::{Bound, Claim, MethodInfo, Role, Trait};
 use crate::methods::registry;
 use crate::motion::run::MethodSpec;
 
@@ -212,17 +212,73 @@ impl Plan {
 
     /// The plan as written beside the results: what must match for results to merge
     /// (the claims each method is held to and the version among them).
-    pub fn describe(&self) -> serde_json::Value {
-        serde_json::json!({
-            // Results judged by another build's claims do not mix with these.
-            "glyphscope": env!("CARGO_PKG_VERSION"),
-            "claims": self.methods.iter().map(|m| format!("{:?}", m.claim)).collect::<Vec<_>>(),
-            "sizes": self.sizes,
-            "transforms": self.transforms.iter().map(|t| &t.name).collect::<Vec<_>>(),
-            "methods": self.methods.iter().map(|m| &m.label).collect::<Vec<_>>(),
-            "instances": self.instances,
-            "glyphs": self.glyphs,
-        })
+    pub fn describe(&self) -> PlanFile {
+        PlanFile {
+            glyphscope: env!("CARGO_PKG_VERSION").to_owned(),
+            claims: self
+                .methods
+                .iter()
+                .map(|m| m.claim.as_ref().map(ClaimTerms::of))
+                .collect(),
+            sizes: self.sizes.clone(),
+            transforms: self.transforms.iter().map(|t| t.name.clone()).collect(),
+            methods: self.methods.iter().map(|m| m.label.clone()).collect(),
+            instances: self.instances.clone(),
+            glyphs: self.glyphs,
+        }
+    }
+
+    /// The plan a folder's file names, rebuilt (its methods' claims from today's
+    /// registry: [`PlanFile`]s compare the claims they were judged by).
+    pub fn from_file(file: &PlanFile) -> Result<Plan, Error> {
+        Plan::new(
+            &file.sizes,
+            &file.transforms,
+            &file.methods,
+            file.instances.clone(),
+            file.glyphs,
+        )
+    }
+}
+
+/// What a survey's folder was measured under, as its plan file holds it: the plan, and
+/// what judged its results (the build and each method's claim). A run resumes, and
+/// shards merge, only under an equal one.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct PlanFile {
+    /// The glyphscope version that measured: results judged by another build's claims
+    /// do not mix with these.
+    pub glyphscope: String,
+    /// Each method's claim, in the order of `methods`; None where it claims nothing.
+    pub claims: Vec<Option<ClaimTerms>>,
+    pub sizes: Vec<f64>,
+    /// As `--transforms` names them.
+    pub transforms: Vec<String>,
+    /// As `--methods` names them.
+    pub methods: Vec<String>,
+    /// Variable-font instances surveyed besides the default.
+    pub instances: Vec<Vec<(String, f32)>>,
+    /// The glyph ids surveyed, first and last; None for all.
+    pub glyphs: Option<(u16, u16)>,
+}
+
+/// The terms a claim judges rows by (its statement, words for people, aside).
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct ClaimTerms {
+    pub bound: Option<Bound>,
+    pub except: Vec<Trait>,
+    pub limitation: Option<Bound>,
+    pub temporal: Option<Bound>,
+}
+
+impl ClaimTerms {
+    fn of(claim: &Claim) -> ClaimTerms {
+        ClaimTerms {
+            bound: claim.bound,
+            except: claim.except.to_vec(),
+            limitation: claim.limitation,
+            temporal: claim.temporal,
+        }
     }
 }
 

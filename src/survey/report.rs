@@ -11,6 +11,7 @@ use std::path::{Path, PathBuf};
 use serde::Serialize;
 
 use super::measure::{WORST_KEPT, tile_name, worst_by_method};
+use super::plan::PlanFile;
 use super::row::{Row, Verdict, file_safe, to_csv};
 use crate::Error;
 use crate::font::SHIPPED_FONTS;
@@ -151,7 +152,7 @@ pub fn link(row: &Row, font: &str, transform: (f64, f64)) -> Option<String> {
 /// `transforms` each transform's name with its (rotation, skew).
 pub fn write(
     out: &Path,
-    plan: &serde_json::Value,
+    plan: &PlanFile,
     methods: &[String],
     transforms: &[(String, (f64, f64))],
     fonts: &[FontRows],
@@ -268,7 +269,7 @@ fn num(v: f64, digits: usize) -> String {
 
 #[allow(clippy::too_many_arguments)]
 fn markdown(
-    plan: &serde_json::Value,
+    plan: &PlanFile,
     methods: &[String],
     summaries: &[MethodSummary],
     worst: &std::collections::HashMap<&str, Vec<&Row>>,
@@ -285,9 +286,10 @@ fn markdown(
     let _ = writeln!(
         md,
         "{} font files; {glyph_views} rows measured (glyph × size × transform × method); \
-         {} broken claims. The plan: `{plan}`.\n",
+         {} broken claims. The plan: `{}`.\n",
         fonts.len(),
-        broken.len()
+        broken.len(),
+        serde_json::to_string(plan).expect("a plan serializes")
     );
     md += "Each glyph sits alone in a slot of its frame with 3 clear pixels around its ink, at a \
            sub-pixel offset set by its id; its error is over its slot against the exact reference. \

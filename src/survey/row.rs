@@ -49,8 +49,11 @@ pub struct Row {
     pub max: f64,
     pub mae_255: f64,
     pub edge_mae_255: f64,
+    #[serde(rename = "px_over_0.25")]
     pub over_025: usize,
+    #[serde(rename = "px_over_0.5")]
     pub over_05: usize,
+    #[serde(rename = "invalid_px")]
     pub invalid: usize,
     /// The worst pixel, in the glyph's slot (0, 0 at the slot's top-left).
     pub worst_x: u32,
@@ -128,165 +131,40 @@ pub fn file_safe(text: &str) -> String {
         .collect()
 }
 
-/// The CSV header, one column per field of [`Row`].
-pub const CSV_HEADER: &str = "font,face,glyph,name,size,transform,method,traits,bound,max,\
-mae_255,edge_mae_255,px_over_0.25,px_over_0.5,invalid_px,worst_x,worst_y,origin_x,origin_y,\
-verdict,reason";
-
-/// `rows` as CSV (RFC 4180 quoting), numbers in Rust's shortest round-trip form.
+/// `rows` as CSV: a header naming [`Row`]'s fields as serde does, a record per row
+/// (the csv crate's quoting and number forms).
 pub fn to_csv(rows: &[Row]) -> String {
-    let mut out = String::from(CSV_HEADER);
-    out.push('\n');
-    for r in rows {
-        let verdict = serde_json::to_value(r.verdict).expect("a verdict serializes");
-        let fields = [
-            quote(&r.font),
-            quote(&r.face),
-            r.glyph.map_or(String::new(), |g| g.to_string()),
-            quote(&r.name),
-            r.size.to_string(),
-            quote(&r.transform),
-            quote(&r.method),
-            quote(&r.traits),
-            quote(&r.bound),
-            r.max.to_string(),
-            r.mae_255.to_string(),
-            r.edge_mae_255.to_string(),
-            r.over_025.to_string(),
-            r.over_05.to_string(),
-            r.invalid.to_string(),
-            r.worst_x.to_string(),
-            r.worst_y.to_string(),
-            r.origin_x.to_string(),
-            r.origin_y.to_string(),
-            verdict.as_str().unwrap_or_default().to_owned(),
-            quote(&r.reason),
-        ];
-        out.push_str(&fields.join(","));
-        out.push('\n');
+    let mut writer = csv::WriterBuilder::new().from_writer(Vec::new());
+    if rows.is_empty() {
+        // The header comes with the first record: without one, it is the header of a
+        // row written and dropped.
+        return csv_header() + "\n";
     }
-    out
+    for row in rows {
+        writer.serialize(row).expect("a row serializes");
+    }
+    String::from_utf8(writer.into_inner().expect("a Vec takes every byte"))
+        .expect("the csv crate writes UTF-8")
+}
+
+/// The header [`to_csv`] writes.
+pub fn csv_header() -> String {
+    let row = Row::unmeasured("", "", Verdict::Unreadable, String::new());
+    to_csv(&[row]).lines().next().unwrap_or_default().to_owned()
 }
 
 /// Rows read back from [`to_csv`]'s text (what a finished font keeps), or why not.
 pub fn from_csv(text: &str) -> Result<Vec<Row>, String> {
-    let records = records(text)?;
-    let mut records = records.into_iter();
-    if records.next().map(|h| h.join(",")) != Some(CSV_HEADER.to_owned()) {
+    let mut reader = csv::Reader::from_reader(text.as_bytes());
+    let header = reader.headers().map_err(|e| e.to_string())?;
+    if header.iter().collect::<Vec<_>>().join(",") != csv_header() {
         return Err("not a survey's rows: the header differs".into());
     }
-    records
+    reader
+        .deserialize()
         .enumerate()
-        .map(|(line, f)| {
-            let bad = |what: &str| format!("row {}: {what}", line + 1);
-            let [
-                font,
-                face,
-                glyph,
-                name,
-                size,
-                transform,
-                method,
-                traits,
-                bound,
-                max,
-                mae,
-                edge,
-                over_025,
-                over_05,
-                invalid,
-                worst_x,
-                worst_y,
-                origin_x,
-                origin_y,
-                verdict,
-                reason,
-            ] = <[String; 21]>::try_from(f).map_err(|f| bad(&format!("{} fields", f.len())))?;
-            let num = |t: &str| {
-                t.parse::<f64>()
-                    .map_err(|_| bad(&format!("'{t}' is not a number")))
-            };
-            let whole = |t: &str| {
-                t.parse::<usize>()
-                    .map_err(|_| bad(&format!("'{t}' is not a count")))
-            };
-            let pixel = |t: &str| {
-                t.parse::<u32>()
-                    .map_err(|_| bad(&format!("'{t}' is not a pixel")))
-            };
-            Ok(Row {
-                glyph: match glyph.as_str() {
-                    "" => None,
-                    g => Some(
-                        g.parse()
-                            .map_err(|_| bad(&format!("'{g}' is not a glyph id")))?,
-                    ),
-                },
-                size: num(&size)?,
-                max: num(&max)?,
-                mae_255: num(&mae)?,
-                edge_mae_255: num(&edge)?,
-                over_025: whole(&over_025)?,
-                over_05: whole(&over_05)?,
-                invalid: whole(&invalid)?,
-                worst_x: pixel(&worst_x)?,
-                worst_y: pixel(&worst_y)?,
-                origin_x: num(&origin_x)?,
-                origin_y: num(&origin_y)?,
-                verdict: serde_json::from_value(serde_json::Value::String(verdict.clone()))
-                    .map_err(|_| bad(&format!("'{verdict}' is not a verdict")))?,
-                font,
-                face,
-                name,
-                transform,
-                method,
-                traits,
-                bound,
-                reason,
-            })
-        })
+        .map(|(k, row)| row.map_err(|e| format!("row {}: {e}", k + 1)))
         .collect()
-}
-
-/// The records of CSV text, fields unquoted.
-fn records(text: &str) -> Result<Vec<Vec<String>>, String> {
-    let mut records = Vec::new();
-    let (mut record, mut field) = (Vec::new(), String::new());
-    let mut chars = text.chars().peekable();
-    let mut quoted = false;
-    while let Some(c) = chars.next() {
-        match (quoted, c) {
-            (true, '"') if chars.peek() == Some(&'"') => {
-                chars.next();
-                field.push('"');
-            }
-            (true, '"') => quoted = false,
-            (true, c) => field.push(c),
-            (false, '"') if field.is_empty() => quoted = true,
-            (false, ',') => record.push(std::mem::take(&mut field)),
-            (false, '\n') => {
-                record.push(std::mem::take(&mut field));
-                records.push(std::mem::take(&mut record));
-            }
-            (false, c) => field.push(c),
-        }
-    }
-    if quoted {
-        return Err("a quoted field does not end".into());
-    }
-    if !field.is_empty() || !record.is_empty() {
-        record.push(field);
-        records.push(record);
-    }
-    Ok(records)
-}
-
-fn quote(text: &str) -> String {
-    if text.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", text.replace('"', "\"\""))
-    } else {
-        text.to_owned()
-    }
 }
 
 #[cfg(test)]
@@ -307,7 +185,7 @@ mod tests {
             .as_object()
             .unwrap()
             .len();
-        assert_eq!(CSV_HEADER.split(',').count(), fields);
+        assert_eq!(csv_header().split(',').count(), fields);
     }
 
     #[test]

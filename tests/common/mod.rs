@@ -45,7 +45,7 @@ pub fn render_with_picture(
     frame::render_frame(gpu, method, &target, camera).unwrap();
     (
         target.readback(gpu).unwrap(),
-        target.readback_color(gpu).unwrap(),
+        glyphscope::coverage::read_overlay(gpu, &target).unwrap(),
     )
 }
 

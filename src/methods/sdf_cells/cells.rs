@@ -381,7 +381,7 @@ fn segment_meets_rect(rect: &Rect, a: DVec2, b: DVec2) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::font::Font;
+
     use crate::geometry::DEFAULT_QUAD_TOLERANCE_EM;
 
     /// The nearest curve over the whole glyph, by the mode's distance.
@@ -422,7 +422,7 @@ mod tests {
     fn every_point_finds_its_nearest_curve_and_its_ties_in_its_cell() {
         let bias = 2.0;
         for (font_index, text) in [(0, "&g@S"), (1, "Qa§g"), (3, "\u{0995}")] {
-            let font = Font::shipped(font_index);
+            let font = crate::font::shipped(font_index);
             let tolerance = DEFAULT_QUAD_TOLERANCE_EM * font.units_per_em();
             for c in text.chars() {
                 let outline = font
@@ -466,7 +466,7 @@ mod tests {
 
     #[test]
     fn bands_hold_every_curve_a_horizontal_line_through_the_row_meets() {
-        let font = Font::default_font();
+        let font = crate::font::default_font();
         let outline = font.outline(font.glyph_for_char('@').unwrap());
         let layout = CurveLayout::new(&outline);
         let grid = Grid::covering(outline.control_bounds().unwrap(), 5, 6);

@@ -30,11 +30,11 @@ pub mod params;
 use glam::DMat2;
 
 use super::info::{Claim, ClaimedSetting, MethodInfo, Role, Trait, bench_at, within};
-use super::instances::Instances;
 use super::params::Params;
 use super::{CurveCost, Method, Overlay};
 use crate::Error;
 use crate::camera::Camera;
+use crate::gpu::instances::Instances;
 use crate::gpu::kit::{self, PerTarget, PipelineBuilder, Slot};
 use crate::gpu::shaders::Shader;
 use crate::gpu::{CoverageTarget, GpuContext};

@@ -51,7 +51,7 @@ mod tests {
 
     #[test]
     fn layers_hold_instances_that_cannot_touch() {
-        let font = crate::font::Font::default_font();
+        let font = crate::font::default_font();
         let scene = Scene::from_text(&font, "ffi WAVE\nfjord Tj").unwrap();
         let gap = scene.units_per_em / 1024.0;
         let layers = disjoint_layers(&scene, gap);

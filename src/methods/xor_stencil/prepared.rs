@@ -14,8 +14,8 @@ use super::pipelines::{COVERED_BIT, Draws, Jitter, Pipelines};
 use crate::Error;
 use crate::camera::Camera;
 use crate::geometry::{Segment, jacobian_bound};
+use crate::gpu::instances::Instances;
 use crate::gpu::{GpuContext, kit};
-use crate::methods::instances::Instances;
 use crate::scene::Scene;
 
 /// What `prepare` made of a scene, and the frame last written.

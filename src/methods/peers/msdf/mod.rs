@@ -23,12 +23,12 @@ use self::params::{NAME, OVERLAYS, PARAMS, Settings};
 use super::observed;
 use crate::Error;
 use crate::camera::Camera;
+use crate::gpu::instances::Instances;
 use crate::gpu::kit::PipelineBuilder;
 use crate::gpu::shaders::Shader;
 use crate::gpu::{CoverageTarget, GpuContext};
 use crate::methods::glyph_atlas::{self, AtlasPipeline, Entry};
 use crate::methods::info::{ClaimedSetting, MethodInfo, Role, bench_at};
-use crate::methods::instances::Instances;
 use crate::methods::{Method, Overlay, not_prepared};
 use crate::scene::Scene;
 

@@ -107,7 +107,7 @@ mod tests {
     /// laid out with.
     #[test]
     fn the_shader_reads_rows_as_wide_as_they_are_laid_out() {
-        let source = include_str!("../../../shaders/winding.wgsl");
+        let source = include_str!("../../shaders/winding.wgsl");
         let line = source
             .lines()
             .find(|l| l.starts_with("const DATA_ROW_SHIFT: u32 = "))

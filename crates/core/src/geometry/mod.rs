@@ -29,4 +29,4 @@ pub use quadratic::{
 };
 pub use rect::{Rect, groups_where, overlapping_groups};
 pub use segment::{Segment, segment_points};
-pub(crate) use segment::{from_lyon, lyon_cubic, lyon_quad, to_lyon};
+pub use segment::{from_lyon, lyon_cubic, lyon_quad, to_lyon};

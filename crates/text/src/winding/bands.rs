@@ -457,6 +457,16 @@ mod tests {
     use crate::font::Font;
     use crate::geometry::DEFAULT_QUAD_TOLERANCE_EM;
 
+    /// A font of the repository's `fonts/` (the crate embeds none): 0 DejaVu Sans
+    /// (TrueType quadratics), 1 Latin Modern Roman (CFF cubics).
+    fn shipped(index: usize) -> Font {
+        let file = ["DejaVuSans.ttf", "lmroman10-regular.otf"][index];
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../fonts")
+            .join(file);
+        Font::from_path(&path).expect("the repository's fonts parse")
+    }
+
     fn glyph(font: &Font, c: char) -> Outline {
         let tolerance = DEFAULT_QUAD_TOLERANCE_EM * font.units_per_em();
         font.outline(font.glyph_for_char(c).unwrap())
@@ -469,7 +479,7 @@ mod tests {
     /// its ends' box. Read back texel by texel, every entry is its listed curve.
     #[test]
     fn inline_entries_are_their_curves_and_the_ends_bound_them() {
-        let font = Font::default_font();
+        let font = shipped(0);
         for c in "gS@&mWo".chars() {
             let mut data = GlyphData::default();
             data.push(&glyph(&font, c), 2048.0, BandCount::Auto, Layout::Area);
@@ -503,7 +513,7 @@ mod tests {
     /// Every curve that crosses a band's interior is in that band.
     #[test]
     fn bands_hold_every_curve_that_can_cross_them() {
-        let font = Font::default_font();
+        let font = shipped(0);
         for c in "gS@&mW".chars() {
             let mut data = GlyphData::default();
             data.push(&glyph(&font, c), 2048.0, BandCount::Fixed(7), Layout::Rays);
@@ -528,7 +538,7 @@ mod tests {
 
     #[test]
     fn both_orderings_are_sorted_and_hold_the_same_curves() {
-        let font = Font::shipped(1);
+        let font = shipped(1);
         let mut data = GlyphData::default();
         data.push(&glyph(&font, '&'), 1000.0, BandCount::Auto, Layout::Rays);
         let g = data.glyphs[0];
@@ -562,7 +572,7 @@ mod tests {
 
     #[test]
     fn auto_bands_shrink_the_lists() {
-        let font = Font::default_font();
+        let font = shipped(0);
         let mut data = GlyphData::default();
         data.push(&glyph(&font, '@'), 2048.0, BandCount::Auto, Layout::Rays);
         let g = data.glyphs[0];
@@ -607,7 +617,7 @@ mod tests {
     /// the project's tolerance (the same curves as converting it first), never refused.
     #[test]
     fn a_pushed_cubic_becomes_the_quadratics_of_the_conversion() {
-        let font = Font::shipped(1);
+        let font = shipped(1);
         let units_per_em = font.units_per_em();
         let outline = font.outline(font.glyph_for_char('S').unwrap());
         assert!(
@@ -638,7 +648,7 @@ mod tests {
     /// finds them: level 0 first, the band of all curves, then each coarser one.
     #[test]
     fn area_levels_hold_every_curve_at_a_pixels_height() {
-        let font = Font::default_font();
+        let font = shipped(0);
         for (c, count) in [('g', BandCount::Fixed(7)), ('@', BandCount::Auto)] {
             let mut data = GlyphData::default();
             data.push(&glyph(&font, c), 2048.0, count, Layout::Area);

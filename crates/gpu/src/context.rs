@@ -1,7 +1,7 @@
 //! The device every method renders with, and the few helpers that turn wgpu's
 //! callbacks and error handlers into plain `Result`s.
 
-use crate::Error;
+use glyphscope_core::Error;
 
 /// The adapter, device and queue, chosen once per process. Cloning shares them (wgpu's
 /// handles are reference-counted), e.g. with a background thread.
@@ -170,7 +170,7 @@ impl GpuContext {
 
     /// Runs `work` and reports the validation and out-of-memory errors wgpu raises
     /// meanwhile as [`Error::Gpu`], instead of letting wgpu's default handler panic.
-    pub(crate) fn catching_errors<T>(
+    pub fn catching_errors<T>(
         &self,
         what: &str,
         work: impl FnOnce() -> Result<T, Error>,
@@ -203,7 +203,7 @@ impl GpuContext {
     /// Blocks until the GPU has finished everything submitted so far. A web page cannot
     /// block (WebGPU answers only between frames): there it is an error that says so,
     /// never a hang, until every caller reads back asynchronously.
-    pub(crate) fn wait_idle(&self) -> Result<(), Error> {
+    pub fn wait_idle(&self) -> Result<(), Error> {
         if cfg!(target_arch = "wasm32") {
             return Err(Error::Gpu(
                 "a web page cannot wait for the GPU within a frame: this needs the desktop \
@@ -224,7 +224,7 @@ impl GpuContext {
     }
 
     /// Maps a `MAP_READ` buffer whose copies have been submitted, and returns its bytes.
-    pub(crate) fn read_buffer(&self, buffer: &wgpu::Buffer) -> Result<Vec<u8>, Error> {
+    pub fn read_buffer(&self, buffer: &wgpu::Buffer) -> Result<Vec<u8>, Error> {
         let (sender, receiver) = std::sync::mpsc::channel();
         buffer.map_async(wgpu::MapMode::Read, .., move |result| {
             // The receiver outlives the wait below, so sending cannot fail.

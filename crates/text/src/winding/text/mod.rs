@@ -1,5 +1,5 @@
 //! Text in colour, drawn with `winding`'s exact coverage into a render pass the caller
-//! owns: the library other wgpu and egui apps use, re-exported as [`crate::text`]
+//! owns: the library other wgpu and egui apps use, re-exported at the crate's root
 //! (docs/library.md).
 //!
 //! One implementation: the explorer's `winding` row and this renderer prepare glyphs
@@ -50,8 +50,8 @@ use crate::Error;
 use crate::camera::Camera;
 use crate::font::Font;
 use crate::geometry::{Rect, keeps_axes};
+use crate::gpu::instances::{GpuInstance, Instances};
 use crate::gpu::{Channels, GpuContext};
-use crate::methods::instances::{GpuInstance, Instances};
 use crate::scene::{Glyph, Instance, Scene};
 use glyphs::PreparedGlyphs;
 pub use layouts::PositionedGlyph;
@@ -125,8 +125,8 @@ impl Held {
 /// Draws text with `winding`'s exact box-filter coverage into a caller's render pass.
 ///
 /// ```no_run
-/// # fn demo(device: &wgpu::Device, queue: &wgpu::Queue, encoder: &mut wgpu::CommandEncoder, pass: &mut wgpu::RenderPass<'_>) -> Result<(), glyphscope::Error> {
-/// use glyphscope::text::{Content, TextRenderer, TextRun};
+/// # fn demo(device: &wgpu::Device, queue: &wgpu::Queue, encoder: &mut wgpu::CommandEncoder, pass: &mut wgpu::RenderPass<'_>) -> Result<(), glyphscope_text::Error> {
+/// use glyphscope_text::{Content, TextRenderer, TextRun, glam};
 /// let mut text = TextRenderer::new(device, queue, wgpu::TextureFormat::Bgra8UnormSrgb);
 /// let font = text.add_font(std::fs::read("fonts/DejaVuSans.ttf").unwrap())?;
 /// let run = TextRun {
@@ -280,9 +280,10 @@ impl TextRenderer {
         }
     }
 
-    /// The same renderer with its coverage shader cut short after `stage` (the bench's
-    /// breakdown of a moving frame; what it draws is not text past `Stage::Full`).
-    pub(crate) fn cut_after(mut self, stage: super::Stage) -> Self {
+    /// The same renderer with its coverage shader cut short after `stage`: for
+    /// measuring where a frame's time goes (the explorer's bench breaks a moving frame
+    /// down this way). What it draws is not text but at [`Stage::Full`](super::Stage::Full).
+    pub fn cut_after(mut self, stage: super::Stage) -> Self {
         self.winding = Winding::staged(Settings::default(), stage);
         self
     }
@@ -295,9 +296,9 @@ impl TextRenderer {
         Ok(FontId(self.fonts.len() - 1))
     }
 
-    /// Adds a font glyphscope has already read (its variations kept): the bench's way
-    /// to draw its scenes' fonts through the library.
-    pub(crate) fn add_parsed_font(&mut self, font: Font) -> FontId {
+    /// Adds a font already read with `glyphscope_core::font::Font` (a face of a
+    /// collection, or a variable font's instance, kept as read).
+    pub fn add_parsed_font(&mut self, font: Font) -> FontId {
         self.fonts.push(font);
         FontId(self.fonts.len() - 1)
     }

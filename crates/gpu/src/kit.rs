@@ -8,7 +8,7 @@ use super::{
     msaa::STENCIL_FORMAT,
     target::{Channels, CoverageTarget},
 };
-use crate::Error;
+use glyphscope_core::Error;
 
 /// A binding of a layout built by [`layout`], at its position in the list.
 #[derive(Clone, Copy, Debug)]

@@ -3,8 +3,8 @@
 use std::sync::{Arc, Mutex};
 
 use super::context::GpuContext;
-use crate::Error;
-use crate::coverage::CoverageImage;
+use glyphscope_core::Error;
+use glyphscope_core::coverage::CoverageImage;
 
 /// What a coverage target holds besides coverage, chosen by whoever makes the target
 /// for what it will read back.
@@ -160,25 +160,25 @@ impl CoverageTarget {
         ))
     }
 
-    /// Copies the overlay picture (rgb, premultiplied, over black) back as 8-bit sRGB-less
-    /// RGB, clamped. Only a [`Channels::Picture`] target has one.
-    pub fn readback_color(&self, gpu: &GpuContext) -> Result<image::RgbImage, Error> {
+    /// Copies the overlay picture (rgb, premultiplied, over black) back as 8-bit RGB,
+    /// sRGB-less and clamped: `width × height` pixels of 3 bytes, row-major. Only a
+    /// [`Channels::Picture`] target has one.
+    pub fn readback_rgb8(&self, gpu: &GpuContext) -> Result<Vec<u8>, Error> {
         if self.channels != Channels::Picture {
             return Err(Error::Gpu(
                 "a coverage-only target holds no overlay picture to read back".into(),
             ));
         }
         let texels = self.read_texels(gpu)?;
-        let bytes = texels
+        Ok(texels
             .iter()
             .flat_map(|t| [t[0], t[1], t[2]])
             .map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8)
-            .collect();
-        Ok(image::RgbImage::from_raw(self.width, self.height, bytes).expect("size matches"))
+            .collect())
     }
 
     /// Every texel as f32 rgba, row-major; a coverage-only target's as (0, 0, 0, coverage).
-    pub(crate) fn read_texels(&self, gpu: &GpuContext) -> Result<Vec<[f32; 4]>, Error> {
+    pub fn read_texels(&self, gpu: &GpuContext) -> Result<Vec<[f32; 4]>, Error> {
         let bytes = gpu.catching_errors("reading the coverage target back", || {
             let buffer = self.copy_to_buffer(gpu);
             gpu.read_buffer(&buffer)

@@ -78,12 +78,12 @@ pub fn segment_points(s: &Segment) -> impl Iterator<Item = DVec2> {
 }
 
 /// The point as lyon_geom's.
-pub(crate) fn to_lyon(p: DVec2) -> lyon_geom::Point<f64> {
+pub fn to_lyon(p: DVec2) -> lyon_geom::Point<f64> {
     lyon_geom::point(p.x, p.y)
 }
 
 /// The cubic with these control points, as lyon_geom's segment.
-pub(crate) fn lyon_cubic(
+pub fn lyon_cubic(
     p0: DVec2,
     p1: DVec2,
     p2: DVec2,
@@ -98,7 +98,7 @@ pub(crate) fn lyon_cubic(
 }
 
 /// The quadratic as lyon_geom's segment.
-pub(crate) fn lyon_quad(q: Quad) -> lyon_geom::QuadraticBezierSegment<f64> {
+pub fn lyon_quad(q: Quad) -> lyon_geom::QuadraticBezierSegment<f64> {
     lyon_geom::QuadraticBezierSegment {
         from: to_lyon(q[0]),
         ctrl: to_lyon(q[1]),
@@ -107,6 +107,6 @@ pub(crate) fn lyon_quad(q: Quad) -> lyon_geom::QuadraticBezierSegment<f64> {
 }
 
 /// lyon_geom's point as ours.
-pub(crate) fn from_lyon(p: lyon_geom::Point<f64>) -> DVec2 {
+pub fn from_lyon(p: lyon_geom::Point<f64>) -> DVec2 {
     DVec2::new(p.x, p.y)
 }

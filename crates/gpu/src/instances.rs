@@ -10,11 +10,12 @@ use std::ops::Range;
 
 use glam::{DMat3, DVec2};
 
-use crate::Error;
-use crate::camera::Camera;
-use crate::geometry::Rect;
-use crate::gpu::{GpuContext, kit};
-use crate::scene::Scene;
+use glyphscope_core::Error;
+use glyphscope_core::camera::Camera;
+use glyphscope_core::geometry::Rect;
+use glyphscope_core::scene::Scene;
+
+use crate::{GpuContext, kit};
 
 /// `GlyphInstance` as WGSL lays it out in a storage buffer (mat3x3 columns are padded
 /// to 16 bytes).

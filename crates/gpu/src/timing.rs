@@ -2,7 +2,7 @@
 //! the CPU. The measured frame loop and the app's live pane timer both time with it.
 
 use super::context::GpuContext;
-use crate::Error;
+use glyphscope_core::Error;
 
 /// Bytes of one resolved timestamp.
 const TIMESTAMP_BYTES: u64 = 8;

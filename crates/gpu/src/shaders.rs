@@ -1,10 +1,10 @@
-//! Shaders as they are compiled: a method's file or files of `shaders/`, concatenated
-//! in order and prefixed with the shared `common.wgsl`. Each method names its own files
-//! ([`crate::method_shader!`]); the naga test validates exactly these sources, for every
-//! method of the registry.
+//! Shaders as they are compiled: a method's file or files of its crate's `shaders/`,
+//! concatenated in order and prefixed with the shared `common.wgsl` (this crate's). Each
+//! method names its own files ([`crate::method_shader!`]); the naga test validates
+//! exactly these sources, for every method of the registry.
 
 /// Shared WGSL prepended to every shader.
-pub const COMMON_WGSL: &str = include_str!("../../shaders/common.wgsl");
+pub const COMMON_WGSL: &str = include_str!("../shaders/common.wgsl");
 
 /// Curves evaluated per pixel at the top of every cost heat map's scale: `COST_SCALE`
 /// in the shaders, and the legend's label.
@@ -43,11 +43,12 @@ impl Shader {
 }
 
 /// The [`Shader`] of `shaders/$file`, or of several files of `shaders/` concatenated in
-/// the order given (the first names the module), wherever the module naming it sits.
+/// the order given (the first names the module): the `shaders/` folder of the crate
+/// whose code names it (each crate packages its own shaders).
 #[macro_export]
 macro_rules! method_shader {
     ($file:literal $(, $more:literal)* $(,)?) => {
-        $crate::gpu::shaders::Shader {
+        $crate::shaders::Shader {
             file: $file,
             files: &[$file $(, $more)*],
             body: concat!(
