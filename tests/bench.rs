@@ -10,7 +10,7 @@ use std::path::Path;
 use std::process::Output;
 
 use common::binary::{run, scratch};
-use glyphscope::methods::{self, registry};
+use glyphscope::methods::registry;
 use serde_json::Value;
 
 fn succeeds(args: &[&str]) -> Output {
@@ -284,10 +284,7 @@ fn scaling_series_grow_and_are_reported() {
                 assert!(held > 0, "{what}");
                 // The two that cache glyphs in a texture: the atlas's coverage bitmaps,
                 // msdf's distance fields.
-                let textured = [
-                    registry::baseline().name,
-                    methods::peers::msdf::params::NAME,
-                ];
+                let textured = [registry::baseline().name, "msdf"];
                 if textured.contains(&cost["method"].as_str().unwrap()) {
                     let cache = cost["cache_bytes"].as_u64().unwrap();
                     assert!(cache > 0 && cache < held, "{what}: its texture, within");

@@ -919,7 +919,7 @@ fn render_draws_the_peers_and_refuses_what_they_cannot_draw() {
         assert!(error["edge"]["pixels"].as_u64().unwrap() > 0, "{peer}");
         assert!(error["edge"]["mae_255"].as_f64().unwrap() > 0.0, "{peer}");
         // msdf draws through the quads every method shares: any camera, a tilt too.
-        if peer == glyphscope::methods::peers::msdf::params::NAME {
+        if peer == "msdf" {
             run_ok(&[
                 "render",
                 "--case",

@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 unique() {
-    cargo tree --offline -p "$1" -e normal --prefix none 2>/dev/null |
+    cargo tree --offline -e normal --prefix none -p "$@" 2>/dev/null |
         sed 's/ (\*)//; s/ (proc-macro)//' | sort -u | wc -l
 }
 lines() {
@@ -18,5 +18,7 @@ echo "|---|---:|---:|"
 for crate in core gpu text; do
     echo "| glyphscope-$crate | $(unique "glyphscope-$crate") | $(lines "crates/$crate/src") |"
 done
-echo "| glyphscope | $(unique glyphscope) | $(lines src) |"
+echo "| glyphscope (default: explorer and every peer) | $(unique glyphscope) | $(lines src) |"
+echo "| glyphscope, explorer without peers (\`--no-default-features --features app\`) | $(unique glyphscope --no-default-features --features app) | |"
+echo "| glyphscope, command line without peers (\`--no-default-features\`) | $(unique glyphscope --no-default-features) | |"
 echo "| glyphon (peer, for comparison) | $(unique glyphon) | — |"

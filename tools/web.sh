@@ -45,7 +45,7 @@ build)
         fail "wasm-bindgen-cli $want is needed (have: ${have:-none}): tools/web.sh setup"
     fi
     # The library as a cdylib, for the web only: the native build stays an rlib.
-    cargo rustc --lib --release --target wasm32-unknown-unknown --crate-type cdylib
+    cargo rustc -p glyphscope --lib --release --target wasm32-unknown-unknown --crate-type cdylib
     mkdir -p "$out"
     wasm-bindgen --target web --no-typescript --out-dir "$out" \
         "${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/release/glyphscope.wasm"

@@ -1,7 +1,7 @@
 // Draws a pane of the explorer: a coverage texture (a method's target, or the reference
 // uploaded into one) turned into the picture to show, each texel a block of
 // `block`×`block` framebuffer pixels (1 unless magnified; nearest, never filtered).
-// Prefixed with shaders/common.wgsl for `heat_color`.
+// Prefixed with crates/gpu/shaders/common.wgsl for `heat_color`.
 
 struct Composite {
     // The pane's top-left corner in framebuffer pixels, and its size.

@@ -18,7 +18,7 @@ use std::path::{Path, PathBuf};
 
 use glam::{DMat3, DVec3, Mat3};
 
-use super::method_settings::baseline_cache_param;
+use super::method_settings::{SHIPPED, baseline_cache_param};
 use super::result::Rounds;
 use super::side_run::{SideRun, time_round, write_report};
 use super::ui;
@@ -27,7 +27,7 @@ use crate::camera::Camera;
 use crate::effort::Effort;
 use crate::gpu::{Channels, CoverageTarget, GpuContext};
 use crate::methods::atlas::{self, auto_cache_size};
-use crate::methods::peers::glyphon;
+use crate::methods::registry;
 use crate::methods::winding;
 use crate::methods::{Method, frame};
 use crate::metrics;
@@ -321,32 +321,32 @@ pub fn run_to(
             Case::new(
                 STILL,
                 false,
-                glyphon::NAME,
+                SHIPPED,
                 Box::new(|| Ok(Box::new(Library::new(false)) as Box<dyn Method>)),
             ),
             Case::new(
                 MOVING,
                 true,
-                glyphon::NAME,
+                SHIPPED,
                 Box::new(|| Ok(Box::new(Library::new(true)) as Box<dyn Method>)),
             ),
             Case::new(
                 "winding",
                 false,
-                glyphon::NAME,
+                SHIPPED,
                 Box::new(|| winding::INFO.create(&[])),
             ),
             Case::new(
                 "atlas",
                 false,
-                glyphon::NAME,
+                SHIPPED,
                 Box::new(move || atlas::INFO.create(&cache)),
             ),
             Case::new(
-                glyphon::NAME,
+                SHIPPED,
                 false,
-                glyphon::NAME,
-                Box::new(|| glyphon::INFO.create(&[])),
+                SHIPPED,
+                Box::new(|| registry::create(SHIPPED, &[])),
             ),
         ];
         let timed = measure(&gpu, &timing, cap_s, &scene, &camera, &cases)?;
@@ -412,10 +412,22 @@ fn measure_ui(gpu: &GpuContext, timing: &Rounds, cap_s: f64) -> Result<Vec<Timed
             .map(|l| (l.text.clone(), l.size_px, l.x, l.y))
             .collect();
         Box::new(move || {
-            // A peer behind the net, as every row the registry makes.
-            Ok(crate::methods::guarded::Guarded::wrap(Box::new(
-                glyphon::GlyphonLabels::new(font.clone(), labels.clone(), moving),
-            )))
+            #[cfg(feature = "glyphon")]
+            {
+                // A peer behind the net, as every row the registry makes.
+                Ok(crate::methods::guarded::Guarded::wrap(Box::new(
+                    crate::methods::peers::glyphon::GlyphonLabels::new(
+                        font.clone(),
+                        labels.clone(),
+                        moving,
+                    ),
+                )))
+            }
+            #[cfg(not(feature = "glyphon"))]
+            {
+                let _ = (&font, &labels, moving);
+                registry::create(SHIPPED, &[])
+            }
         })
     };
     const GLYPHON_STILL: &str = "glyphon, labels still";
@@ -496,7 +508,7 @@ fn write_stages(md: &mut String, timed: &[Timed]) {
         md,
         "\nWhere a moving frame of the labels goes (GPU + CPU ms, each stage the difference \
          from the row above: the frame with the coverage shader cut short after it, \
-         `STAGE` in shaders/winding.wgsl):\n\n| part | ms | share |\n|---|---:|---:|"
+         `STAGE` in crates/text/shaders/winding.wgsl):\n\n| part | ms | share |\n|---|---:|---:|"
     );
     let total = frame_of(UI_MOVING).unwrap_or(f64::NAN);
     let mut before = 0.0;

@@ -36,7 +36,7 @@ pub fn ratio_to_shipped(result: &BenchResult, case: &Measurement) -> Option<f64>
     if let Some(r) = case.ratio_glyphon {
         return Some(r.value);
     }
-    let shipped = result.default_case_in(SHIPPED.name, &case.scene, case.scene_camera)?;
+    let shipped = result.default_case_in(SHIPPED, &case.scene, case.scene_camera)?;
     Some(case.frame_ms? / shipped.frame_ms?)
 }
 
@@ -65,7 +65,7 @@ pub fn atlas_cell(result: &BenchResult, case: &Measurement, suffix: &str) -> Str
 /// the view (the peers' table says why), `—` where it was not run.
 pub fn shipped_cell(result: &BenchResult, case: &Measurement, suffix: &str) -> String {
     let refused = result
-        .refusal_in(SHIPPED.name, &case.scene, case.scene_camera)
+        .refusal_in(SHIPPED, &case.scene, case.scene_camera)
         .is_some();
     match ratio_cell(case.ratio_glyphon, ratio_to_shipped(result, case), suffix) {
         Some(cell) => cell,

@@ -713,5 +713,5 @@ fn time_round(
 
 /// Whether `case` is glyphon's default, the other figure every case is divided by.
 fn is_shipped_default(case: &Measurement) -> bool {
-    case.method == super::method_settings::SHIPPED.name && case.settings() == "default"
+    case.method == super::method_settings::SHIPPED && case.settings() == "default"
 }

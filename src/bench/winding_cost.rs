@@ -17,7 +17,7 @@ use crate::metrics;
 use crate::scene::Scene;
 
 /// The method this section breaks down: its stages are its shader's (`STAGE` in
-/// shaders/winding.wgsl) and its counts its own counting passes, which no registry row
+/// crates/text/shaders/winding.wgsl) and its counts its own counting passes, which no registry row
 /// describes, so this section names it; the run measures it wherever the method is
 /// measured.
 pub const METHOD: &MethodInfo = &winding::INFO;
@@ -124,7 +124,7 @@ pub fn markdown(result: &BenchResult, md: &mut String) {
     let _ = writeln!(
         md,
         "\nGPU time of a frame with the shader cut short after each stage (`STAGE` in \
-         shaders/winding.wgsl), each the difference from the stage before: *quads* \
+         crates/text/shaders/winding.wgsl), each the difference from the stage before: *quads* \
          (rasterizing and blending: fragments that write 1 at once), *setup* \
          (derivatives, the pixel's frame, its band), *walk* (each visited entry's curve \
          ends loaded, mapped into the pixel's frame and sorted into its zone), *right* \

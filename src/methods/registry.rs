@@ -32,9 +32,13 @@ pub const METHODS: &[&MethodInfo] = &[
     &super::xor_stencil::INFO,
     &super::tessellation::INFO,
     &super::atlas::INFO,
+    #[cfg(feature = "vello")]
     &super::peers::vello::INFO,
+    #[cfg(feature = "glyphon")]
     &super::peers::glyphon::INFO,
+    #[cfg(feature = "vello-cpu")]
     &super::peers::vello_cpu::INFO,
+    #[cfg(feature = "msdf")]
     &super::peers::msdf::INFO,
 ];
 
@@ -50,8 +54,27 @@ pub fn param_specs(name: &str) -> &'static [ParamSpec] {
     find(name).map_or(&[], |m| m.params)
 }
 
-/// The method called `name`, or an error listing the names there are.
+/// The peers this build leaves out, each with the feature that builds it in.
+const LEFT_OUT: &[(&str, &str)] = &[
+    #[cfg(not(feature = "vello"))]
+    ("vello", "vello"),
+    #[cfg(not(feature = "glyphon"))]
+    ("glyphon", "glyphon"),
+    #[cfg(not(feature = "vello-cpu"))]
+    ("vello-cpu", "vello-cpu"),
+    #[cfg(not(feature = "msdf"))]
+    ("msdf", "msdf"),
+];
+
+/// The method called `name`, or an error listing the names there are (or, for a peer
+/// this build leaves out, the feature that builds it in).
 pub fn find(name: &str) -> Result<&'static MethodInfo, Error> {
+    if let Some((_, feature)) = LEFT_OUT.iter().find(|(peer, _)| *peer == name) {
+        return Err(Error::Input(format!(
+            "'{name}' is a peer this build of glyphscope leaves out: build it with \
+             `--features {feature}` (or the default features)"
+        )));
+    }
     METHODS
         .iter()
         .copied()

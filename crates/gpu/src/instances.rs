@@ -1,5 +1,5 @@
 //! Per-instance data for the methods that draw each glyph instance through its own
-//! transform (`GlyphInstance` in `shaders/common.wgsl`): the homography from the glyph's
+//! transform (`GlyphInstance` in `crates/gpu/shaders/common.wgsl`): the homography from the glyph's
 //! local font units to image pixels, its inverse, and which distinct glyph it draws.
 //!
 //! Rewritten every frame, since the camera moves; composed in f64 and rounded to f32

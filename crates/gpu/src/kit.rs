@@ -55,7 +55,7 @@ impl Slot {
 
 /// Texels a row of a [`data_texture`]: texel `i` lies at (i mod this, i / this). A
 /// power of two within WebGPU's least 2D texture size (8192), so that a shader finds a
-/// texel by a mask and a shift (`data_texel` in shaders/winding.wgsl).
+/// texel by a mask and a shift (`data_texel` in crates/text/shaders/winding.wgsl).
 pub const DATA_TEXTURE_WIDTH: u32 = 4096;
 
 /// A texture holding `items` as a list of texels of `format` (`R32Uint`, 4 bytes, or

@@ -12,7 +12,7 @@
 //   sample along x and y, each crossing anti-aliased by its tangent line, the two rays
 //   blended by how well each sees an edge (`rays_pixel`).
 //
-// The three files are one module (method_shader! in src/gpu/shaders.rs concatenates
+// The three files are one module (method_shader! in crates/gpu/src/shaders.rs concatenates
 // them): each calls into the others by name.
 //
 // Every computation is in the glyph's local coordinates (font units), relative to the
@@ -64,7 +64,7 @@ struct Band {
 // The bands, the band lists and the curves are data textures (kit::data_texture): a
 // fragment reads its band, and its walk a list entry and a curve at every step; a
 // software device fetches texels for a SIMD group at once where it reads a storage
-// buffer lane by lane (src/methods/winding/uploaded.rs).
+// buffer lane by lane (crates/text/src/winding/uploaded.rs).
 @group(1) @binding(1) var band_texels: texture_2d<u32>;
 @group(1) @binding(2) var band_curves: texture_2d<u32>;
 @group(1) @binding(3) var curve_texels: texture_2d<u32>;
@@ -122,7 +122,7 @@ override EVEN_ODD: bool = false;  // fill rule; nonzero by default
 override AXIS: bool = false;      // aa=area: the instances' axes are the image's (no
                                   // rotation, skew or tilt): the pixel is a rectangle
 override SQUARE: bool = false;   // aa=area, not AXIS: the instances' pixel steps lean
-                                  // apart (src/geometry: steps_lean_apart), so a
+                                  // apart (crates/core/src/geometry: steps_lean_apart), so a
                                   // curve across a pixel is integrated in the pixel's
                                   // own square frame (`across_square`)
 override GRID: bool = true;       // aa=area: the draw's glyphs may need the sub-pixel
@@ -131,7 +131,7 @@ override USE_BANDS: bool = true;  // false: every curve of the glyph for every r
 override OVERLAY: u32 = 0u;       // 0 none, 1 curve classes, 2 cost heat map, 3 count,
                                   // 4 and 5 the cost breakdown's counts, 6 the text
                                   // library's colour over the caller's target
-// aa=area cut short, for the cost breakdown (src/methods/winding/cost.rs) to time each
+// aa=area cut short, for the cost breakdown (crates/text/src/winding/cost.rs) to time each
 // stage by the difference from the one before: 0 writes 1 at once (rasterizing, the
 // quads), 1 stops after the per-fragment setup (derivatives, the pixel's frame, its
 // band), 2 after the band walk (each entry's curve ends loaded, mapped and sorted into

@@ -23,7 +23,7 @@
 // all of them): the terms are written without loops, each curve once through the same
 // straight code.
 //
-// Mirrored function for function, in f64, by src/methods/winding/area.rs, whose
+// Mirrored function for function, in f64, by crates/text/src/winding/area.rs, whose
 // comments derive it.
 
 struct Bezier {
@@ -322,7 +322,7 @@ fn across_term(c: Bezier, f: PixelFrame) -> f32 {
 }
 
 // ∫ G dv along a curve across the pixel, in the pixel's square frame (`SQUARE`: the
-// instance's steps lean apart, see `steps_lean_apart` in src/geometry/mod.rs). Two
+// instance's steps lean apart, see `steps_lean_apart` in crates/core/src/geometry/mod.rs). Two
 // 1-forms have the pixel's indicator as their derivative: ω_rows = G dv, the one the
 // bands need (it vanishes off the pixel's rows and left of it), and ω_square = c(α)
 // c′(β) dβ with c(x) = clamp(x + ½, 0, 1), the square's own. Their difference is exact,

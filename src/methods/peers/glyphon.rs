@@ -19,7 +19,8 @@ use glyphon::{
     SwashCache, TextArea, TextAtlas, TextBounds, TextRenderer, Viewport, Weight,
 };
 
-use super::{PeerImage, observed};
+use super::observed;
+use super::picture::PeerImage;
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::{CoverageTarget, GpuContext};
@@ -278,7 +279,7 @@ fn atlas_viewport_renderer(gpu: &GpuContext) -> (TextAtlas, Viewport, TextRender
         &gpu.device,
         &gpu.queue,
         &cache,
-        super::PEER_FORMAT,
+        super::picture::PEER_FORMAT,
         ColorMode::Web,
     );
     let renderer = TextRenderer::new(
@@ -459,7 +460,7 @@ impl Method for GlyphonLabels {
     }
 
     fn peer_gpu_time(&mut self, gpu: &GpuContext) -> Result<Option<PeerGpuTime>, Error> {
-        super::gpu_time(self.image.as_ref(), gpu, 0.0)
+        super::picture::gpu_time(self.image.as_ref(), gpu, 0.0)
     }
 
     /// Only the texture glyphon draws into: its atlas's size is not in its API.
@@ -585,7 +586,7 @@ impl Method for Glyphon {
     }
 
     fn peer_gpu_time(&mut self, gpu: &GpuContext) -> Result<Option<PeerGpuTime>, Error> {
-        super::gpu_time(self.image.as_ref(), gpu, 0.0)
+        super::picture::gpu_time(self.image.as_ref(), gpu, 0.0)
     }
 
     /// Only the texture glyphon draws into: its atlas's size is not in its API.

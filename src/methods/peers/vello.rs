@@ -9,11 +9,13 @@
 //! pixel, large next to the glyphs' own cost; the first frame of each anti-aliasing
 //! mode compiles its shaders for several seconds. Both are vello's, measured as they are.
 
-use ::vello::peniko::{Color, Fill};
 use ::vello::{AaConfig, AaSupport, RenderParams, Renderer, RendererOptions};
 use glam::{DMat2, DVec2};
+use peniko::{Color, Fill};
 
-use super::{AffinePlacement, LinebenderScene, PeerImage, observed};
+use super::linebender::{AffinePlacement, LinebenderScene};
+use super::observed;
+use super::picture::PeerImage;
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::timing::Timestamps;
@@ -108,7 +110,7 @@ impl Vello {
                     });
                 out.draw_glyphs(font)
                     .font_size(font_size as f32)
-                    .glyph_transform(Some(super::affine(glyph, DVec2::ZERO)))
+                    .glyph_transform(Some(super::linebender::affine(glyph, DVec2::ZERO)))
                     .normalized_coords(coords)
                     .hint(false)
                     .brush(Color::WHITE)
@@ -117,7 +119,7 @@ impl Vello {
             LinebenderScene::Paths { paths, scene } => {
                 let place = AffinePlacement::of(NAME, scene, camera)?;
                 for (instance, pen) in scene.instances.iter().zip(&place.pens) {
-                    let to_image = super::affine(place.linear, *pen);
+                    let to_image = super::linebender::affine(place.linear, *pen);
                     let path = &paths[instance.glyph as usize];
                     out.fill(Fill::NonZero, to_image, Color::WHITE, None, path);
                 }
@@ -194,7 +196,7 @@ impl Method for Vello {
             Some(t) => t.read_intervals(gpu)?.first().copied().unwrap_or(0.0),
             None => 0.0,
         };
-        super::gpu_time(self.image.as_ref(), gpu, submitted_ms)
+        super::picture::gpu_time(self.image.as_ref(), gpu, submitted_ms)
     }
 
     /// Only the texture vello renders into: its renderer's buffers are allocated per

@@ -6,12 +6,14 @@
 //! rasterization is the frame's CPU time; the pixmap's upload runs before the frame,
 //! untimed, and the copy into the coverage target is the harness's.
 
-use ::vello::peniko::Fill;
 use glam::{DMat2, DVec2};
+use peniko::Fill;
 use vello_cpu::color::palette::css::WHITE;
 use vello_cpu::{Pixmap, RasterizerSettings, RenderContext, RenderMode, Resources};
 
-use super::{AffinePlacement, LinebenderScene, PeerImage, observed};
+use super::linebender::{AffinePlacement, LinebenderScene};
+use super::observed;
+use super::picture::PeerImage;
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::{CoverageTarget, GpuContext};
@@ -108,7 +110,7 @@ impl VelloCpu {
                     });
                 ctx.glyph_run(&mut self.resources, font)
                     .font_size(font_size as f32)
-                    .glyph_transform(super::affine(glyph, DVec2::ZERO))
+                    .glyph_transform(super::linebender::affine(glyph, DVec2::ZERO))
                     .normalized_coords(coords)
                     .hint(false)
                     .fill_glyphs(glyphs)
@@ -117,7 +119,7 @@ impl VelloCpu {
             LinebenderScene::Paths { paths, scene } => {
                 let place = AffinePlacement::of(NAME, scene, camera)?;
                 for (instance, pen) in scene.instances.iter().zip(&place.pens) {
-                    ctx.set_transform(super::affine(place.linear, *pen));
+                    ctx.set_transform(super::linebender::affine(place.linear, *pen));
                     ctx.fill_path(&paths[instance.glyph as usize]);
                 }
             }
@@ -190,7 +192,7 @@ impl Method for VelloCpu {
     }
 
     fn peer_gpu_time(&mut self, gpu: &GpuContext) -> Result<Option<PeerGpuTime>, Error> {
-        super::gpu_time(self.image.as_ref(), gpu, 0.0)
+        super::picture::gpu_time(self.image.as_ref(), gpu, 0.0)
     }
 
     /// The texture its pixels are uploaded to (the pixmap itself is as large, on the

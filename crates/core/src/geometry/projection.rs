@@ -30,7 +30,7 @@ pub fn keeps_axes(to_image: &DMat3) -> bool {
 /// rises to the right and the other to the left, or one runs along an axis (the
 /// products of their components have no common sign). A curve monotone in x and y then
 /// turns along at most one of the pixel's own axes — the condition of `winding`'s
-/// square frame (`SQUARE` in shaders/winding_area.wgsl). Rotations, mirrors and scales
+/// square frame (`SQUARE` in crates/text/shaders/winding_area.wgsl). Rotations, mirrors and scales
 /// always lean apart; a skew or a perspective tilt may not. Each component of a step,
 /// times w² (w the homogeneous coordinate), is affine in the image point, so the corners
 /// of `view` bound it; a product of those bounds that may be positive anywhere, or a

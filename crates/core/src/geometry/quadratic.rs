@@ -2,7 +2,7 @@
 //! blossoming, where x or y turns, the parameter at a value, the integrals a closed
 //! chain of them encloses, and the winding number they make around a point.
 //!
-//! `shaders/winding_area.wgsl` has the f32 twins of [`blossom_value`], [`point_at`],
+//! `crates/text/shaders/winding_area.wgsl` has the f32 twins of [`blossom_value`], [`point_at`],
 //! [`subcurve`], [`monomial`], [`t_at`] and [`integral_x_dy`], under the same names:
 //! `winding`'s CPU mirror of that shader (`methods/winding/area.rs`) calls these.
 

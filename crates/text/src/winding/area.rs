@@ -1,9 +1,9 @@
 //! `aa=area`: the exact box-filter coverage of one pixel, in f64 — the CPU mirror of
-//! `shaders/winding_area.wgsl`, function for function, so that the shader's
+//! `crates/text/shaders/winding_area.wgsl`, function for function, so that the shader's
 //! formulation is checked here against closed forms. [`pixel_winding`] is the shader's
 //! `area_winding` over every curve (no bands), and [`curve_term`] the zone test in its
 //! loop; [`PixelFrame`] is `pixel_frame` and `frame_map`, [`zone`] `area_zone`; the
-//! rest keep their names. [`fill`] is `fill` in `shaders/winding.wgsl`. The shader's
+//! rest keep their names. [`fill`] is `fill` in `crates/text/shaders/winding.wgsl`. The shader's
 //! `area_pixel` (fill(F), or the mean over a grid of sub-pixels where contours overlap)
 //! has no mirror here, nor its `AXIS` draws' rounding of the pixel's steps to the axes;
 //! `stretch` and `right_of` here are steps the shader writes inline, and the frame's

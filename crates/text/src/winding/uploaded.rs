@@ -1,4 +1,4 @@
-//! `@group(1)` of shaders/winding.wgsl: a [`GlyphData`] on the GPU, as the `winding` row
+//! `@group(1)` of crates/text/shaders/winding.wgsl: a [`GlyphData`] on the GPU, as the `winding` row
 //! and the text library both bind it. The glyphs, read once per quad, are a storage
 //! buffer; the bands, read once per fragment, the band lists and the curves, read at
 //! every step of a pixel's walk, are data textures ([`kit::data_texture`]): on lavapipe
