@@ -36,20 +36,33 @@ fn every_shader_parses_and_validates() {
     );
 }
 
+/// The example of your own method (docs/your-method.md), in the source it is compiled
+/// as: the prelude, then the file.
+#[test]
+fn the_example_user_method_validates() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/wgsl/supersampled.wgsl");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let source = glyphscope::text::winding::user_source(&text);
+    validate("supersampled.wgsl", &source).unwrap();
+}
+
 #[test]
 fn every_wgsl_file_belongs_to_a_method() {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders");
-    for entry in std::fs::read_dir(&dir).expect("shaders/ exists") {
-        let name = entry
-            .expect("entry")
-            .file_name()
-            .to_string_lossy()
-            .into_owned();
-        if name.ends_with(".wgsl") && name != "common.wgsl" {
-            assert!(
-                shaders().any(|s| s.files.contains(&name.as_str())),
-                "shaders/{name} is no method's shader in the registry"
-            );
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for dir in [root.join("shaders"), root.join("crates/text/shaders")] {
+        for entry in std::fs::read_dir(&dir).expect("shaders/ exists") {
+            let name = entry
+                .expect("entry")
+                .file_name()
+                .to_string_lossy()
+                .into_owned();
+            if name.ends_with(".wgsl") && name != "common.wgsl" {
+                assert!(
+                    shaders().any(|s| s.files.contains(&name.as_str())),
+                    "{}/{name} is no method's shader in the registry",
+                    dir.display()
+                );
+            }
         }
     }
 }

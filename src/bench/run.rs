@@ -190,6 +190,10 @@ fn check(options: &BenchOptions, effort: &Effort) -> Result<Plan, Error> {
         distinct(&options.methods)
             .into_iter()
             .map(|name| {
+                // A user's file is measured as the rows are (`wgsl:PATH`).
+                if name.starts_with(crate::methods::user::PREFIX) {
+                    return registry::find(name);
+                }
                 measurable().find(|m| m.name == name).ok_or_else(|| {
                     let names: Vec<_> = measurable().map(|m| m.name).collect();
                     Error::Input(format!(

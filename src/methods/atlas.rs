@@ -48,7 +48,7 @@ pub const INFO: MethodInfo = MethodInfo {
     ],
     // Exact only at the size it cached: it claims nothing under a moving camera.
     claims: &[],
-    constructor: Some(|params| Ok(Box::new(Atlas::new(params)))),
+    constructor: Some(&|params| Ok(Box::new(Atlas::new(params)))),
 };
 
 pub const NAME: &str = "atlas";

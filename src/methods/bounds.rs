@@ -33,7 +33,7 @@ pub const INFO: MethodInfo = MethodInfo {
     colour: [127, 127, 127],
     bench: &[],
     claims: &[],
-    constructor: Some(|_| Ok(Box::<Bounds>::default())),
+    constructor: Some(&|_| Ok(Box::<Bounds>::default())),
 };
 
 pub const NAME: &str = "bounds";

@@ -26,11 +26,11 @@ pub enum Role {
     Peer,
 }
 
-/// Makes a GPU method from its parameters, checked against its rows.
-pub type Constructor = fn(&Params) -> Result<Box<dyn Method>, Error>;
+/// Makes a GPU method from its parameters, checked against its rows: a row writes a
+/// closure (`&|params| …`); a user's method (`wgsl:PATH`) one holding its source.
+pub type Constructor = &'static (dyn Fn(&Params) -> Result<Box<dyn Method>, Error> + Sync);
 
 /// One method, as everything that lists methods sees it.
-#[derive(Debug)]
 pub struct MethodInfo {
     /// The name `--method` takes.
     pub name: &'static str,
@@ -49,6 +49,15 @@ pub struct MethodInfo {
     /// Builds it from its parameters (None for the reference, which is not a GPU
     /// method); see [`MethodInfo::create`].
     pub constructor: Option<Constructor>,
+}
+
+impl std::fmt::Debug for MethodInfo {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("MethodInfo")
+            .field("name", &self.name)
+            .field("role", &self.role)
+            .finish_non_exhaustive()
+    }
 }
 
 impl MethodInfo {

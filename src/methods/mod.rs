@@ -153,5 +153,6 @@ pub mod peers;
 pub mod registry;
 pub mod sdf_cells;
 pub mod tessellation;
+pub mod user;
 pub mod winding;
 pub mod xor_stencil;

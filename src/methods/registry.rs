@@ -67,8 +67,12 @@ const LEFT_OUT: &[(&str, &str)] = &[
 ];
 
 /// The method called `name`, or an error listing the names there are (or, for a peer
-/// this build leaves out, the feature that builds it in).
+/// this build leaves out, the feature that builds it in). `wgsl:PATH` is a user's
+/// method, its row made from the file ([`super::user`]).
 pub fn find(name: &str) -> Result<&'static MethodInfo, Error> {
+    if name.starts_with(super::user::PREFIX) {
+        return super::user::find(name);
+    }
     if let Some((_, feature)) = LEFT_OUT.iter().find(|(peer, _)| *peer == name) {
         return Err(Error::Input(format!(
             "'{name}' is a peer this build of glyphscope leaves out: build it with \

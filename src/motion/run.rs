@@ -27,10 +27,23 @@ pub struct MethodSpec {
 }
 
 impl MethodSpec {
+    /// `NAME[:KEY=VALUE…]`, or `wgsl:PATH[:KEY=VALUE…]` for a user's method (the
+    /// path ends at the next colon).
     pub fn parse(text: &str) -> Result<MethodSpec, Error> {
-        let mut parts = text.trim().split(':');
-        let name = parts.next().unwrap_or_default().trim();
-        let info = registry::find(name)?;
+        let text = text.trim();
+        let user = crate::methods::user::PREFIX;
+        let (name, rest) = match text.strip_prefix(user) {
+            Some(after) => {
+                let end = after.find(':').unwrap_or(after.len());
+                (&text[..user.len() + end], &after[end..])
+            }
+            None => text.split_at(text.find(':').unwrap_or(text.len())),
+        };
+        let info = registry::find(name.trim())?;
+        let parts = rest
+            .strip_prefix(':')
+            .into_iter()
+            .flat_map(|r| r.split(':'));
         let params = parts
             .map(|p| {
                 crate::view_args::parse_key_value(p)

@@ -3,7 +3,7 @@
 //! its page in docs/methods/ does). Outside a claim's scope the method documents a known
 //! limitation, and the table still shows the measured numbers.
 
-use crate::methods::info::Claim;
+use crate::methods::info::{Claim, MethodInfo};
 use crate::methods::params::owned;
 use crate::methods::registry;
 
@@ -28,13 +28,16 @@ impl Variant {
 pub fn variants() -> Vec<Variant> {
     registry::METHODS
         .iter()
-        .flat_map(|m| {
-            m.claims.iter().map(|c| Variant {
-                label: c.label,
-                method: m.name,
-                params: c.params,
-                claim: c.claim,
-            })
-        })
+        .flat_map(|m| variants_of(m))
         .collect()
+}
+
+/// Every claimed setting of `method` (a registry row, or a user's file's row).
+pub fn variants_of(method: &'static MethodInfo) -> impl Iterator<Item = Variant> {
+    method.claims.iter().map(move |c| Variant {
+        label: c.label,
+        method: method.name,
+        params: c.params,
+        claim: c.claim,
+    })
 }

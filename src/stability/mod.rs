@@ -40,12 +40,17 @@ pub fn select_cases(names: Option<&[String]>) -> Result<Vec<HardCase>, Error> {
 }
 
 /// The variants named by `names` (all when None): a variant's label picks it, a method
-/// name picks all its variants.
+/// name picks all its variants, and `wgsl:PATH` a user's file with its claim.
 pub fn select_variants(names: Option<&[String]>) -> Result<Vec<Variant>, Error> {
-    let all = claims::variants();
+    let mut all = claims::variants();
     let Some(names) = names else {
         return Ok(all);
     };
+    for name in names {
+        if name.starts_with(crate::methods::user::PREFIX) {
+            all.extend(claims::variants_of(crate::methods::registry::find(name)?));
+        }
+    }
     for name in names {
         if !all.iter().any(|v| v.label == name || v.method == name) {
             let labels: Vec<_> = all.iter().map(|v| v.label).collect();
@@ -271,7 +276,9 @@ pub fn write_report(
         let Some((image, reference)) = &o.worst_images else {
             continue;
         };
-        let stem = format!("{}--{}", o.case, o.variant.replace(' ', "-"));
+        // A user's method's label is its path (`wgsl:dir/file.wgsl`): no folders.
+        let variant = o.variant.replace(' ', "-").replace(['/', ':', '\\'], "_");
+        let stem = format!("{}--{variant}", o.case);
         image.save_png(&dir.join(format!("{stem}.png")))?;
         let path = dir.join(format!("{stem}-error.png"));
         metrics::error_image(image, reference, 0.5)

@@ -138,6 +138,9 @@ override OVERLAY: u32 = 0u;       // 0 none, 1 curve classes, 2 cost heat map, 3
 // its zone, no term), 3 adds the terms of the curves right of the pixel, 4 is the whole
 // shader (the second pass: the curves across the pixel loaded whole and integrated).
 override STAGE: u32 = 4u;
+// A user's method (`--method wgsl:PATH`): `user_coverage` of the user's file (see
+// winding_user.wgsl) instead of either algorithm, on the same quads, data and target.
+override USER: bool = false;
 
 // The glyph quad, carrying its glyph's record as flat varyings: read once per vertex
 // rather than once per fragment (a software device reads storage lane by lane, each
@@ -218,7 +221,9 @@ fn fs_main(in: WindingQuad) -> @location(0) vec4<f32> {
     }
     // The algorithm: winding_area.wgsl's or winding_rays.wgsl's.
     var c: Coverage;
-    if AREA {
+    if USER {
+        c = Coverage(user_coverage(g, local, jx, jy), 0u);
+    } else if AREA {
         c = area_pixel(g, local, jx, jy);
     } else {
         c = rays_pixel(g, local, jx, jy);

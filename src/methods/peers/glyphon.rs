@@ -40,7 +40,7 @@ pub const INFO: MethodInfo = MethodInfo {
     colour: [23, 190, 207],
     bench: &[bench_at(&[], true), bench_at(&[("hint", "off")], false)],
     claims: &[observed(NAME)],
-    constructor: Some(|params| Ok(Box::new(Glyphon::new(params)))),
+    constructor: Some(&|params| Ok(Box::new(Glyphon::new(params)))),
 };
 
 pub const NAME: &str = "glyphon";

@@ -40,7 +40,7 @@ pub const INFO: MethodInfo = MethodInfo {
         bench_at(&[("aa", "msaa16")], false),
     ],
     claims: &[observed(NAME)],
-    constructor: Some(|params| Ok(Box::new(Vello::new(params)))),
+    constructor: Some(&|params| Ok(Box::new(Vello::new(params)))),
 };
 
 pub const NAME: &str = "vello";

@@ -33,7 +33,7 @@ pub const INFO: MethodInfo = MethodInfo {
     colour: [188, 189, 34],
     bench: &[bench_at(&[], true), bench_at(&[("mode", "quality")], false)],
     claims: &[observed(NAME)],
-    constructor: Some(|params| Ok(Box::new(VelloCpu::new(params)))),
+    constructor: Some(&|params| Ok(Box::new(VelloCpu::new(params)))),
 };
 
 pub const NAME: &str = "vello-cpu";

@@ -99,7 +99,7 @@ pub const INFO: MethodInfo = MethodInfo {
             },
         },
     ],
-    constructor: Some(|params| Ok(Box::new(SdfCells::new(params)))),
+    constructor: Some(&|params| Ok(Box::new(SdfCells::new(params)))),
 };
 
 const SHADER: Shader = crate::method_shader!("sdf_cells.wgsl");

@@ -76,7 +76,7 @@ pub const INFO: MethodInfo = MethodInfo {
                         0.6; four point samples cannot resolve several edges inside one pixel",
         },
     }],
-    constructor: Some(|params| Ok(Box::new(Tessellation::new(params)?))),
+    constructor: Some(&|params| Ok(Box::new(Tessellation::new(params)?))),
 };
 
 const SHADER: Shader = crate::method_shader!("tessellation.wgsl");

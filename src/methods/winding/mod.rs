@@ -97,7 +97,7 @@ pub const INFO: MethodInfo = MethodInfo {
             },
         },
     ],
-    constructor: Some(|params| Ok(Box::new(Winding::new(settings_from_params(params)?)))),
+    constructor: Some(&|params| Ok(Box::new(Winding::new(settings_from_params(params)?)))),
 };
 
 /// The overlays `winding` draws.

@@ -101,7 +101,7 @@ pub const INFO: MethodInfo = MethodInfo {
                         8-bit counters read a winding of 256 as 0",
         },
     }],
-    constructor: Some(|params| Ok(Box::new(XorStencil::new(params)))),
+    constructor: Some(&|params| Ok(Box::new(XorStencil::new(params)))),
 };
 
 pub struct XorStencil {

@@ -55,6 +55,7 @@ impl Winding {
     pub fn staged(settings: Settings, stage: Stage) -> Winding {
         Winding {
             settings,
+            user: None,
             stage,
             layout: None,
             pipelines: Vec::new(),

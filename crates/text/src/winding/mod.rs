@@ -49,8 +49,29 @@ pub const SHADER: Shader = glyphscope_gpu::method_shader!(
     "winding.wgsl",
     "winding_rays.wgsl",
     "winding_area.wgsl",
-    "winding_text.wgsl"
+    "winding_text.wgsl",
+    "winding_user.wgsl"
 );
+
+/// The stand-in for a user's `user_coverage` that [`SHADER`] ends with: a user's method
+/// is [`SHADER`] with this file replaced by theirs ([`user_source`]).
+pub const USER_STAND_IN: &str = include_str!("../../shaders/winding_user.wgsl");
+
+/// The full source of a user's method: [`SHADER`]'s, the user's WGSL (defining
+/// `user_coverage`, docs/your-method.md) in place of [`USER_STAND_IN`]. The user's text
+/// comes last, so its line `n` is the source's line `n + ` [`user_line_offset`].
+pub fn user_source(user_wgsl: &str) -> String {
+    let source = SHADER.source();
+    let prelude = source
+        .strip_suffix(USER_STAND_IN)
+        .expect("SHADER ends with the user stand-in");
+    format!("{prelude}{user_wgsl}")
+}
+
+/// Lines of [`user_source`] before the user's first.
+pub fn user_line_offset() -> usize {
+    user_source("").lines().count()
+}
 
 /// How a pixel's coverage is found.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -214,6 +235,8 @@ impl Output {
 
 pub struct Winding {
     settings: Settings,
+    /// A user's method: its full source ([`user_source`]), compiled with `USER` set.
+    user: Option<std::sync::Arc<str>>,
     /// Where the shader stops: [`Stage::Full`] but for the cost breakdown.
     stage: Stage,
     layout: Option<(wgpu::BindGroupLayout, wgpu::PipelineLayout)>,
@@ -236,6 +259,21 @@ impl Winding {
     /// The renderer with `settings`, drawing the whole shader.
     pub fn new(settings: Settings) -> Winding {
         Winding::staged(settings, Stage::Full)
+    }
+
+    /// A user's method: `source` ([`user_source`] of their file, checked by the caller)
+    /// drawn as `winding` draws, on `aa=rays`' data (every curve whole, in bands along x
+    /// and y) with `user_coverage` in place of the algorithm.
+    pub fn with_user_source(source: String) -> Winding {
+        let settings = Settings {
+            aa: Antialiasing::Rays,
+            samples: 1,
+            ..Settings::default()
+        };
+        Winding {
+            user: Some(source.into()),
+            ..Winding::staged(settings, Stage::Full)
+        }
     }
 
     pub fn settings(&self) -> Settings {
@@ -287,8 +325,17 @@ impl Winding {
             ("USE_BANDS", f64::from(u8::from(s.bands.is_some()))),
             ("OVERLAY", output.constant()),
             ("STAGE", self.stage.constant()),
+            ("USER", f64::from(u8::from(self.user.is_some()))),
         ];
-        let module = SHADER.module(&gpu.device);
+        let module = match &self.user {
+            Some(source) => gpu
+                .device
+                .create_shader_module(wgpu::ShaderModuleDescriptor {
+                    label: Some("user method"),
+                    source: wgpu::ShaderSource::Wgsl(std::borrow::Cow::Borrowed(source)),
+                }),
+            None => SHADER.module(&gpu.device),
+        };
         let layout = &self.layout(gpu).1;
         let pipeline = PipelineBuilder::new(NAME, layout, &module)
             .constants(&constants)

@@ -60,7 +60,7 @@ pub const INFO: MethodInfo = MethodInfo {
         bench_at(&[("range", "2")], false),
     ],
     claims: CLAIMS,
-    constructor: Some(|params| Ok(Box::new(Msdf::new(Settings::from_params(params))))),
+    constructor: Some(&|params| Ok(Box::new(Msdf::new(Settings::from_params(params))))),
 };
 
 /// Observed rows of the stability sweep: the default, and the settings its known

@@ -1,0 +1,204 @@
+//! A WGSL file is a method (`--method wgsl:PATH`, docs/your-method.md), run as a user
+//! runs it: the example drawn and measured against the reference within its own claim,
+//! a function that draws nothing measured as the error it is, a broken file refused in
+//! one line that names its place, and the survey holding a file to the claim it makes.
+
+mod common;
+
+use std::path::Path;
+
+use common::binary::{run, scratch};
+
+const EXAMPLE: &str = "wgsl:examples/wgsl/supersampled.wgsl";
+
+/// `render --stats` of `method` on a line of text at 24 px/em, as JSON.
+fn measured(method: &str, name: &str) -> serde_json::Value {
+    let out = scratch(&format!("{name}.png"));
+    let stats = scratch(&format!("{name}.json"));
+    let error = scratch(&format!("{name}-error.png"));
+    let result = run(&[
+        "render",
+        "--text",
+        "Hamburgefonstiv",
+        "--size",
+        "24",
+        "--method",
+        method,
+        "--out",
+        out.to_str().unwrap(),
+        "--stats",
+        stats.to_str().unwrap(),
+        "--error-image",
+        error.to_str().unwrap(),
+    ]);
+    assert!(
+        result.status.success(),
+        "{}",
+        String::from_utf8_lossy(&result.stderr)
+    );
+    serde_json::from_str(&std::fs::read_to_string(stats).unwrap()).unwrap()
+}
+
+/// A file of `text` in the scratch folder, as a method name.
+fn user_file(name: &str, text: &str) -> (String, std::path::PathBuf) {
+    let path = scratch(name);
+    std::fs::write(&path, text).unwrap();
+    (format!("wgsl:{}", path.display()), path)
+}
+
+#[test]
+fn the_example_is_measured_within_its_claim_and_a_blank_function_is_not() {
+    let json = measured(EXAMPLE, "example");
+    assert_eq!(json["method"], EXAMPLE);
+    let error = &json["error"];
+    let max = error["max"].as_f64().unwrap();
+    let mae = error["mae_255"].as_f64().unwrap();
+    println!("{EXAMPLE} on Hamburgefonstiv at 24 px/em: max {max:.4}, MAE {mae:.3}/255");
+    // Its header's claim, set before measuring from what 4×4 samples resolve.
+    assert!(max <= 0.3 && mae <= 8.0, "{error}");
+    // Sampled, not integrated: an edge pixel is off by a step of the grid somewhere.
+    assert!(max > 0.02, "{error}");
+    assert!(error["edge"]["pixels"].as_u64().unwrap() > 0, "{error}");
+    // The same pipeline with a function that covers nothing: the glyphs' insides are
+    // off by all of their coverage, so the measurement sees the user's function.
+    let (blank, _) = user_file(
+        "blank.wgsl",
+        "fn user_coverage(g: Glyph, p: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> f32 {\n    return 0.0;\n}\n",
+    );
+    let json = measured(&blank, "blank");
+    assert!(
+        json["error"]["max"].as_f64().unwrap() > 0.99,
+        "{}",
+        json["error"]
+    );
+}
+
+#[test]
+fn a_broken_file_is_one_line_naming_its_place() {
+    let (syntax, path) = user_file(
+        "syntax.wgsl",
+        "// a comment\nfn user_coverage(g: Glyph, p: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> f32 {\n    let x = 1.0\n    return x;\n}\n",
+    );
+    let (types, types_path) = user_file(
+        "types.wgsl",
+        "fn user_coverage(g: Glyph, p: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> f32 {\n    return 1u;\n}\n",
+    );
+    let missing = "wgsl:no/such/file.wgsl".to_owned();
+    for (method, place) in [
+        // The missing `;` is found at the next token: line 4, column 5.
+        (syntax, format!("{}:4:5:", path.display())),
+        (types, format!("{}:", types_path.display())),
+        (missing, "no/such/file.wgsl:".into()),
+    ] {
+        let out = scratch("broken.png");
+        let result = run(&[
+            "render",
+            "--text",
+            "a",
+            "--size",
+            "12",
+            "--method",
+            &method,
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        assert_eq!(result.status.code(), Some(2), "{method}: {stderr}");
+        assert_eq!(stderr.trim().lines().count(), 1, "{method}: {stderr}");
+        assert!(stderr.contains(&place), "{method}: {stderr} lacks {place}");
+        assert!(!stderr.contains("panicked"), "{stderr}");
+    }
+}
+
+#[test]
+fn the_survey_holds_a_file_to_the_claim_it_makes() {
+    let survey = |method: &str, name: &str| {
+        let out = scratch(name);
+        let result = run(&[
+            "survey",
+            "--fonts",
+            "fonts/DejaVuSans.ttf",
+            "--sizes",
+            "24",
+            "--transforms",
+            "still",
+            "--glyphs",
+            "36-45",
+            "--methods",
+            method,
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let rows = std::fs::read_to_string(Path::new(&out).join("survey.csv")).unwrap_or_default();
+        (result, rows)
+    };
+    let (result, rows) = survey(EXAMPLE, "survey-example");
+    assert!(
+        result.status.success(),
+        "{}",
+        String::from_utf8_lossy(&result.stderr)
+    );
+    assert!(
+        rows.contains(",0.3/8,"),
+        "the claim's bound in the rows:\n{rows}"
+    );
+    assert!(rows.lines().skip(1).all(|l| l.contains(",ok,")), "{rows}");
+    // The same function claiming what it cannot keep: the survey says so and exits 1.
+    let text = std::fs::read_to_string("examples/wgsl/supersampled.wgsl")
+        .unwrap()
+        .replace("// claim: max=0.3 mae=8", "// claim: max=0.01 mae=0.1");
+    let (strict, _) = user_file("strict.wgsl", &text);
+    let (result, rows) = survey(&strict, "survey-strict");
+    assert_eq!(
+        result.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&result.stderr)
+    );
+    assert!(rows.contains(",broken,"), "{rows}");
+}
+
+#[test]
+fn the_stability_sweep_and_motion_run_a_file_too() {
+    let out = scratch("stability");
+    let result = run(&[
+        "stability",
+        "--quick",
+        "--cases",
+        "collinear-quadratic",
+        "--methods",
+        EXAMPLE,
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let stdout = String::from_utf8_lossy(&result.stdout);
+    // 0: its claim held; 1: broken (said on stderr). Either way it ran, and its column
+    // is the file's.
+    assert!(
+        matches!(result.status.code(), Some(0 | 1)),
+        "{}",
+        String::from_utf8_lossy(&result.stderr)
+    );
+    assert!(stdout.contains(EXAMPLE), "{stdout}");
+    let out = scratch("motion");
+    let result = run(&[
+        "motion",
+        "--text",
+        "Ob",
+        "--size",
+        "20",
+        "--frames",
+        "3",
+        "--method",
+        &format!("winding,{EXAMPLE}"),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        result.status.success(),
+        "{}",
+        String::from_utf8_lossy(&result.stderr)
+    );
+    let summary = std::fs::read_to_string(out.join("motion.md")).unwrap();
+    assert!(summary.contains(EXAMPLE), "{summary}");
+}
