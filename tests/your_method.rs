@@ -84,10 +84,14 @@ fn a_broken_file_is_one_line_naming_its_place() {
         "fn user_coverage(g: Glyph, p: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> f32 {\n    return 1u;\n}\n",
     );
     let missing = "wgsl:no/such/file.wgsl".to_owned();
+    // The path ends at `.wgsl`: what follows is a parameter, which a file takes none of.
+    let with_param = format!("{EXAMPLE}:samples=4");
     for (method, place) in [
+        (with_param, "samples".to_owned()),
         // The missing `;` is found at the next token: line 4, column 5.
         (syntax, format!("{}:4:5:", path.display())),
-        (types, format!("{}:", types_path.display())),
+        // A value of the wrong type is found at the statement that returns it.
+        (types, format!("{}:2:", types_path.display())),
         (missing, "no/such/file.wgsl:".into()),
     ] {
         let out = scratch("broken.png");
@@ -180,6 +184,25 @@ fn the_stability_sweep_and_motion_run_a_file_too() {
         String::from_utf8_lossy(&result.stderr)
     );
     assert!(stdout.contains(EXAMPLE), "{stdout}");
+    // A copy claiming what 16 samples cannot keep breaks its claim: exit 1.
+    let text = std::fs::read_to_string("examples/wgsl/supersampled.wgsl")
+        .unwrap()
+        .replace("// claim: max=0.3 mae=8", "// claim: max=0.001 mae=0.01");
+    let (strict, _) = user_file("strict-stability.wgsl", &text);
+    let result = run(&[
+        "stability",
+        "--quick",
+        "--cases",
+        "collinear-quadratic",
+        "--methods",
+        &strict,
+    ]);
+    assert_eq!(
+        result.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&result.stderr)
+    );
     let out = scratch("motion");
     let result = run(&[
         "motion",

@@ -38,15 +38,20 @@ fn winding_at(g: Glyph, s: vec2<f32>) -> i32 {
         if roots == 0u {
             continue;
         }
-        // y(t) = a t² − 2 b t + y0: roots (b ∓ √(b² − a y0)) / a, or y0 / 2b for a line.
+        // y(t) = a t² − 2 b t + y0: roots t1 = (b − √d) / a and t2 = (b + √d) / a,
+        // d = b² − a y0, in the stable form that never subtracts near-equal numbers:
+        // with q = b + sign(b) √d, one root is y0 / q and the other q / a. A line
+        // (a = 0) has one root, y0 / 2b, and one bit of its class set; the other
+        // "root" is infinite or NaN and fails the test below.
         let a = p0.y - 2.0 * p1.y + p2.y;
         let b = p0.y - p1.y;
-        var t1 = p0.y / (2.0 * b);
-        var t2 = t1;
-        if abs(a) > 1e-5 * abs(b) {
-            let d = sqrt(max(b * b - a * p0.y, 0.0));
-            t1 = (b - d) / a;
-            t2 = (b + d) / a;
+        let d = sqrt(max(b * b - a * p0.y, 0.0));
+        let q = b + select(-d, d, b >= 0.0);
+        var t1 = p0.y / q;
+        var t2 = q / a;
+        if b < 0.0 {
+            t1 = q / a;
+            t2 = p0.y / q;
         }
         if (roots & 1u) != 0u && x_at(p0.x, p1.x, p2.x, t1) > 0.0 {
             winding += 1;

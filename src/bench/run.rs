@@ -258,12 +258,17 @@ fn settings_for(
     let is_baseline = method.role == Role::Baseline;
     let mut all = method_settings::settings(method, effort.bench_every_setting);
     if view == SceneCamera::Moved && !is_baseline {
-        let kept =
-            if !effort.bench_every_setting && method.name != CONTRAST.name && !method.is_peer() {
-                0
-            } else {
-                1
-            };
+        // After caching, --quick keeps the contrast, the peers and a user's file (its
+        // one setting is why it was named).
+        let kept = if !effort.bench_every_setting
+            && method.name != CONTRAST.name
+            && !method.is_peer()
+            && !method.name.starts_with(crate::methods::user::PREFIX)
+        {
+            0
+        } else {
+            1
+        };
         all.truncate(kept);
     }
     if is_baseline {

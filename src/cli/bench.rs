@@ -19,7 +19,8 @@ pub struct BenchArgs {
     #[arg(long, value_delimiter = ',')]
     pub scenes: Vec<String>,
     /// Methods to run, comma-separated (default: all, the peers included): reference,
-    /// winding, sdf-cells, xor-stencil, tessellation, atlas, vello, glyphon, vello-cpu.
+    /// winding, sdf-cells, xor-stencil, tessellation, atlas, vello, glyphon, vello-cpu,
+    /// msdf, and your own as wgsl:PATH (docs/your-method.md).
     #[arg(long, value_delimiter = ',')]
     pub methods: Vec<String>,
     /// Frames timed per case in each of its least rounds, over them (default 35 in 5

@@ -102,8 +102,22 @@ fn check(path: &Path, source: &str) -> Result<(), Error> {
         naga::valid::Capabilities::default(),
     );
     validator.validate(&module).map_err(|e| {
-        let location = e.spans().next().map(|(span, _)| span.location(source));
-        at(location, e.as_inner().to_string())
+        // naga keeps the failing function's span first and the statement's after it:
+        // the innermost one in the user's text is the place to show.
+        let location = e
+            .spans()
+            .map(|(span, _)| span.location(source))
+            .filter(|l| l.line_number as usize > offset)
+            .last()
+            .or_else(|| e.spans().next().map(|(span, _)| span.location(source)));
+        // Its message and every cause under it ("function … is invalid: …").
+        let mut message = e.as_inner().to_string();
+        let mut cause = std::error::Error::source(e.as_inner());
+        while let Some(c) = cause {
+            message = format!("{message}: {c}");
+            cause = c.source();
+        }
+        at(location, message)
     })?;
     Ok(())
 }

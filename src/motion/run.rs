@@ -27,14 +27,20 @@ pub struct MethodSpec {
 }
 
 impl MethodSpec {
-    /// `NAME[:KEY=VALUE…]`, or `wgsl:PATH[:KEY=VALUE…]` for a user's method (the
-    /// path ends at the next colon).
+    /// `NAME[:KEY=VALUE…]`, or `wgsl:PATH[:KEY=VALUE…]` for a user's method: the path
+    /// ends at `.wgsl` where a colon or the end follows it (so it may hold colons, as
+    /// `C:\x.wgsl` does), else at the next colon.
     pub fn parse(text: &str) -> Result<MethodSpec, Error> {
         let text = text.trim();
         let user = crate::methods::user::PREFIX;
         let (name, rest) = match text.strip_prefix(user) {
             Some(after) => {
-                let end = after.find(':').unwrap_or(after.len());
+                let end = after
+                    .match_indices(".wgsl")
+                    .map(|(at, ext)| at + ext.len())
+                    .find(|&end| after[end..].is_empty() || after[end..].starts_with(':'))
+                    .or_else(|| after.find(':'))
+                    .unwrap_or(after.len());
                 (&text[..user.len() + end], &after[end..])
             }
             None => text.split_at(text.find(':').unwrap_or(text.len())),
