@@ -114,8 +114,11 @@ pub fn run(view: Option<&str>) -> Result<(), crate::Error> {
 /// What the window loads when it opens and a minimal Debian 12 lacks (checked there by
 /// `tools/fresh-machine.sh window`; README's set-up lists them too). Wayland's are winit's
 /// list, not checked.
+#[cfg(not(target_arch = "wasm32"))]
 const X11_LIBRARIES: &str = "libx11-6 libx11-xcb1 libxcursor1 libxrandr2 libxi6 libxkbcommon-x11-0";
+#[cfg(not(target_arch = "wasm32"))]
 const WAYLAND_LIBRARIES: &str = "libwayland-client0 libwayland-cursor0 libxkbcommon0";
+#[cfg(not(target_arch = "wasm32"))]
 const DRIVERS: &str =
     "apt-get install mesa-vulkan-drivers, or for GL libegl1 libegl-mesa0 libgl1-mesa-dri";
 
