@@ -84,9 +84,24 @@ fn a_broken_file_is_one_line_naming_its_place() {
         "fn user_coverage(g: Glyph, p: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> f32 {\n    return 1u;\n}\n",
     );
     let missing = "wgsl:no/such/file.wgsl".to_owned();
+    // No function, or one of another signature: the error the prelude meets names
+    // what the file must define.
+    let (empty, empty_path) = user_file("empty.wgsl", "");
+    let (arity, arity_path) = user_file(
+        "arity.wgsl",
+        "fn user_coverage(g: Glyph, p: vec2<f32>) -> f32 {\n    return 0.0;\n}\n",
+    );
     // The path ends at `.wgsl`: what follows is a parameter, which a file takes none of.
     let with_param = format!("{EXAMPLE}:samples=4");
     for (method, place) in [
+        (
+            empty,
+            format!("{}: it must define fn user_coverage", empty_path.display()),
+        ),
+        (
+            arity,
+            format!("{}: it must define fn user_coverage", arity_path.display()),
+        ),
         (with_param, "samples".to_owned()),
         // The missing `;` is found at the next token: line 4, column 5.
         (syntax, format!("{}:4:5:", path.display())),

@@ -78,22 +78,25 @@ pub fn find(name: &str) -> Result<&'static MethodInfo, Error> {
     Ok(row)
 }
 
+/// What a user's file must define, as an error names it.
+const CONTRACT: &str = "it must define fn user_coverage(g: Glyph, p: vec2<f32>, jx: vec2<f32>, \
+                        jy: vec2<f32>) -> f32 (docs/your-method.md)";
+
 /// The full source parsed and validated by naga, as wgpu would; an error is one line:
-/// `PATH:LINE:COLUMN: message`, the line counted in the user's file.
+/// `PATH:LINE:COLUMN: message`, the line counted in the user's file. An error the
+/// prelude meets (the function missing, or declared otherwise) names the contract.
 fn check(path: &Path, source: &str) -> Result<(), Error> {
     let offset = winding::user_line_offset();
     let at = |location: Option<naga::SourceLocation>, message: String| {
-        let place = match location {
-            Some(l) if l.line_number as usize > offset => {
-                format!("{}:{}", l.line_number as usize - offset, l.line_position)
-            }
-            Some(l) => format!(
-                "(glyphscope's prelude, line {}:{})",
-                l.line_number, l.line_position
+        let path = path.display();
+        Error::Input(match location {
+            Some(l) if l.line_number as usize > offset => format!(
+                "{path}:{}:{}: {message}",
+                l.line_number as usize - offset,
+                l.line_position
             ),
-            None => "?".into(),
-        };
-        Error::Input(format!("{}:{place}: {message}", path.display()))
+            _ => format!("{path}: {CONTRACT}: {message}"),
+        })
     };
     let module = naga::front::wgsl::parse_str(source)
         .map_err(|e| at(e.location(source), e.message().to_owned()))?;
