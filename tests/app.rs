@@ -1652,3 +1652,49 @@ fn a_survey_link_opens_the_glyph_it_names_on_its_worst_pixel() {
     );
     assert_eq!(app.marked_pixel(), Some(pixel), "{link}");
 }
+
+/// A pane drawing your own WGSL file (`wgsl:PATH`, docs/your-method.md) reloads it when
+/// it is saved, on the same pixels, and keeps drawing the last version that compiled
+/// beside the error of a save that does not.
+#[test]
+fn a_users_shader_reloads_when_saved_and_a_broken_save_keeps_the_last_good_one() {
+    let dir = std::env::temp_dir().join(format!("glyphscope-app-user-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("mine.wgsl");
+    let coverage_of = |value: &str| {
+        format!(
+            "fn user_coverage(g: Glyph, p: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> f32 {{\n    return {value};\n}}\n"
+        )
+    };
+    std::fs::write(&file, coverage_of("0.0")).unwrap();
+    let mut settings = Settings {
+        layout: Layout::Single,
+        ..Settings::default()
+    };
+    settings.panes[0] = PaneSettings::method(&format!("wgsl:{}", file.display()));
+    let mut harness = harness(settings);
+    settle(&mut harness);
+    let sum = |harness: &Harness<'static, Explorer>| {
+        harness
+            .state()
+            .pane_capture(0)
+            .expect("read back at rest")
+            .sum()
+    };
+    assert_eq!(harness.state().pane_problem(0), None);
+    assert_eq!(sum(&harness), 0.0, "a function that covers nothing");
+    // Saved: every pixel of every glyph's quad covered, without touching the app.
+    std::fs::write(&file, coverage_of("1.0")).unwrap();
+    settle(&mut harness);
+    assert_eq!(harness.state().pane_problem(0), None);
+    let covered = sum(&harness);
+    assert!(covered > 100.0, "the saved version draws: {covered}");
+    // A save that does not compile: its error, the place in the file, and the last
+    // good version still drawn.
+    std::fs::write(&file, coverage_of("1.0 +")).unwrap();
+    settle(&mut harness);
+    let problem = harness.state().pane_problem(0).expect("the error is shown");
+    assert!(problem.contains("mine.wgsl:"), "{problem}");
+    assert!(problem.contains("last version that compiled"), "{problem}");
+    assert_eq!(sum(&harness), covered, "the last good version still drawn");
+}

@@ -61,6 +61,14 @@ impl Explorer {
                 scene.as_deref().map(|s| (s, generation)),
             );
         }
+        // A pane drawing a user's file looks for a save twice a second, input or not.
+        if self.settings.panes[..rects.len()]
+            .iter()
+            .any(|p| super::panes::user_file(p).is_some())
+        {
+            ui.ctx()
+                .request_repaint_after(std::time::Duration::from_millis(500));
+        }
 
         // Methods draw first, so that a difference pane, and a blinking pane showing
         // another's target, read this frame's targets.

@@ -13,8 +13,8 @@ use crate::camera::Camera;
 use crate::coverage::CoverageImage;
 use crate::gpu::GpuContext;
 use crate::methods::params::{Numbers, ParamSpec, given_text};
-use crate::methods::registry;
 use crate::methods::{CurveCost, Overlay};
+use crate::methods::{registry, user};
 use crate::metrics::ErrorStats;
 use crate::scene::Scene;
 
@@ -123,8 +123,12 @@ pub struct Pane {
     /// What the surface's method was made from: the pane's source and method overlay, and the
     /// scene generation it was prepared for.
     built: Option<(PaneSource, Option<String>, u64)>,
-    /// Why the pane shows nothing (method unavailable, bad parameters, preparing failed).
+    /// Why the pane shows nothing (method unavailable, bad parameters, preparing failed),
+    /// or, for a user's file, why its last save does not draw.
     pub problem: Option<String>,
+    /// For a user's file (`wgsl:PATH`): a hash of its text when the pane last made its
+    /// method; a save that changes it reloads the pane.
+    user_stamp: Option<u64>,
     pub gpu_bytes: u64,
     pub prepare_ms: f64,
     pub curves: Option<(Camera, CurveCost)>,
@@ -140,6 +144,7 @@ impl Pane {
             surface: PaneSurface::new(),
             built: None,
             problem: None,
+            user_stamp: None,
             gpu_bytes: 0,
             prepare_ms: 0.0,
             curves: None,
@@ -163,10 +168,17 @@ impl Pane {
             method_overlay(settings),
             generation,
         );
+        let stamp = user_file(settings).and_then(user::stamp);
         if self.built.as_ref() == Some(&wanted) {
+            if stamp != self.user_stamp {
+                // The user's file was saved: reloaded where it stands, camera and all.
+                self.user_stamp = stamp;
+                self.reload(gpu, settings, scene);
+            }
             return;
         }
         self.built = Some(wanted);
+        self.user_stamp = stamp;
         self.problem = None;
         self.gpu_bytes = 0;
         self.curves = None;
@@ -208,11 +220,49 @@ impl Pane {
         }
     }
 
-    /// Whether the pane's method was made from `settings` for scene `generation`.
+    /// A user's file saved since the pane drew it, made again. Where the new text does
+    /// not compile or prepare, the last version that did keeps drawing, with the error
+    /// beside it.
+    fn reload(&mut self, gpu: &GpuContext, settings: &PaneSettings, scene: Option<(&Scene, u64)>) {
+        let (Some((scene, _)), PaneSource::Method { name, params }) = (scene, &settings.source)
+        else {
+            return;
+        };
+        let mut params = params.clone();
+        if let Some(overlay) = method_overlay(settings) {
+            params.push(("overlay".into(), overlay));
+        }
+        let start = Instant::now();
+        let made = registry::create(name, &params).and_then(|mut method| {
+            method.prepare(gpu, scene)?;
+            Ok(method)
+        });
+        let mut surface = lock(&self.surface);
+        match made {
+            Ok(method) => {
+                self.prepare_ms = start.elapsed().as_secs_f64() * 1e3;
+                self.problem = None;
+                self.curves = None;
+                self.error = None;
+                self.capture = None;
+                self.gpu_bytes = method.gpu_bytes();
+                surface.method = Some(method);
+                surface.generation += 1;
+                surface.timer.clear();
+            }
+            Err(e) if surface.method.is_some() => {
+                self.problem = Some(format!("{e} (drawing the last version that compiled)"));
+            }
+            Err(e) => self.problem = Some(e.to_string()),
+        }
+    }
+
+    /// Whether the pane's method was made from `settings` for scene `generation` (and,
+    /// for a user's file, from its text as it is now).
     pub fn is_built_for(&self, settings: &PaneSettings, generation: u64) -> bool {
         self.built.as_ref().is_some_and(|(source, overlay, g)| {
             (source, overlay, *g) == (&settings.source, &method_overlay(settings), generation)
-        })
+        }) && user_file(settings).is_none_or(|name| user::stamp(name) == self.user_stamp)
     }
 
     /// Whether the pane's picture is this method's own (not the reference or a difference).
@@ -220,6 +270,17 @@ impl Pane {
         lock(&self.surface).method.is_some()
     }
 }
+
+/// The user's file a pane draws (`wgsl:PATH`), if it draws one.
+pub fn user_file(settings: &PaneSettings) -> Option<&str> {
+    match &settings.source {
+        PaneSource::Method { name, .. } if name.starts_with(user::PREFIX) => Some(name),
+        _ => None,
+    }
+}
+
+/// The file the "your shader…" entry opens first: the example of docs/your-method.md.
+const FIRST_USER_FILE: &str = "examples/wgsl/supersampled.wgsl";
 
 /// The current value of a parameter (its default when not given).
 fn param_value(params: &[(String, String)], spec: &ParamSpec) -> String {
@@ -280,7 +341,43 @@ pub fn pane_controls(
                 };
                 pane.overlay = PaneOverlay::None;
             }
+            let yours = current.starts_with(user::PREFIX);
+            let response = ui
+                .add(egui::Button::selectable(yours, "your shader…"))
+                .on_hover_text(
+                    "a WGSL file defining user_coverage, drawn on winding's quads and data \
+                     and reloaded when it is saved (docs/your-method.md)",
+                );
+            if response.clicked() && !yours {
+                pane.source = PaneSource::Method {
+                    name: format!("{}{FIRST_USER_FILE}", user::PREFIX),
+                    params: Vec::new(),
+                };
+                pane.overlay = PaneOverlay::None;
+            }
         });
+    // A user's file: its path, edited in place (applied on Enter or leaving the field).
+    if let PaneSource::Method { name, .. } = &mut pane.source
+        && let Some(path) = name.strip_prefix(user::PREFIX)
+    {
+        // What is being typed, until applied: kept with the path it started from, so a
+        // path changed elsewhere (a link, the settings) starts the field anew.
+        let id = ui.scope_id().with(("user file", index));
+        let mut text = ui
+            .data(|d| d.get_temp::<(String, String)>(id))
+            .filter(|(from, _)| from == path)
+            .map_or_else(|| path.to_owned(), |(_, text)| text);
+        let response = ui.add(
+            egui::TextEdit::singleline(&mut text)
+                .hint_text("path/to/your.wgsl")
+                .desired_width(220.0),
+        );
+        let from = path.to_owned();
+        if response.lost_focus() && text != path {
+            *name = format!("{}{text}", user::PREFIX);
+        }
+        ui.data_mut(|d| d.insert_temp(id, (from, text)));
+    }
     if let Some(reason) = catalog.get(&current).and_then(|m| m.unavailable.as_ref()) {
         ui.colored_label(ui.visuals().weak_text_color(), reason);
     }

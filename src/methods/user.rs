@@ -28,27 +28,71 @@ pub const PREFIX: &str = "wgsl:";
 /// A user's method is benched at its one setting, in `--quick` too.
 const BENCH: &[BenchSetting] = &[bench_at(&[], true)];
 
-/// The rows made so far, one per path: a row lives as long as the process, as the
-/// registry's do.
-static ROWS: Mutex<Vec<&'static MethodInfo>> = Mutex::new(Vec::new());
+/// The rows made so far: per path, the row of the file's text as last read (with a
+/// hash of that text). A row lives as long as the process, as the registry's do; a file
+/// edited while the explorer runs gets a new row at each edit it is read after (its
+/// source, some 70 kB, kept with it).
+static ROWS: Mutex<Vec<(u64, &'static MethodInfo)>> = Mutex::new(Vec::new());
 
-/// The row of the user's method `name` (`wgsl:PATH`): the file read, checked and its
-/// claim taken the first time, the same row after.
+/// Per path, the last text refused (its hash) and why.
+static REFUSED: Mutex<Vec<(String, u64, String)>> = Mutex::new(Vec::new());
+
+/// A hash of the text of the user's file `name` (`wgsl:PATH`) as it is now, None where
+/// it cannot be read: what the explorer watches to reload a pane when it is saved.
+pub fn stamp(name: &str) -> Option<u64> {
+    let path = name.strip_prefix(PREFIX)?;
+    std::fs::read(path).ok().map(|bytes| fnv1a(&bytes))
+}
+
+/// FNV-1a, 64 bits: a file's text told apart from its edits.
+fn fnv1a(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    })
+}
+
+/// The row of the user's method `name` (`wgsl:PATH`) for the file's text as it is now:
+/// read, checked and its claim taken when the text is new, the same row while it is
+/// not.
 pub fn find(name: &str) -> Result<&'static MethodInfo, Error> {
     let path = name
         .strip_prefix(PREFIX)
         .filter(|p| !p.is_empty())
         .ok_or_else(|| Error::Input(format!("'{name}': give the file as wgsl:PATH")))?;
-    let mut rows = ROWS.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
-    if let Some(row) = rows.iter().copied().find(|r| r.name == name) {
-        return Ok(row);
-    }
     let text = std::fs::read_to_string(path)
         .map_err(|e| Error::Input(format!("{path}: cannot read your method: {e}")))?;
+    let hash = fnv1a(text.as_bytes());
+    let mut rows = ROWS.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+    let known = rows.iter().position(|(_, r)| r.name == name);
+    if let Some(k) = known
+        && rows[k].0 == hash
+    {
+        return Ok(rows[k].1);
+    }
+    // A text already refused is refused again without checking it again: the explorer
+    // asks every frame while a broken save is on screen.
+    let mut refused = REFUSED
+        .lock()
+        .unwrap_or_else(|poisoned| poisoned.into_inner());
+    if let Some((_, _, why)) = refused.iter().find(|(n, h, _)| n == name && *h == hash) {
+        return Err(Error::Input(why.clone()));
+    }
     let source = winding::user_source(&text);
-    check(Path::new(path), &source)?;
-    let claim = claim_of(path, &text)?;
-    let name: &'static str = Box::leak(name.to_owned().into_boxed_str());
+    let checked = check(Path::new(path), &source).and_then(|()| claim_of(path, &text));
+    refused.retain(|(n, _, _)| n != name);
+    let claim = match checked {
+        Ok(claim) => claim,
+        Err(e) => {
+            refused.push((name.to_owned(), hash, e.to_string()));
+            return Err(e);
+        }
+    };
+    drop(refused);
+    // One name per path, however often the file changes.
+    let name: &'static str = match known {
+        Some(k) => rows[k].1.name,
+        None => Box::leak(name.to_owned().into_boxed_str()),
+    };
     let source: &'static str = Box::leak(source.into_boxed_str());
     let constructor: Constructor = Box::leak(Box::new(
         move |_: &super::params::Params| -> Result<Box<dyn Method>, Error> {
@@ -74,7 +118,10 @@ pub fn find(name: &str) -> Result<&'static MethodInfo, Error> {
         claims,
         constructor: Some(constructor),
     }));
-    rows.push(row);
+    match known {
+        Some(k) => rows[k] = (hash, row),
+        None => rows.push((hash, row)),
+    }
     Ok(row)
 }
 

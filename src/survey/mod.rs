@@ -56,7 +56,10 @@ fn output(path: &Path, e: &dyn std::fmt::Display) -> Error {
 /// so that two files whose safe names agree stay apart.
 pub fn font_folder(label: &str) -> String {
     let safe = file_safe(label);
-    let hash = plan::fnv1a(label.as_bytes());
+    // FNV-1a, 64-bit: stable across runs and machines, unlike std's hasher.
+    let hash = label.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    });
     let tail: String = safe
         .chars()
         .rev()

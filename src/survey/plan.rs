@@ -229,9 +229,8 @@ impl Plan {
                 .methods
                 .iter()
                 .filter_map(|m| {
-                    let path = m.info.name.strip_prefix(crate::methods::user::PREFIX)?;
-                    let text = std::fs::read(path).unwrap_or_default();
-                    Some((m.info.name.to_owned(), format!("{:016x}", fnv1a(&text))))
+                    let stamp = crate::methods::user::stamp(m.info.name)?;
+                    Some((m.info.name.to_owned(), format!("{stamp:016x}")))
                 })
                 .collect(),
         }
@@ -273,15 +272,6 @@ pub struct PlanFile {
     /// edited since do not mix with these.
     #[serde(default)]
     pub user_files: Vec<(String, String)>,
-}
-
-/// FNV-1a, 64 bits, stable across runs and machines (unlike std's hasher): a file's
-/// text told apart from its edits, a path from another (not a defence against
-/// anyone).
-pub fn fnv1a(bytes: &[u8]) -> u64 {
-    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
-        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
-    })
 }
 
 /// The terms a claim judges rows by (its statement, words for people, aside).
