@@ -338,6 +338,14 @@ fn pane_key(s: &mut Settings, key: &str, value: &str, layout_given: bool) -> Res
 }
 
 fn parse_source(value: &str, index: usize) -> Result<PaneSource, String> {
+    // A user's file: its path may hold colons, and ends at `.wgsl` (`MethodSpec`).
+    if value.starts_with(crate::methods::user::PREFIX) {
+        let spec = crate::motion::run::MethodSpec::parse(value).map_err(|e| e.to_string())?;
+        return Ok(PaneSource::Method {
+            name: spec.name,
+            params: spec.params,
+        });
+    }
     let mut parts = value.split(':');
     let name = parts.next().unwrap_or_default();
     if name == "diff" {
@@ -491,6 +499,21 @@ mod tests {
         case.scene.case = Some("inter-overlaps".into());
         let back = open(&fragment(&case, 0).unwrap()).unwrap();
         assert_eq!(back.settings.scene.case.as_deref(), Some("inter-overlaps"));
+    }
+
+    /// A pane drawing a user's file (its path with a folder, and a colon where a
+    /// Windows path has one) travels in a link, as the survey writes them.
+    #[test]
+    fn a_users_file_survives_its_link() {
+        let mut s = Settings {
+            layout: Layout::SideBySide,
+            ..Settings::default()
+        };
+        s.panes[1] = PaneSettings::method("wgsl:examples/wgsl/supersampled.wgsl");
+        let back = open(&format!("#{}", fragment(&s, 0).unwrap())).unwrap();
+        assert_eq!(back.settings.panes[1], s.panes[1]);
+        let e = open("#b=wgsl:no/such/file.wgsl").err().unwrap();
+        assert!(e.contains("no/such/file.wgsl"), "{e}");
     }
 
     /// The issue's own example, written by hand: only what it names changes.

@@ -112,10 +112,6 @@ fn font_in_link(label: &str) -> String {
 /// the first, which a link cannot name.
 pub fn link(row: &Row, font: &str, transform: (f64, f64)) -> Option<String> {
     let glyph = row.glyph?;
-    // The explorer does not open a user's file as a pane's method yet.
-    if row.method.starts_with(crate::methods::user::PREFIX) {
-        return None;
-    }
     let mut variations = Vec::new();
     for part in row.face.split(' ').filter(|p| !p.is_empty()) {
         match part.split_once('=') {
@@ -461,10 +457,9 @@ fn glyph_cell(r: &Row) -> String {
 }
 
 fn link_cell(link: Option<String>) -> String {
-    link.map_or(
-        "(no link: a collection's later face, or your own method)".into(),
-        |l| format!("`glyphscope --view '{l}'`"),
-    )
+    link.map_or("(a collection's later face: no link)".into(), |l| {
+        format!("`glyphscope --view '{l}'`")
+    })
 }
 
 fn verdict_word(v: Verdict) -> String {
