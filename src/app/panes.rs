@@ -201,15 +201,8 @@ impl Pane {
         let Some((scene, _)) = scene else {
             return;
         };
-        let mut params = params.clone();
-        if let Some(overlay) = method_overlay(settings) {
-            params.push(("overlay".into(), overlay));
-        }
         let start = Instant::now();
-        let made = registry::create(name, &params).and_then(|mut method| {
-            method.prepare(gpu, scene)?;
-            Ok(method)
-        });
+        let made = prepared_method(gpu, settings, name, params, scene);
         self.prepare_ms = start.elapsed().as_secs_f64() * 1e3;
         match made {
             Ok(method) => {
@@ -228,15 +221,8 @@ impl Pane {
         else {
             return;
         };
-        let mut params = params.clone();
-        if let Some(overlay) = method_overlay(settings) {
-            params.push(("overlay".into(), overlay));
-        }
         let start = Instant::now();
-        let made = registry::create(name, &params).and_then(|mut method| {
-            method.prepare(gpu, scene)?;
-            Ok(method)
-        });
+        let made = prepared_method(gpu, settings, name, params, scene);
         let mut surface = lock(&self.surface);
         match made {
             Ok(method) => {
@@ -269,6 +255,23 @@ impl Pane {
     pub fn has_method(&self) -> bool {
         lock(&self.surface).method.is_some()
     }
+}
+
+/// Method `name` made with the pane's `params` and overlay, and prepared for `scene`.
+fn prepared_method(
+    gpu: &GpuContext,
+    settings: &PaneSettings,
+    name: &str,
+    params: &[(String, String)],
+    scene: &Scene,
+) -> Result<Box<dyn crate::methods::Method>, crate::Error> {
+    let mut params = params.to_vec();
+    if let Some(overlay) = method_overlay(settings) {
+        params.push(("overlay".into(), overlay));
+    }
+    let mut method = registry::create(name, &params)?;
+    method.prepare(gpu, scene)?;
+    Ok(method)
 }
 
 /// The user's file a pane draws (`wgsl:PATH`), if it draws one.
