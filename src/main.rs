@@ -10,6 +10,8 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     if let Some(command) = &cli.command {
         keep_the_gpu_off_the_display();
+        // A user's shader that never returns ends the command with its error.
+        glyphscope::methods::user::exit_on_hang();
         if command.adapter().is_some() || std::env::var_os("WGPU_ADAPTER_NAME").is_some() {
             // SAFETY: as in `keep_the_gpu_off_the_display`, no thread has started yet.
             unsafe { glyphscope::gpu::offer_swiftshader() };

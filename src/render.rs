@@ -78,7 +78,9 @@ impl RenderOptions {
     }
 
     fn wants_reference(&self) -> bool {
-        self.error_image.is_some()
+        // The statistics report the error against the reference.
+        self.stats.is_some()
+            || self.error_image.is_some()
             || (self.wants_picture()
                 && (self.focus.is_none_or(|f| f == Focus::Worst)
                     || self.overlays.contains(&PictureOverlay::Error)))
@@ -97,6 +99,18 @@ pub struct Rendered {
     /// The scene's instances whose ink overlaps, as `between=union` joins them: a fact of
     /// the scene, whichever method drew it.
     pub ink_overlaps: JoinCounts,
+    /// A user's file's claim against the frame, where it makes one and the error was
+    /// measured.
+    pub claim: Option<ClaimVerdict>,
+}
+
+/// A user's file's claim (its header's, or `claim=` given with it) against a frame: what
+/// it states and whether the frame keeps to it. A built-in row's claim depends on the
+/// glyphs' traits: the survey and the stability sweep judge those.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct ClaimVerdict {
+    pub statement: &'static str,
+    pub held: bool,
 }
 
 /// Renders what `options` describe (nothing is written).
@@ -165,6 +179,15 @@ pub fn render(options: &RenderOptions) -> Result<Rendered, Error> {
     } else {
         None
     };
+    let claim = match (&stats.error, method.claims) {
+        (Some(error), [only]) if method.name.starts_with(crate::methods::user::PREFIX) => {
+            only.claim.bound.map(|bound| ClaimVerdict {
+                statement: only.claim.statement,
+                held: bound.holds(error.max, error.mae_255),
+            })
+        }
+        _ => None,
+    };
     Ok(Rendered {
         image,
         overlay,
@@ -172,6 +195,7 @@ pub fn render(options: &RenderOptions) -> Result<Rendered, Error> {
         stats,
         picture,
         ink_overlaps: scene.with_overlapping_instances_joined().1,
+        claim,
     })
 }
 
@@ -204,11 +228,14 @@ pub fn run(options: &RenderOptions) -> Result<(), Error> {
             #[serde(skip_serializing_if = "Option::is_none")]
             magnified: Option<Window>,
             ink_overlaps: JoinCounts,
+            #[serde(skip_serializing_if = "Option::is_none")]
+            claim: Option<&'a ClaimVerdict>,
         }
         let written = Written {
             stats: &rendered.stats,
             magnified: rendered.picture.as_ref().map(|(_, window)| *window),
             ink_overlaps: rendered.ink_overlaps,
+            claim: rendered.claim.as_ref(),
         };
         let json = serde_json::to_string_pretty(&written).expect("stats serialize");
         std::fs::write(path, json + "\n")

@@ -1657,7 +1657,7 @@ fn a_survey_link_opens_the_glyph_it_names_on_its_worst_pixel() {
 /// it is saved, on the same pixels, and keeps drawing the last version that compiled
 /// beside the error of a save that does not.
 #[test]
-fn a_users_shader_reloads_when_saved_and_a_broken_save_keeps_the_last_good_one() {
+fn a_users_shader_reloads_when_saved_and_a_broken_or_hanging_save_keeps_the_last_good_one() {
     let dir = std::env::temp_dir().join(format!("glyphscope-app-user-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("mine.wgsl");
@@ -1697,4 +1697,23 @@ fn a_users_shader_reloads_when_saved_and_a_broken_save_keeps_the_last_good_one()
     assert!(problem.contains("mine.wgsl:"), "{problem}");
     assert!(problem.contains("last version that compiled"), "{problem}");
     assert_eq!(sum(&harness), covered, "the last good version still drawn");
+    // A save that compiles but never returns: drawn first by the binary in a process
+    // of its own, which ends itself past its frame limit; the explorer shows why and
+    // keeps drawing the last good version, its own device never asked to run it.
+    glyphscope::app::try_user_files_with(env!("CARGO_BIN_EXE_glyphscope").into());
+    std::fs::write(
+        &file,
+        "fn user_coverage(g: Glyph, p: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> f32 {\n    var i = 0u;\n    loop {\n        if band_at(g.first_band + (i & 1u)).count == 0xdeadbeefu {\n            break;\n        }\n        i++;\n    }\n    return f32(i);\n}\n",
+    )
+    .unwrap();
+    settle(&mut harness);
+    let problem = harness.state().pane_problem(0).expect("the hang is shown");
+    assert!(problem.contains("has not finished a frame"), "{problem}");
+    assert!(problem.contains("last version that passed"), "{problem}");
+    assert_eq!(sum(&harness), covered, "the last good version still drawn");
+    // Fixed and saved: tried, passed, drawn.
+    std::fs::write(&file, coverage_of("0.0")).unwrap();
+    settle(&mut harness);
+    assert_eq!(harness.state().pane_problem(0), None);
+    assert_eq!(sum(&harness), 0.0, "the fixed version draws");
 }

@@ -36,14 +36,22 @@ fn every_shader_parses_and_validates() {
     );
 }
 
-/// The example of your own method (docs/your-method.md), in the source it is compiled
-/// as: the prelude, then the file.
+/// The examples of your own method (docs/your-method.md), each in the source it is
+/// compiled as: the prelude, then the file.
 #[test]
-fn the_example_user_method_validates() {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/wgsl/supersampled.wgsl");
-    let text = std::fs::read_to_string(&path).unwrap();
-    let source = glyphscope::text::winding::user_source(&text);
-    validate("supersampled.wgsl", &source).unwrap();
+fn every_example_user_method_validates() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/methods");
+    let mut checked = 0;
+    for entry in std::fs::read_dir(&dir).expect("examples/methods exists") {
+        let path = entry.expect("entry").path();
+        if path.extension().is_some_and(|e| e == "wgsl") {
+            let text = std::fs::read_to_string(&path).unwrap();
+            let source = glyphscope::text::winding::user_source(&text);
+            validate(&path.display().to_string(), &source).unwrap();
+            checked += 1;
+        }
+    }
+    assert!(checked >= 3, "the examples: {checked} files");
 }
 
 #[test]

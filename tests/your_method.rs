@@ -7,30 +7,41 @@ mod common;
 
 use std::path::Path;
 
-use common::binary::{run, scratch};
+use common::binary::{bin, output_within, run, scratch};
 
-const EXAMPLE: &str = "wgsl:examples/wgsl/supersampled.wgsl";
+const EXAMPLE: &str = "wgsl:examples/methods/supersampled.wgsl";
+/// "GPU Font Rendering"'s two rays with a one-pixel window, as a user's file.
+const TWO_RAYS: &str = "wgsl:examples/methods/two_rays.wgsl";
+/// The naive one: a pixel wholly covered where its centre is inside.
+const ONE_RAY: &str = "wgsl:examples/methods/one_ray.wgsl";
 
 /// `render --stats` of `method` on a line of text at 24 px/em, as JSON.
 fn measured(method: &str, name: &str) -> serde_json::Value {
+    let error = scratch(&format!("{name}-error.png"));
+    let view = ["--text", "Hamburgefonstiv", "--size", "24"];
+    stats_of(
+        &view,
+        method,
+        &["--error-image", error.to_str().unwrap()],
+        name,
+    )
+}
+
+/// `render VIEW --method METHOD EXTRA --stats`, run to success, its statistics as JSON.
+fn stats_of(view: &[&str], method: &str, extra: &[&str], name: &str) -> serde_json::Value {
     let out = scratch(&format!("{name}.png"));
     let stats = scratch(&format!("{name}.json"));
-    let error = scratch(&format!("{name}-error.png"));
-    let result = run(&[
-        "render",
-        "--text",
-        "Hamburgefonstiv",
-        "--size",
-        "24",
-        "--method",
-        method,
+    let mut args = vec!["render"];
+    args.extend(view);
+    args.extend(["--method", method]);
+    args.extend(extra);
+    args.extend([
         "--out",
         out.to_str().unwrap(),
         "--stats",
         stats.to_str().unwrap(),
-        "--error-image",
-        error.to_str().unwrap(),
     ]);
+    let result = run(&args);
     assert!(
         result.status.success(),
         "{}",
@@ -47,18 +58,27 @@ fn user_file(name: &str, text: &str) -> (String, std::path::PathBuf) {
 }
 
 #[test]
-fn the_example_is_measured_within_its_claim_and_a_blank_function_is_not() {
-    let json = measured(EXAMPLE, "example");
-    assert_eq!(json["method"], EXAMPLE);
-    let error = &json["error"];
-    let max = error["max"].as_f64().unwrap();
-    let mae = error["mae_255"].as_f64().unwrap();
-    println!("{EXAMPLE} on Hamburgefonstiv at 24 px/em: max {max:.4}, MAE {mae:.3}/255");
-    // Its header's claim, set before measuring from what 4×4 samples resolve.
-    assert!(max <= 0.3 && mae <= 8.0, "{error}");
-    // Sampled, not integrated: an edge pixel is off by a step of the grid somewhere.
-    assert!(max > 0.02, "{error}");
-    assert!(error["edge"]["pixels"].as_u64().unwrap() > 0, "{error}");
+fn the_examples_are_measured_within_their_claims_and_a_blank_function_is_not() {
+    // Each with its header's claim, set before measuring: 4×4 samples resolve an edge
+    // to about a quarter; two windowed rays are off by at most half of what the ray
+    // along an edge misses.
+    for (example, name, claim_max, claim_mae) in [
+        (EXAMPLE, "example", 0.3, 8.0),
+        (TWO_RAYS, "two-rays", 0.6, 6.0),
+    ] {
+        let json = measured(example, name);
+        assert_eq!(json["method"], example);
+        let error = &json["error"];
+        let max = error["max"].as_f64().unwrap();
+        let mae = error["mae_255"].as_f64().unwrap();
+        println!("{example} on Hamburgefonstiv at 24 px/em: max {max:.4}, MAE {mae:.3}/255");
+        assert!(max <= claim_max && mae <= claim_mae, "{error}");
+        assert_eq!(json["claim"]["held"], true, "{json}");
+        // Sampled or windowed, not integrated: some edge pixel is off by more than an
+        // exact method's 0.02.
+        assert!(max > 0.02, "{error}");
+        assert!(error["edge"]["pixels"].as_u64().unwrap() > 0, "{error}");
+    }
     // The same pipeline with a function that covers nothing: the glyphs' insides are
     // off by all of their coverage, so the measurement sees the user's function.
     let (blank, _) = user_file(
@@ -163,18 +183,49 @@ fn the_survey_holds_a_file_to_the_claim_it_makes() {
     );
     assert!(rows.lines().skip(1).all(|l| l.contains(",ok,")), "{rows}");
     // The same function claiming what it cannot keep: the survey says so and exits 1.
-    let text = std::fs::read_to_string("examples/wgsl/supersampled.wgsl")
+    let text = std::fs::read_to_string("examples/methods/supersampled.wgsl")
         .unwrap()
         .replace("// claim: max=0.3 mae=8", "// claim: max=0.01 mae=0.1");
+    // A survey that finds claims broken: exit 1 and broken rows, which it returns.
+    let breaks = |method: &str, name: &str| {
+        let (result, rows) = survey(method, name);
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        assert_eq!(result.status.code(), Some(1), "{method}: {stderr}");
+        assert!(rows.contains(",broken,"), "{method}: {rows}");
+        rows
+    };
     let (strict, _) = user_file("strict.wgsl", &text);
-    let (result, rows) = survey(&strict, "survey-strict");
-    assert_eq!(
-        result.status.code(),
-        Some(1),
-        "{}",
-        String::from_utf8_lossy(&result.stderr)
-    );
-    assert!(rows.contains(",broken,"), "{rows}");
+    breaks(&strict, "survey-strict");
+    // The claim given with the method overrides the header's, in the survey ...
+    let rows = breaks(&format!("{EXAMPLE}:claim=0.01/0.1"), "survey-given");
+    assert!(rows.contains(",0.01/0.1,"), "{rows}");
+    // ... and in render's statistics, as --param claim= too.
+    for (claim, held) in [("0.01/0.1", false), ("0.9/50", true)] {
+        let param = format!("claim={claim}");
+        let json = stats_of(&["--case", "tiny"], EXAMPLE, &["--param", &param], "given");
+        assert_eq!(json["claim"]["held"], held, "{claim}: {}", json["claim"]);
+    }
+    for bad in ["2/1", "0.1", "x/1", "NaN/1"] {
+        let out = scratch("bad-claim.png");
+        let result = run(&[
+            "render",
+            "--case",
+            "tiny",
+            "--method",
+            &format!("{EXAMPLE}:claim={bad}"),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        assert_eq!(result.status.code(), Some(2), "{bad}: {stderr}");
+        assert!(
+            stderr.contains("claim=MAX/MAE") && stderr.trim().lines().count() == 1,
+            "{stderr}"
+        );
+    }
+    // The naive example believes that no pixel is off by more than a half; the survey
+    // shows where it is (thin strokes, inner corners) and exits 1.
+    breaks(ONE_RAY, "survey-one-ray");
 }
 
 #[test]
@@ -200,7 +251,7 @@ fn the_stability_sweep_and_motion_run_a_file_too() {
     );
     assert!(stdout.contains(EXAMPLE), "{stdout}");
     // A copy claiming what 16 samples cannot keep breaks its claim: exit 1.
-    let text = std::fs::read_to_string("examples/wgsl/supersampled.wgsl")
+    let text = std::fs::read_to_string("examples/methods/supersampled.wgsl")
         .unwrap()
         .replace("// claim: max=0.3 mae=8", "// claim: max=0.001 mae=0.01");
     let (strict, _) = user_file("strict-stability.wgsl", &text);
@@ -239,4 +290,38 @@ fn the_stability_sweep_and_motion_run_a_file_too() {
     );
     let summary = std::fs::read_to_string(out.join("motion.md")).unwrap();
     assert!(summary.contains(EXAMPLE), "{summary}");
+}
+
+#[test]
+fn a_shader_that_never_returns_is_reported_not_hung_on() {
+    // A loop whose end depends on data that never says so (a band's count compared
+    // with a number no band has): the compiler cannot drop it, and lavapipe has no GPU
+    // timeout.
+    let (forever, path) = user_file(
+        "forever.wgsl",
+        "fn user_coverage(g: Glyph, p: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> f32 {\n    var i = 0u;\n    loop {\n        if band_at(g.first_band + (i & 1u)).count == 0xdeadbeefu {\n            break;\n        }\n        i++;\n    }\n    return f32(i);\n}\n",
+    );
+    let out = scratch("forever.png");
+    let mut command = bin();
+    command
+        .args(["render", "--case", "tiny", "--method", &forever, "--out"])
+        .arg(&out)
+        .env("GLYPHSCOPE_FRAME_LIMIT_S", "3");
+    let started = std::time::Instant::now();
+    let result = output_within(command, std::time::Duration::from_secs(90))
+        .expect("the command ends on its own, past its frame limit");
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert_eq!(result.status.code(), Some(2), "{stderr}");
+    assert_eq!(stderr.trim().lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.starts_with(&format!(
+            "error: {}: your shader has not finished a frame in",
+            path.display()
+        )),
+        "{stderr}"
+    );
+    println!(
+        "a shader that never returns: exit 2 after {:.1} s",
+        started.elapsed().as_secs_f64()
+    );
 }

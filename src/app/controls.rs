@@ -416,7 +416,7 @@ impl Explorer {
                 });
             });
         self.motion_window(ctx);
-        if let Some(path) = self.font_dialog.show(ctx) {
+        if let Some(path) = self.font_dialog.show(ctx, "font") {
             self.open_font(path);
         }
         let mut open = self.sweep.open;

@@ -12,7 +12,7 @@ use eframe::egui;
 use glam::DVec2;
 
 use super::analysis::{Analysis, Outcome, ReferenceState};
-use super::font_dialog::{FontDialog, is_font_file};
+use super::file_dialog::{FileDialog, FileKind, is_font_file};
 use super::gpu_view::{self, Compositor, PaneSurface, SharedSurface, lock};
 use super::link;
 use super::panes::{Catalog, Pane};
@@ -39,7 +39,7 @@ pub struct Explorer {
     pub(super) analysis: Analysis,
     pub(super) canvas: CanvasState,
     pub(super) sweep: ParetoSweep,
-    pub(super) font_dialog: FontDialog,
+    pub(super) font_dialog: FileDialog,
     pub(super) help_open: bool,
     /// The pixels the magnifier was last centred on by "worst pixel", to step on from.
     pub(super) artifacts: Option<Artifacts>,
@@ -167,7 +167,7 @@ impl Explorer {
             analysis,
             canvas: CanvasState::default(),
             sweep: ParetoSweep::default(),
-            font_dialog: FontDialog::default(),
+            font_dialog: FileDialog::new(FileKind::Font),
             help_open: false,
             artifacts: None,
             artifact_search: None,

@@ -509,7 +509,7 @@ mod tests {
             layout: Layout::SideBySide,
             ..Settings::default()
         };
-        s.panes[1] = PaneSettings::method("wgsl:examples/wgsl/supersampled.wgsl");
+        s.panes[1] = PaneSettings::method("wgsl:examples/methods/supersampled.wgsl");
         let back = open(&format!("#{}", fragment(&s, 0).unwrap())).unwrap();
         assert_eq!(back.settings.panes[1], s.panes[1]);
         let e = open("#b=wgsl:no/such/file.wgsl").err().unwrap();

@@ -28,7 +28,7 @@
 //! - `web`: the explorer as a web page (wasm32 and WebGPU only).
 //! - `link`: a view as a URL fragment, copied from the explorer and opened by
 //!   `glyphscope --view`.
-//! - `outline_painter`, `font_dialog`, `headless` (offscreen frames for `glyphscope screenshots`).
+//! - `outline_painter`, `file_dialog`, `headless` (offscreen frames for `glyphscope screenshots`).
 
 mod analysis;
 mod artifacts;
@@ -39,7 +39,7 @@ mod cases_menu;
 mod controls;
 pub mod display;
 mod explorer;
-mod font_dialog;
+mod file_dialog;
 mod gpu_view;
 pub mod headless;
 mod link;
@@ -53,6 +53,8 @@ pub mod screenshots;
 pub mod settings;
 mod shortcuts;
 mod state;
+mod trial;
+pub use trial::try_with as try_user_files_with;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 

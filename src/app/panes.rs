@@ -7,8 +7,10 @@ use web_time::Instant;
 
 use eframe::egui;
 
+use super::file_dialog::{FileDialog, FileKind};
 use super::gpu_view::{PaneSurface, SharedSurface, lock};
 use super::settings::{PaneOverlay, PaneSettings, PaneSource};
+use super::trial::{self, Trial};
 use crate::camera::Camera;
 use crate::coverage::CoverageImage;
 use crate::gpu::GpuContext;
@@ -169,11 +171,36 @@ impl Pane {
             generation,
         );
         let stamp = user_file(settings).and_then(user::stamp);
+        // A user's file that compiles is drawn once it has been drawn in a process of
+        // its own (`trial`): a loop that never returns hangs that one, not this one.
+        let trial = match (user_file(settings), stamp) {
+            (Some(name), Some(stamp)) if user::find(name).is_ok() => trial::of(name, stamp),
+            _ => Trial::Passed,
+        };
         if self.built.as_ref() == Some(&wanted) {
             if stamp != self.user_stamp {
-                // The user's file was saved: reloaded where it stands, camera and all.
-                self.user_stamp = stamp;
-                self.reload(gpu, settings, scene);
+                let drawing = lock(&self.surface).method.is_some();
+                let last = if drawing {
+                    " (drawing the last version that passed)"
+                } else {
+                    ""
+                };
+                match trial {
+                    // Asked again next frame (the pane repaints while it draws a file).
+                    Trial::Running => {
+                        self.problem = Some(format!("{TRYING}{last}"));
+                        return;
+                    }
+                    Trial::Failed(why) => {
+                        self.user_stamp = stamp;
+                        self.problem = Some(format!("{why}{last}"));
+                    }
+                    // The user's file was saved: reloaded where it stands, camera and all.
+                    Trial::Passed => {
+                        self.user_stamp = stamp;
+                        self.reload(gpu, settings, scene);
+                    }
+                }
             }
             return;
         }
@@ -201,9 +228,28 @@ impl Pane {
         let Some((scene, _)) = scene else {
             return;
         };
+        match trial {
+            Trial::Running => {
+                // Made once the trial has passed: asked again next frame.
+                self.problem = Some(TRYING.into());
+                self.built = None;
+                return;
+            }
+            Trial::Failed(why) => {
+                self.problem = Some(why);
+                return;
+            }
+            Trial::Passed => {}
+        }
         let start = Instant::now();
         let made = prepared_method(gpu, settings, name, params, scene);
         self.prepare_ms = start.elapsed().as_secs_f64() * 1e3;
+        if made.is_ok() && !made_what_was_tried(name, stamp) {
+            // Saved again between the trial and this read: made once that text passes.
+            self.problem = Some(TRYING.into());
+            self.built = None;
+            return;
+        }
         match made {
             Ok(method) => {
                 self.gpu_bytes = method.gpu_bytes();
@@ -223,6 +269,11 @@ impl Pane {
         };
         let start = Instant::now();
         let made = prepared_method(gpu, settings, name, params, scene);
+        if made.is_ok() && !made_what_was_tried(name, self.user_stamp) {
+            // Saved again between the trial and this read: tried again next frame.
+            self.user_stamp = None;
+            return;
+        }
         let mut surface = lock(&self.surface);
         match made {
             Ok(method) => {
@@ -274,6 +325,12 @@ fn prepared_method(
     Ok(method)
 }
 
+/// Whether a method made for `name` was made from the text stamped `tried` (the one
+/// its trial drew): always, for a name that is not a user's file.
+fn made_what_was_tried(name: &str, tried: Option<u64>) -> bool {
+    !name.starts_with(user::PREFIX) || user::made_from(name) == tried
+}
+
 /// The user's file a pane draws (`wgsl:PATH`), if it draws one.
 pub fn user_file(settings: &PaneSettings) -> Option<&str> {
     match &settings.source {
@@ -282,8 +339,12 @@ pub fn user_file(settings: &PaneSettings) -> Option<&str> {
     }
 }
 
+/// What a pane says while a user's file is tried in a process of its own (`trial`).
+const TRYING: &str = "drawing your shader in a separate process first (a loop that never \
+                      returns would hang the explorer)…";
+
 /// The file the "your shader…" entry opens first: the example of docs/your-method.md.
-const FIRST_USER_FILE: &str = "examples/wgsl/supersampled.wgsl";
+const FIRST_USER_FILE: &str = "examples/methods/supersampled.wgsl";
 
 /// The current value of a parameter (its default when not given).
 fn param_value(params: &[(String, String)], spec: &ParamSpec) -> String {
@@ -361,8 +422,11 @@ pub fn pane_controls(
         });
     // A user's file: its path, edited in place (applied on Enter or leaving the field).
     if let PaneSource::Method { name, .. } = &mut pane.source
-        && let Some(path) = name.strip_prefix(user::PREFIX)
+        && let Some((path_name, given)) = user::split(name)
+        && let Some(path) = path_name.strip_prefix(user::PREFIX)
     {
+        // What follows the path (a claim given with it) stays with the file chosen.
+        let given = given.to_owned();
         // What is being typed, until applied: kept with the path it started from, so a
         // path changed elsewhere (a link, the settings) starts the field anew.
         let id = ui.scope_id().with(("user file", index));
@@ -370,16 +434,44 @@ pub fn pane_controls(
             .data(|d| d.get_temp::<(String, String)>(id))
             .filter(|(from, _)| from == path)
             .map_or_else(|| path.to_owned(), |(_, text)| text);
-        let response = ui.add(
-            egui::TextEdit::singleline(&mut text)
-                .hint_text("path/to/your.wgsl")
-                .desired_width(220.0),
-        );
-        let from = path.to_owned();
-        if response.lost_focus() && text != path {
-            *name = format!("{}{text}", user::PREFIX);
+        // Or picked from a folder listing of .wgsl files (`file_dialog`), starting at
+        // the file drawn now.
+        let dialog_id = ui.scope_id().with(("user file dialog", index));
+        let mut dialog = ui
+            .data(|d| d.get_temp::<FileDialog>(dialog_id))
+            .unwrap_or_else(|| FileDialog::new(FileKind::Shader));
+        let mut chosen = None;
+        ui.horizontal(|ui| {
+            let response = ui.add(
+                egui::TextEdit::singleline(&mut text)
+                    .hint_text("path/to/your.wgsl")
+                    .desired_width(220.0),
+            );
+            if response.lost_focus() && text != path {
+                chosen = Some(text.clone());
+            }
+            if ui
+                .button("Open…")
+                .on_hover_text("pick a .wgsl file from a folder")
+                .clicked()
+            {
+                dialog.open = true;
+                dialog.path = path.to_owned();
+            }
+        });
+        if dialog.open
+            && let Some(file) = dialog.show(ui.ctx(), index)
+        {
+            chosen = Some(file.display().to_string());
         }
-        ui.data_mut(|d| d.insert_temp(id, (from, text)));
+        let from = path.to_owned();
+        ui.data_mut(|d| {
+            d.insert_temp(id, (from, text));
+            d.insert_temp(dialog_id, dialog);
+        });
+        if let Some(chosen) = chosen {
+            *name = format!("{}{chosen}{given}", user::PREFIX);
+        }
     }
     if let Some(reason) = catalog.get(&current).and_then(|m| m.unavailable.as_ref()) {
         ui.colored_label(ui.visuals().weak_text_color(), reason);

@@ -34,7 +34,9 @@ pub struct RenderArgs {
     /// `overlay` parameter is given.
     #[arg(long)]
     pub out: PathBuf,
-    /// Also write statistics as JSON.
+    /// Also write statistics as JSON: times, GPU memory, and the error against the
+    /// reference (whole frame and edge pixels); for a user's file with a claim, whether
+    /// the frame keeps to it.
     #[arg(long)]
     pub stats: Option<PathBuf>,
     /// Also render the reference and write the signed error (red: too much coverage,
@@ -71,12 +73,24 @@ fn method_help() -> String {
 /// `glyphscope render`: renders the view and writes the PNG and what else is asked for.
 pub fn run_render(args: &RenderArgs) -> Result<(), Error> {
     // `NAME:KEY=VALUE:…`, then `--param`s, which win where both set a key.
-    let spec = MethodSpec::parse(&args.method)?;
+    // A user's file takes `--param claim=MAX/MAE` as it takes `:claim=` after its path.
+    let mut method = args.method.clone();
+    let mut params = args.params.clone();
+    if crate::methods::user::split(method.trim()).is_some() {
+        params.retain(|(key, value)| {
+            let claim = key == "claim";
+            if claim {
+                method = format!("{}:claim={value}", method.trim());
+            }
+            !claim
+        });
+    }
+    let spec = MethodSpec::parse(&method)?;
     crate::render::run(&RenderOptions {
         view: args.view.clone(),
         case: args.case.clone(),
         method: spec.name,
-        params: [spec.params, args.params.clone()].concat(),
+        params: [spec.params, params].concat(),
         out: args.out.clone(),
         stats: args.stats.clone(),
         error_image: args.error_image.clone(),

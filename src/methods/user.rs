@@ -10,10 +10,11 @@
 //! without one it is observed, as a peer is.
 
 use std::path::Path;
-use std::sync::Mutex;
+use std::sync::{Mutex, OnceLock};
+use std::time::Duration;
 
 use super::info::{
-    BenchSetting, Bound, Claim, ClaimedSetting, Constructor, MethodInfo, Role, bench_at, within,
+    BenchSetting, Claim, ClaimedSetting, Constructor, MethodInfo, Role, bench_at, within,
 };
 use super::{CurveCost, Method, Overlay};
 use crate::Error;
@@ -28,20 +29,61 @@ pub const PREFIX: &str = "wgsl:";
 /// A user's method is benched at its one setting, in `--quick` too.
 const BENCH: &[BenchSetting] = &[bench_at(&[], true)];
 
-/// The rows made so far: per path, the row of the file's text as last read (with a
-/// hash of that text). A row lives as long as the process, as the registry's do; a file
+/// The rows made so far: per path and claim given, the row of the file's text as last
+/// read. A row lives as long as the process, as the registry's do; a file
 /// edited while the explorer runs gets a new row at each edit it is read after (its
 /// source, some 70 kB, kept with it).
-static ROWS: Mutex<Vec<(u64, &'static MethodInfo)>> = Mutex::new(Vec::new());
+static ROWS: Mutex<Vec<Row>> = Mutex::new(Vec::new());
 
-/// Per path, the last text refused (its hash) and why.
-static REFUSED: Mutex<Vec<(String, u64, String)>> = Mutex::new(Vec::new());
+/// A row made: the hash of the file's text it was made from, the claim given for it on
+/// the command line (`claim=MAX/MAE`; None: the file's header holds it), and the row.
+struct Row {
+    hash: u64,
+    claim_given: Option<String>,
+    row: &'static MethodInfo,
+}
+
+/// Per path and claim given, the last text refused and why.
+static REFUSED: Mutex<Vec<Refused>> = Mutex::new(Vec::new());
+
+struct Refused {
+    name: String,
+    claim_given: Option<String>,
+    /// The hash of the text refused.
+    hash: u64,
+    why: String,
+}
 
 /// A hash of the text of the user's file `name` (`wgsl:PATH`) as it is now, None where
 /// it cannot be read: what the explorer watches to reload a pane when it is saved.
 pub fn stamp(name: &str) -> Option<u64> {
-    let path = name.strip_prefix(PREFIX)?;
+    let path = path_of(name)?;
     std::fs::read(path).ok().map(|bytes| fnv1a(&bytes))
+}
+
+/// The file's path in `name` (`wgsl:PATH`, `wgsl:PATH:claim=…`).
+pub fn path_of(name: &str) -> Option<&str> {
+    split(name)?.0.strip_prefix(PREFIX)
+}
+
+/// The hash of the text the row for `name` (`wgsl:PATH[:claim=…]`) was last made from,
+/// as [`stamp`] gives it: what the explorer checks a method it made against the text it
+/// tried (`app::trial`), since the file may change between the two reads.
+pub fn made_from(name: &str) -> Option<u64> {
+    let (path_name, rest) = split(name)?;
+    let claim = rest
+        .split(':')
+        .find_map(|part| part.strip_prefix("claim="))
+        .map(str::to_owned);
+    let rows = ROWS.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+    rows.iter()
+        .find(|r| r.row.name == path_name && r.claim_given == claim)
+        .map(|r| r.hash)
+}
+
+/// [`stamp`] of a file's bytes read already.
+pub fn stamp_of(bytes: &[u8]) -> u64 {
+    fnv1a(bytes)
 }
 
 /// FNV-1a, 64 bits: a file's text told apart from its edits.
@@ -51,46 +93,96 @@ fn fnv1a(bytes: &[u8]) -> u64 {
     })
 }
 
-/// The row of the user's method `name` (`wgsl:PATH`) for the file's text as it is now:
-/// read, checked and its claim taken when the text is new, the same row while it is
-/// not.
+/// `text` split after a user's file (`wgsl:PATH`) from what follows it (`:KEY=VALUE…`),
+/// or None where `text` does not name one. The path ends at `.wgsl` where a colon or
+/// the end follows it (so it may hold colons, as `C:\x.wgsl` does), else at the next
+/// colon.
+pub fn split(text: &str) -> Option<(&str, &str)> {
+    let after = text.strip_prefix(PREFIX)?;
+    let end = after
+        .match_indices(".wgsl")
+        .map(|(at, ext)| at + ext.len())
+        .find(|&end| after[end..].is_empty() || after[end..].starts_with(':'))
+        .or_else(|| after.find(':'))
+        .unwrap_or(after.len());
+    Some(text.split_at(PREFIX.len() + end))
+}
+
+/// The row of the user's method `name` (`wgsl:PATH`, or `wgsl:PATH:claim=MAX/MAE`) for
+/// the file's text as it is now: read, checked and its claim taken when the text is
+/// new, the same row while it is not. A `claim=` given after the path overrides the
+/// file's header line.
 pub fn find(name: &str) -> Result<&'static MethodInfo, Error> {
+    let (path_name, rest) = split(name).unwrap_or((name, ""));
+    let mut claim = None;
+    for part in rest.split(':').filter(|p| !p.is_empty()) {
+        match part.split_once('=') {
+            Some(("claim", value)) => claim = Some(value),
+            _ => {
+                return Err(Error::Input(format!(
+                    "'{name}': a user's method takes one parameter, claim=MAX/MAE, not '{part}'"
+                )));
+            }
+        }
+    }
+    find_claimed(path_name, claim)
+}
+
+/// The row of `name` (`wgsl:PATH`) held to `claim` (`MAX/MAE`, as `--param claim=`
+/// gives it) where given, else to the file's header line.
+pub fn find_claimed(name: &str, claim: Option<&str>) -> Result<&'static MethodInfo, Error> {
     let path = name
         .strip_prefix(PREFIX)
         .filter(|p| !p.is_empty())
         .ok_or_else(|| Error::Input(format!("'{name}': give the file as wgsl:PATH")))?;
+    // A claim given is read first: a bad one is refused without reading the file, and
+    // a good one stands in for the file's line, which is then not read at all.
+    let given = claim.map(|c| given_claim(name, c)).transpose()?;
     let text = std::fs::read_to_string(path)
         .map_err(|e| Error::Input(format!("{path}: cannot read your method: {e}")))?;
     let hash = fnv1a(text.as_bytes());
+    let claim_given = claim.map(str::to_owned);
     let mut rows = ROWS.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
-    let known = rows.iter().position(|(_, r)| r.name == name);
+    let known = rows
+        .iter()
+        .position(|r| r.row.name == name && r.claim_given == claim_given);
     if let Some(k) = known
-        && rows[k].0 == hash
+        && rows[k].hash == hash
     {
-        return Ok(rows[k].1);
+        return Ok(rows[k].row);
     }
     // A text already refused is refused again without checking it again: the explorer
     // asks every frame while a broken save is on screen.
     let mut refused = REFUSED
         .lock()
         .unwrap_or_else(|poisoned| poisoned.into_inner());
-    if let Some((_, _, why)) = refused.iter().find(|(n, h, _)| n == name && *h == hash) {
-        return Err(Error::Input(why.clone()));
+    let this = |r: &Refused| r.name == name && r.claim_given == claim_given;
+    if let Some(r) = refused.iter().find(|r| this(r) && r.hash == hash) {
+        return Err(Error::Input(r.why.clone()));
     }
     let source = winding::user_source(&text);
-    let checked = check(Path::new(path), &source).and_then(|()| claim_of(path, &text));
-    refused.retain(|(n, _, _)| n != name);
+    let checked = check(Path::new(path), &source).and_then(|()| match given {
+        Some(given) => Ok(given),
+        None => claim_of(path, &text),
+    });
+    refused.retain(|r| !this(r));
     let claim = match checked {
         Ok(claim) => claim,
         Err(e) => {
-            refused.push((name.to_owned(), hash, e.to_string()));
+            refused.push(Refused {
+                name: name.to_owned(),
+                claim_given,
+                hash,
+                why: e.to_string(),
+            });
             return Err(e);
         }
     };
     drop(refused);
-    // One name per path, however often the file changes.
-    let name: &'static str = match known {
-        Some(k) => rows[k].1.name,
+    // One name per path, however often the file changes and whatever claims it is
+    // held to.
+    let name: &'static str = match rows.iter().find(|r| r.row.name == name) {
+        Some(r) => r.row.name,
         None => Box::leak(name.to_owned().into_boxed_str()),
     };
     let source: &'static str = Box::leak(source.into_boxed_str());
@@ -118,11 +210,57 @@ pub fn find(name: &str) -> Result<&'static MethodInfo, Error> {
         claims,
         constructor: Some(constructor),
     }));
+    let made = Row {
+        hash,
+        claim_given,
+        row,
+    };
     match known {
-        Some(k) => rows[k] = (hash, row),
-        None => rows.push((hash, row)),
+        Some(k) => rows[k] = made,
+        None => rows.push(made),
     }
     Ok(row)
+}
+
+/// How long a wait for a frame drawn with a user's method may take before the shader
+/// is taken to never return: `GLYPHSCOPE_FRAME_LIMIT_S` seconds where that is set (a
+/// positive number), else 60 — far past a frame of the bench's largest scene with a
+/// heavy method on a software device.
+pub fn frame_limit() -> Duration {
+    std::env::var("GLYPHSCOPE_FRAME_LIMIT_S")
+        .ok()
+        .and_then(|s| s.parse::<f64>().ok())
+        .filter(|s| s.is_finite() && *s > 0.0)
+        .map_or(Duration::from_secs(60), Duration::from_secs_f64)
+}
+
+/// What the error says of a user's shader that kept the GPU past [`frame_limit`] (the
+/// explorer's trial run looks for it).
+pub const HANG: &str = "has not finished a frame";
+
+/// What this process does when a user's shader keeps the GPU past [`frame_limit`]:
+/// set by the command line ([`exit_on_hang`]); without it the wait fails with an error.
+static ON_HANG: OnceLock<fn(&str)> = OnceLock::new();
+
+/// A command line's answer to a shader that never returns: the one-line error and exit
+/// 2, at once. Not a return through `main`: dropping the device would wait for the
+/// shader, and so would the exit handlers of a software device's threads, so the
+/// process ends without them (`_exit`).
+pub fn exit_on_hang() {
+    let _ = ON_HANG.set(|message| {
+        use std::io::Write;
+        let mut stderr = std::io::stderr().lock();
+        let _ = writeln!(stderr, "error: {message}");
+        let _ = stderr.flush();
+        let _ = std::io::stdout().flush();
+        #[cfg(unix)]
+        // SAFETY: `_exit` ends the process at once; nothing after it runs.
+        unsafe {
+            libc::_exit(2)
+        };
+        #[cfg(not(unix))]
+        std::process::exit(2);
+    });
 }
 
 /// What a user's file must define, as an error names it.
@@ -213,18 +351,45 @@ fn claim_of(path: &str, text: &str) -> Result<Claim, Error> {
     let (Some(max), Some(mae)) = (max, mae) else {
         return Err(bad("lacks max or mae"));
     };
-    let bound: Bound = within(max, mae);
+    Ok(claim_within(max, mae, "your claim"))
+}
+
+/// The claim `MAX/MAE` given after a user's file (`wgsl:PATH:claim=MAX/MAE`, or
+/// `--param claim=MAX/MAE`), which overrides its header line.
+fn given_claim(name: &str, text: &str) -> Result<Claim, Error> {
+    let bad = |why: &str| {
+        Error::Input(format!(
+            "{name}: claim={text} {why}: write claim=MAX/MAE (MAX in coverage, 0 to 1; MAE in 1/255), e.g. claim=0.3/8"
+        ))
+    };
+    let (max, mae) = text.split_once('/').ok_or_else(|| bad("is not MAX/MAE"))?;
+    let number = |t: &str| {
+        t.parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite() && *v >= 0.0)
+            .ok_or_else(|| bad(&format!("has '{t}', not a finite number ≥ 0")))
+    };
+    let (max, mae) = (number(max)?, number(mae)?);
+    if max > 1.0 {
+        return Err(bad("has a MAX over 1"));
+    }
+    Ok(claim_within(max, mae, "your claim (given with the method)"))
+}
+
+/// A claim that no pixel is off by more than `max` and a frame's mean error is within
+/// `mae`/255, stated as `whose` it is.
+fn claim_within(max: f64, mae: f64, whose: &str) -> Claim {
     let statement: &'static str = Box::leak(
-        format!("your claim: no pixel off by more than {max}, mean error within {mae}/255")
+        format!("{whose}: no pixel off by more than {max}, mean error within {mae}/255")
             .into_boxed_str(),
     );
-    Ok(Claim {
-        bound: Some(bound),
+    Claim {
+        bound: Some(within(max, mae)),
         except: &[],
         limitation: None,
         temporal: None,
         statement,
-    })
+    }
 }
 
 /// A user's method: `winding`'s renderer with their `user_coverage`, under their name.
@@ -249,6 +414,24 @@ impl Method for UserMethod {
         target: &CoverageTarget,
         camera: &Camera,
     ) -> Result<(), Error> {
+        // The waits for this device from now on are bounded, and a hang is told as this
+        // file's (the last user's method drawn): a loop in it that never ends would
+        // otherwise hang a software device (lavapipe has no GPU timeout) and this
+        // process with it.
+        let limit = frame_limit();
+        let name = self.name;
+        gpu.guard_waits(limit, move |waited| {
+            let message = format!(
+                "{}: your shader {HANG} in {:.0} s: does a loop never end? (the limit: \
+                 GLYPHSCOPE_FRAME_LIMIT_S, {:.0} s)",
+                path_of(name).unwrap_or(name),
+                waited.as_secs_f64(),
+                limit.as_secs_f64()
+            );
+            if let Some(on_hang) = ON_HANG.get() {
+                on_hang(&message);
+            }
+        });
         self.winding.encode(gpu, encoder, target, camera)
     }
 
@@ -293,5 +476,27 @@ mod tests {
                 "{text}"
             );
         }
+    }
+
+    #[test]
+    fn a_claim_given_with_the_method_is_read_or_refused_in_one_line() {
+        let claim = given_claim("wgsl:f.wgsl", "0.05/0.5").unwrap();
+        assert_eq!(claim.bound, Some(within(0.05, 0.5)));
+        for bad in ["2/1", "0.1", "x/1", "NaN/1", "0.1/-1", "0.1/inf"] {
+            let text = given_claim("wgsl:f.wgsl", bad).unwrap_err().to_string();
+            assert!(
+                text.starts_with("wgsl:f.wgsl: claim=") && !text.contains('\n'),
+                "{text}"
+            );
+        }
+        // The path ends at `.wgsl` before a colon, so what follows is its parameters.
+        assert_eq!(
+            split("wgsl:C:\\a.wgsl:claim=0.1/2"),
+            Some(("wgsl:C:\\a.wgsl", ":claim=0.1/2"))
+        );
+        assert_eq!(split("winding"), None);
+        // The explorer watches the file itself, whatever follows its path.
+        assert_eq!(path_of("wgsl:a.wgsl:claim=0.1/2"), Some("a.wgsl"));
+        assert_eq!(path_of("wgsl:a.wgsl"), Some("a.wgsl"));
     }
 }

@@ -27,35 +27,37 @@ pub struct MethodSpec {
 }
 
 impl MethodSpec {
-    /// `NAME[:KEY=VALUE…]`, or `wgsl:PATH[:KEY=VALUE…]` for a user's method: the path
-    /// ends at `.wgsl` where a colon or the end follows it (so it may hold colons, as
-    /// `C:\x.wgsl` does), else at the next colon.
+    /// `NAME[:KEY=VALUE…]`, or `wgsl:PATH[:claim=MAX/MAE]` for a user's method (the
+    /// path read as `user::split` reads it).
     pub fn parse(text: &str) -> Result<MethodSpec, Error> {
         let text = text.trim();
-        let user = crate::methods::user::PREFIX;
-        let (name, rest) = match text.strip_prefix(user) {
-            Some(after) => {
-                let end = after
-                    .match_indices(".wgsl")
-                    .map(|(at, ext)| at + ext.len())
-                    .find(|&end| after[end..].is_empty() || after[end..].starts_with(':'))
-                    .or_else(|| after.find(':'))
-                    .unwrap_or(after.len());
-                (&text[..user.len() + end], &after[end..])
-            }
-            None => text.split_at(text.find(':').unwrap_or(text.len())),
-        };
-        let info = registry::find(name.trim())?;
+        let (name, rest) = crate::methods::user::split(text)
+            .unwrap_or_else(|| text.split_at(text.find(':').unwrap_or(text.len())));
         let parts = rest
             .strip_prefix(':')
             .into_iter()
             .flat_map(|r| r.split(':'));
-        let params = parts
+        let mut params = parts
             .map(|p| {
                 crate::view_args::parse_key_value(p)
                     .map_err(|e| Error::Input(format!("method '{text}': {e}")))
             })
             .collect::<Result<Vec<_>, _>>()?;
+        // A user's file takes its claim (`claim=MAX/MAE`) as its row's, not as a
+        // parameter of the method drawn: it stays with the name (`registry::find` reads
+        // it there).
+        if crate::methods::user::split(name).is_some() {
+            let claim = params.iter().rposition(|(k, _)| k == "claim");
+            let claim = claim.map(|k| params.remove(k).1);
+            params.retain(|(k, _)| k != "claim");
+            let info = crate::methods::user::find_claimed(name.trim(), claim.as_deref())?;
+            let name = match claim {
+                Some(claim) => format!("{}:claim={claim}", info.name),
+                None => info.name.to_owned(),
+            };
+            return Ok(MethodSpec { name, params });
+        }
+        let info = registry::find(name.trim())?;
         Ok(MethodSpec {
             name: info.name.to_owned(),
             params,

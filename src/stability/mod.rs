@@ -46,12 +46,17 @@ pub fn select_variants(names: Option<&[String]>) -> Result<Vec<Variant>, Error> 
     let Some(names) = names else {
         return Ok(all);
     };
-    for name in names {
+    // A user's file (`wgsl:PATH`, with `:claim=MAX/MAE` where given) is picked by its
+    // row's name, the path.
+    let mut names = names.to_vec();
+    for name in &mut names {
         if name.starts_with(crate::methods::user::PREFIX) {
-            all.extend(claims::variants_of(crate::methods::registry::find(name)?));
+            let row = crate::methods::registry::find(name)?;
+            all.extend(claims::variants_of(row));
+            *name = row.name.to_owned();
         }
     }
-    for name in names {
+    for name in &names {
         if !all.iter().any(|v| v.label == name || v.method == name) {
             let labels: Vec<_> = all.iter().map(|v| v.label).collect();
             return Err(Error::Input(format!(

@@ -33,8 +33,16 @@ pub fn run(args: &[&str]) -> Output {
 /// then is killed and returned as None, so a hang fails the test that asked instead of
 /// hanging the suite.
 pub fn run_within(args: &[&str], limit: Duration) -> Option<Output> {
-    let mut child = bin()
-        .args(args)
+    let mut command = bin();
+    command.args(args);
+    output_within(command, limit)
+}
+
+/// `command` (the binary with its arguments and environment) run to its end or for
+/// `limit` at most, as [`run_within`] runs it.
+#[allow(dead_code)]
+pub fn output_within(mut command: Command, limit: Duration) -> Option<Output> {
+    let mut child = command
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()

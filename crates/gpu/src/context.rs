@@ -12,6 +12,15 @@ pub struct GpuContext {
     /// None for a device a library caller gave (`glyphscope::text`): only the device
     /// and queue are needed to draw.
     adapter: Option<(wgpu::Instance, wgpu::Adapter)>,
+    /// The bound on a wait for the GPU, where one was set ([`GpuContext::guard_waits`]).
+    /// Shared by clones, as the device is.
+    wait_guard: std::sync::Arc<std::sync::Mutex<Option<WaitGuard>>>,
+}
+
+/// How long [`GpuContext::wait_idle`] may wait, and what it does past that.
+struct WaitGuard {
+    limit: std::time::Duration,
+    on_hang: std::sync::Arc<dyn Fn(std::time::Duration) + Send + Sync>,
 }
 
 /// The features `time_frames` needs: timestamps written on the command encoder, around
@@ -68,6 +77,7 @@ impl GpuContext {
             device,
             queue,
             adapter: Some((instance, adapter)),
+            wait_guard: Default::default(),
         })
     }
 
@@ -96,6 +106,7 @@ impl GpuContext {
             device,
             queue,
             adapter: Some((instance, adapter)),
+            wait_guard: Default::default(),
         }
     }
 
@@ -106,6 +117,7 @@ impl GpuContext {
             device,
             queue,
             adapter: None,
+            wait_guard: Default::default(),
         }
     }
 
@@ -211,16 +223,59 @@ impl GpuContext {
                     .into(),
             ));
         }
+        let guard = self
+            .wait_guard
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner())
+            .as_ref()
+            .map(|g| (g.limit, g.on_hang.clone()));
+        let start = std::time::Instant::now();
         loop {
-            match self.device.poll(wgpu::PollType::wait_indefinitely()) {
+            // GL waits at most 2.1 s a call (glClientWaitSync takes an i32 of
+            // nanoseconds), whatever was asked; a large frame on a software GL driver (the
+            // bench's scaling series) takes longer: wait again, up to the guard's limit.
+            let timeout = guard
+                .as_ref()
+                .map(|(limit, _)| limit.saturating_sub(start.elapsed()));
+            match self.device.poll(wgpu::PollType::Wait {
+                submission_index: None,
+                timeout,
+            }) {
                 Ok(_) => return Ok(()),
-                // GL waits at most 2.1 s a call (glClientWaitSync takes an i32 of
-                // nanoseconds), whatever was asked; a large frame on a software GL
-                // driver (the bench's scaling series) takes longer: wait again.
-                Err(wgpu::PollError::Timeout) => continue,
+                Err(wgpu::PollError::Timeout) => match &guard {
+                    Some((limit, on_hang)) if start.elapsed() >= *limit => {
+                        on_hang(start.elapsed());
+                        return Err(Error::Gpu(format!(
+                            "the GPU has not finished a frame in {:.0} s: a shader may never \
+                             return; the device stays busy with it",
+                            limit.as_secs_f64()
+                        )));
+                    }
+                    _ => continue,
+                },
                 Err(e) => return Err(Error::Gpu(format!("waiting for the GPU failed: {e}"))),
             }
         }
+    }
+
+    /// Bounds every later wait for the GPU ([`GpuContext::wait_idle`], and so every read
+    /// back) by `limit`: past it, `on_hang` is called with the time waited, and where it
+    /// returns, the wait fails with an error. For shaders not known to return (a user's
+    /// method, `--method wgsl:PATH`): a software device has no GPU timeout, and a
+    /// shader that never returns keeps it busy for good — dropping the device waits for
+    /// it too, so a command line ends its process in `on_hang`.
+    pub fn guard_waits(
+        &self,
+        limit: std::time::Duration,
+        on_hang: impl Fn(std::time::Duration) + Send + Sync + 'static,
+    ) {
+        *self
+            .wait_guard
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner()) = Some(WaitGuard {
+            limit,
+            on_hang: std::sync::Arc::new(on_hang),
+        });
     }
 
     /// Maps a `MAP_READ` buffer whose copies have been submitted, and returns its bytes.

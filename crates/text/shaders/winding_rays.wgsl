@@ -176,41 +176,78 @@ fn cast_ray(sample_local: vec2<f32>, jx_local: vec2<f32>, jy_local: vec2<f32>, b
         let p1 = ray_frame(c.p0p1.zw, axis, direction) - s;
         let p2 = ray_frame(c.p2, axis, direction) - s;
 
-        // Which roots count (`crossing_class`): bit 0 the descending crossing t1, bit
-        // 1 the ascending one t2.
-        let root_class = crossing_class(p0.y, p1.y, p2.y);
-        if root_class == 0u {
-            continue;
-        }
-        // y(t) = a t² − 2 b t + c. Roots t = (b ∓ √d)/a, in the stable form q/a, c/q:
-        // as a → 0 the eligible root is always the finite c/q, so lines encoded as
-        // quadratics need no threshold.
+        let crossings = ray_crossings(p0, p1, p2);
         let a = p0 - 2.0 * p1 + p2;
         let b = p0 - p1;
-        let discriminant = b.y * b.y - a.y * p0.y;
-        // Both roots are candidates only when the middle point is across the ray from
-        // both ends; with no real root the curve turns back before reaching the ray (or
-        // touches it), and its two crossings would cancel anyway. In the stable form
-        // below they would not cancel exactly, so skip them here.
-        if root_class == 3u && discriminant <= 0.0 {
-            continue;
+        if (crossings.counted & 1u) != 0u {
+            let t1 = crossings.t.x;
+            add_crossing(&ray, crossings.x.x, a * t1 - b, jx, jy, reach, pixels_per_unit, pixels_per_unit_across, 1.0);
         }
-        // A single crossing always exists; rounding may only push d below zero.
-        let d = sqrt(max(discriminant, 0.0));
-        let q = b.y + select(-d, d, b.y >= 0.0);
-        // t1 is the root where y' = 2(a t − b) = −2√d (descending), t2 where it is +2√d.
-        let t1 = select(q / a.y, p0.y / q, b.y >= 0.0);
-        let t2 = select(p0.y / q, q / a.y, b.y >= 0.0);
-        if (root_class & 1u) != 0u {
-            let x = (a.x * t1 - 2.0 * b.x) * t1 + p0.x;
-            add_crossing(&ray, x, a * t1 - b, jx, jy, reach, pixels_per_unit, pixels_per_unit_across, 1.0);
-        }
-        if (root_class & 2u) != 0u {
-            let x = (a.x * t2 - 2.0 * b.x) * t2 + p0.x;
-            add_crossing(&ray, x, a * t2 - b, jx, jy, reach, pixels_per_unit, pixels_per_unit_across, -1.0);
+        if (crossings.counted & 2u) != 0u {
+            let t2 = crossings.t.y;
+            add_crossing(&ray, crossings.x.y, a * t2 - b, jx, jy, reach, pixels_per_unit, pixels_per_unit_across, -1.0);
         }
     }
     return ray;
+}
+
+// Where a quadratic crosses the ray along +x from the origin (its control points
+// relative to the ray's start, in the ray's frame): which crossings count (`counted`,
+// from `crossing_class`: bit 0 the descending crossing, +1 to the winding number; bit 1
+// the ascending one, −1), their parameters `t` and their distances `x` along the ray
+// (either sign: behind the start too), descending first. A documented helper of the
+// prelude a user's method may call (docs/your-method.md).
+struct RayCrossings {
+    counted: u32,
+    t: vec2<f32>,
+    x: vec2<f32>,
+}
+
+fn ray_crossings(p0: vec2<f32>, p1: vec2<f32>, p2: vec2<f32>) -> RayCrossings {
+    var out: RayCrossings;
+    let root_class = crossing_class(p0.y, p1.y, p2.y);
+    if root_class == 0u {
+        return out;
+    }
+    // y(t) = a t² − 2 b t + c. Roots t = (b ∓ √d)/a, in the stable form q/a, c/q:
+    // as a → 0 the eligible root is always the finite c/q, so lines encoded as
+    // quadratics need no threshold.
+    let a = p0 - 2.0 * p1 + p2;
+    let b = p0 - p1;
+    let discriminant = b.y * b.y - a.y * p0.y;
+    // Both roots are candidates only when the middle point is across the ray from
+    // both ends; with no real root the curve turns back before reaching the ray (or
+    // touches it), and its two crossings would cancel anyway. In the stable form
+    // below they would not cancel exactly, so none counts.
+    if root_class == 3u && discriminant <= 0.0 {
+        return out;
+    }
+    // A single crossing always exists; rounding may only push d below zero.
+    let d = sqrt(max(discriminant, 0.0));
+    let q = b.y + select(-d, d, b.y >= 0.0);
+    // t1 is the root where y' = 2(a t − b) = −2√d (descending), t2 where it is +2√d.
+    let t1 = select(q / a.y, p0.y / q, b.y >= 0.0);
+    let t2 = select(p0.y / q, q / a.y, b.y >= 0.0);
+    out.counted = root_class;
+    out.t = vec2<f32>(t1, t2);
+    out.x = vec2<f32>((a.x * t1 - 2.0 * b.x) * t1 + p0.x, (a.x * t2 - 2.0 * b.x) * t2 + p0.x);
+    return out;
+}
+
+// The winding number of `g`'s outline around the point `s` (glyph units): its curves'
+// crossings ahead of `s` on the ray towards +x through its horizontal band, descending
+// ones +1 and ascending ones −1. A documented helper of the prelude for a user's method
+// that samples (docs/your-method.md); the rows integrate instead.
+fn sample_winding(g: Glyph, s: vec2<f32>) -> i32 {
+    let band = band_for(g, s, 0u);
+    var winding = 0;
+    for (var k = 0u; k < band.count; k++) {
+        let c = band_curve(band.by_max + k);
+        let r = ray_crossings(c.p0p1.xy - s, c.p0p1.zw - s, c.p2 - s);
+        winding += select(0, 1, (r.counted & 1u) != 0u && r.x.x > 0.0);
+        winding -= select(0, 1, (r.counted & 2u) != 0u && r.x.y > 0.0);
+    }
+    return winding;
 }
 
 // Coordinates seen by a ray cast along `axis` (0: x, 1: y) towards `direction` (±1):

@@ -1,25 +1,64 @@
-//! "Open font…": a path field and a folder listing of the font files in it, inside the
-//! app, so it works the same on any desktop and under Xvfb or a test harness (a native
-//! dialog needs a desktop portal). Dropping a file on the window opens it too. The web
-//! page has no file system: there "Open font…" is the browser's file picker (`web`),
-//! and a dropped file arrives as bytes.
+//! "Open font…" and a pane's "Open…" for your shader: a path field and a folder listing
+//! of the files of the kind asked for, inside the app, so it works the same on any
+//! desktop and under Xvfb or a test harness (a native dialog needs a desktop portal).
+//! Dropping a font file on the window opens it too. The web page has no file system:
+//! there "Open font…" is the browser's file picker (`web`), and a dropped file arrives
+//! as bytes.
 
 use std::path::{Path, PathBuf};
 
 use eframe::egui;
 
-pub struct FontDialog {
+#[derive(Clone, Debug)]
+pub struct FileDialog {
     pub open: bool,
-    /// The path typed or picked: a font file, or a folder to list.
+    /// The path typed or picked: a file, or a folder to list.
     pub path: String,
+    pub kind: FileKind,
 }
 
-impl Default for FontDialog {
-    fn default() -> Self {
+/// What a dialog opens.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FileKind {
+    Font,
+    /// A WGSL file: your own method (docs/your-method.md).
+    Shader,
+}
+
+impl FileKind {
+    fn title(self) -> &'static str {
+        match self {
+            FileKind::Font => "Open font",
+            FileKind::Shader => "Open your shader",
+        }
+    }
+
+    fn lists(self, path: &Path) -> bool {
+        match self {
+            FileKind::Font => is_font_file(path),
+            FileKind::Shader => path.extension().is_some_and(|e| e == "wgsl"),
+        }
+    }
+
+    fn hint(self) -> &'static str {
+        match self {
+            FileKind::Font => "Or drop a .ttf/.otf file on the window.",
+            FileKind::Shader => {
+                "A .wgsl file defining user_coverage (docs/your-method.md); the pane \
+                 draws it again whenever it is saved."
+            }
+        }
+    }
+}
+
+impl FileDialog {
+    /// A closed dialog for `kind`, listing the working folder.
+    pub fn new(kind: FileKind) -> Self {
         let start = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("/"));
-        FontDialog {
+        FileDialog {
             open: false,
             path: start.display().to_string(),
+            kind,
         }
     }
 }
@@ -34,14 +73,14 @@ pub fn is_font_file(path: &Path) -> bool {
     })
 }
 
-/// Folders, then font files, in `dir`, each sorted by name.
-fn listing(dir: &Path) -> Vec<PathBuf> {
+/// Folders, then the files of `kind`, in `dir`, each sorted by name.
+fn listing(dir: &Path, kind: FileKind) -> Vec<PathBuf> {
     let Ok(entries) = std::fs::read_dir(dir) else {
         return Vec::new();
     };
     let mut paths: Vec<PathBuf> = entries
         .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.is_dir() || is_font_file(p))
+        .filter(|p| p.is_dir() || kind.lists(p))
         .filter(|p| {
             !p.file_name()
                 .is_some_and(|n| n.to_string_lossy().starts_with('.'))
@@ -51,12 +90,19 @@ fn listing(dir: &Path) -> Vec<PathBuf> {
     paths
 }
 
-impl FontDialog {
-    /// Shows the window; returns a font file the user chose to open.
-    pub fn show(&mut self, ctx: &egui::Context) -> Option<PathBuf> {
+impl FileDialog {
+    /// Shows the window (`id` tells two dialogs of one kind apart); returns a file the
+    /// user chose to open.
+    pub fn show(
+        &mut self,
+        ctx: &egui::Context,
+        id: impl std::hash::Hash + std::fmt::Debug,
+    ) -> Option<PathBuf> {
         let mut chosen = None;
         let mut open = self.open;
-        egui::Window::new("Open font")
+        let kind = self.kind;
+        egui::Window::new(kind.title())
+            .id(egui::Id::unique(("file dialog", kind.title(), id)))
             .open(&mut open)
             .default_width(420.0)
             .show(ctx, |ui| {
@@ -66,7 +112,7 @@ impl FontDialog {
                         .add(
                             egui::TextEdit::singleline(&mut self.path)
                                 .desired_width(300.0)
-                                .id_salt("font path"),
+                                .id_salt((kind.title(), "path")),
                         )
                         .labelled_by(label.id);
                     let entered =
@@ -79,7 +125,10 @@ impl FontDialog {
                 let dir = if here.is_dir() {
                     here
                 } else {
-                    here.parent().map(Path::to_path_buf).unwrap_or_default()
+                    // A bare file name's folder is the working one.
+                    here.parent()
+                        .filter(|p| !p.as_os_str().is_empty())
+                        .map_or_else(|| PathBuf::from("."), Path::to_path_buf)
                 };
                 if let Some(parent) = dir.parent()
                     && ui.button("Up one folder").clicked()
@@ -89,7 +138,7 @@ impl FontDialog {
                 egui::ScrollArea::vertical()
                     .max_height(300.0)
                     .show(ui, |ui| {
-                        for path in listing(&dir) {
+                        for path in listing(&dir, kind) {
                             let name = path
                                 .file_name()
                                 .map(|n| n.to_string_lossy().into_owned())
@@ -109,7 +158,7 @@ impl FontDialog {
                             }
                         }
                     });
-                ui.weak("Or drop a .ttf/.otf file on the window.");
+                ui.weak(kind.hint());
             });
         self.open = open;
         if let Some(path) = &chosen
