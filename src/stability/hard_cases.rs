@@ -542,6 +542,30 @@ pub fn all() -> Vec<HardCase> {
             text("fT"),
             48.0,
         )),
+        // Shapes the survey found (docs/survey.md) that no case here had.
+        real(
+            "large-circle",
+            "DejaVu Sans ◯ (U+25EF) at 48 px/em: a ring a whole em across drawn with few \
+             quadratics, each far from its chord (sdf-cells' estimate read 1.0 on it)",
+            text("◯"),
+            48.0,
+        ),
+        real(
+            "notch",
+            "DejaVu Sans 𐌔 (U+10314) at 48 px/em: a zigzag whose concave notch has \
+             vertices at equal heights (tessellation's sweep once joined them across the \
+             notch, a triangle outside the outline)",
+            text("𐌔"),
+            48.0,
+        ),
+        real(
+            "bent-strokes",
+            "DejaVu Sans 'βζ' at 48 px/em: thin strokes bent tightly, where a chord lies \
+             far from its curve (sdf-cells' estimate read pixels a whole pixel off along \
+             one side)",
+            text("βζ"),
+            48.0,
+        ),
         synthetic(
             "opposite-wound-contours",
             "separate contours wound opposite ways, both filled under nonzero: squares side \

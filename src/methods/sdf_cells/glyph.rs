@@ -40,7 +40,10 @@ impl PreparedGlyph {
         units_per_em: f64,
         settings: &Settings,
     ) -> Result<PreparedGlyph, Error> {
-        let quadratics = outline.to_quadratics(DEFAULT_QUAD_TOLERANCE_EM * units_per_em);
+        let mut quadratics = outline.to_quadratics(DEFAULT_QUAD_TOLERANCE_EM * units_per_em);
+        if let (Mode::Estimate, Some(flatness)) = (settings.mode, settings.flatness_em) {
+            quadratics = quadratics.halved_until_flat(flatness * units_per_em);
+        }
         let layout = CurveLayout::new(&quadratics);
         let curves = layout.curve_slots.len();
         // The grid covers the outline plus what the effects draw around it.

@@ -18,6 +18,20 @@ pub const PARAMS: &[ParamSpec] = &[
                \"GPU-computed distances\" article) with the sign from the winding number.",
     },
     ParamSpec {
+        key: "flatness",
+        choices: &["0.004", "off", "0.001"],
+        numbers: Some(Numbers::Real {
+            min: 0.0001,
+            max: 1.0,
+            unit: "em",
+        }),
+        help: "estimate: each curve halved until it keeps within this many em of its \
+               chord, the remedy font-demo names (\"beziers can be subdivided\"): the \
+               tangent-line distance is off by about the curve's bend, and so is the \
+               chord that picks the nearest curve; off: the curves as the font has them, \
+               font-demo as published. More curves per cell as it shrinks.",
+    },
+    ParamSpec {
         key: "bias",
         choices: &["0.001", "0", "0.005"],
         numbers: Some(Numbers::Real {
@@ -102,6 +116,8 @@ pub const OVERLAYS: &[Overlay] = &[
 
 /// The `UDIST_BIAS` of kocsis1david's font-demo, taken as em.
 pub const DEFAULT_BIAS_EM: f64 = 0.001;
+/// How far a curve may stray from its chord in the estimate, em, by default.
+pub const DEFAULT_FLATNESS_EM: f64 = 0.004;
 /// The largest grid a parameter may force, per side.
 pub const MAX_GRID: u32 = 64;
 
@@ -151,6 +167,8 @@ pub struct Settings {
     /// Draw each group of instances whose ink overlaps as one glyph (`between=union`).
     pub join_instances: bool,
     pub bias_em: f64,
+    /// Estimate: curves halved until within this many em of their chord; None: off.
+    pub flatness_em: Option<f64>,
     pub grid: GridChoice,
     pub encoding: EncodingChoice,
     pub effects: Effects,
@@ -164,6 +182,7 @@ impl Default for Settings {
             overlaps: Overlaps::Merge,
             join_instances: true,
             bias_em: DEFAULT_BIAS_EM,
+            flatness_em: Some(DEFAULT_FLATNESS_EM),
             grid: GridChoice::Auto,
             encoding: EncodingChoice::Auto,
             effects: Effects::default(),
@@ -187,6 +206,11 @@ impl Settings {
             },
             join_instances: params.word("between") != Some("add"),
             bias_em: em("bias", defaults.bias_em),
+            flatness_em: match params.get("flatness") {
+                Some(Value::Word("off")) => None,
+                Some(Value::Real(x)) => Some(x),
+                _ => defaults.flatness_em,
+            },
             grid: match params.get("grid") {
                 Some(Value::Whole(n)) => GridChoice::Fixed(n),
                 _ => GridChoice::Auto,

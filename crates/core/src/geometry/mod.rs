@@ -24,8 +24,8 @@ pub use outline::{Contour, Outline, kurbo_path};
 pub use overlaps::{inks_overlap, merge_overlaps};
 pub use projection::{jacobian_bound, keeps_axes, project, steps_lean_apart};
 pub use quadratic::{
-    Quad, blossom_value, integral_x_dy, line_as_quad, monomial, monotone_pieces, point_at,
-    signed_area, subcurve, t_at, winding_number,
+    Quad, blossom_value, chord_deviation, halved_until_flat, integral_x_dy, line_as_quad, monomial,
+    monotone_pieces, point_at, signed_area, subcurve, t_at, winding_number,
 };
 pub use rect::{Rect, groups_where, overlapping_groups};
 pub use segment::{Segment, segment_points};

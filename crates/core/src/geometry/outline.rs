@@ -56,6 +56,28 @@ impl Outline {
     /// The same outline with every cubic replaced by quadratics within `tolerance`
     /// (same units as the outline). Lines and quadratics are kept as they are.
     pub fn to_quadratics(&self, tolerance: f64) -> Outline {
+        self.map_segments(|s, out| match *s {
+            Segment::Cubic(..) => cubic_to_quadratics(s, tolerance, &mut |q| out.push(q)),
+            other => out.push(other),
+        })
+    }
+
+    /// The same outline (cubics must already be quadratics) with every quadratic halved
+    /// until each piece keeps within `tolerance` of its chord
+    /// ([`halved_until_flat`](super::halved_until_flat)); lines are kept.
+    pub fn halved_until_flat(&self, tolerance: f64) -> Outline {
+        self.map_segments(|s, out| match *s {
+            Segment::Quad(a, b, c) => {
+                super::halved_until_flat([a, b, c], tolerance, &mut |[p, q, r]| {
+                    out.push(Segment::Quad(p, q, r))
+                })
+            }
+            other => out.push(other),
+        })
+    }
+
+    /// Each contour with each segment replaced by what `f` pushes for it.
+    fn map_segments(&self, mut f: impl FnMut(&Segment, &mut Vec<Segment>)) -> Outline {
         Outline {
             contours: self
                 .contours
@@ -63,12 +85,7 @@ impl Outline {
                 .map(|c| {
                     let mut segments = Vec::with_capacity(c.segments.len());
                     for s in &c.segments {
-                        match *s {
-                            Segment::Cubic(..) => {
-                                cubic_to_quadratics(s, tolerance, &mut |q| segments.push(q))
-                            }
-                            other => segments.push(other),
-                        }
+                        f(s, &mut segments);
                     }
                     Contour { segments }
                 })

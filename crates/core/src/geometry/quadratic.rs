@@ -41,6 +41,31 @@ pub fn subcurve(c: Quad, a: f64, b: f64) -> Quad {
     [blossom(c, a, a), blossom(c, a, b), blossom(c, b, b)]
 }
 
+/// How far a quadratic strays from its chord: the largest distance from a point of
+/// the curve to the segment between its ends, at most |p0 − 2·p1 + p2| / 4 (reached at
+/// t = ½ for the distance to the chord's line; the bound also covers the segment).
+pub fn chord_deviation(c: Quad) -> f64 {
+    (c[0] - 2.0 * c[1] + c[2]).length() / 4.0
+}
+
+/// `c` halved (at t = ½, by blossoming) until every piece keeps within `tolerance` of
+/// its chord ([`chord_deviation`]), the pieces handed to `out` in order. Each halving
+/// quarters the deviation, so a curve takes 2^⌈log₄(deviation / tolerance)⌉ pieces.
+pub fn halved_until_flat(c: Quad, tolerance: f64, out: &mut impl FnMut(Quad)) {
+    // A tolerance of 0, or one below what f64 resolves at the curve's size, would halve
+    // forever: 2^16 pieces at most.
+    fn halve(c: Quad, tolerance: f64, depth: u32, out: &mut impl FnMut(Quad)) {
+        let deviation = chord_deviation(c);
+        if depth >= 16 || deviation <= tolerance || deviation.is_nan() {
+            out(c);
+            return;
+        }
+        halve(subcurve(c, 0.0, 0.5), tolerance, depth + 1, out);
+        halve(subcurve(c, 0.5, 1.0), tolerance, depth + 1, out);
+    }
+    halve(c, tolerance, 0, out);
+}
+
 /// Monomial coefficients (t², t, 1) of a quadratic given by its control values.
 pub fn monomial(c: [f64; 3]) -> [f64; 3] {
     [c[0] - 2.0 * c[1] + c[2], 2.0 * (c[1] - c[0]), c[0]]
@@ -164,6 +189,35 @@ mod tests {
     /// The arch (0,0)–(1,2)–(2,0): x(t) = 2t, y(t) = 4t(1 − t).
     fn arch() -> Quad {
         q((0.0, 0.0), (1.0, 2.0), (2.0, 0.0))
+    }
+
+    #[test]
+    fn a_curve_is_halved_until_each_piece_keeps_to_its_chord() {
+        // The arch strays |p0 − 2p1 + p2| / 4 = |(0, −4)| / 4 = 1 from its chord, at
+        // t = ½ (its top, (1, 1), over the chord's midpoint (1, 0)).
+        assert_eq!(chord_deviation(arch()), 1.0);
+        // Each halving quarters it: 1/4 after one, 1/16 after two. Within 0.3: two
+        // pieces; within 0.1: four, ending at t = ¼, ½, ¾: (0.5, 0.75), (1, 1), (1.5, 0.75).
+        let pieces = |tolerance: f64| {
+            let mut out = Vec::new();
+            halved_until_flat(arch(), tolerance, &mut |p| out.push(p));
+            out
+        };
+        assert_eq!(pieces(0.3).len(), 2);
+        let four = pieces(0.1);
+        let ends: Vec<DVec2> = four.iter().map(|p| p[2]).collect();
+        assert_eq!(
+            ends,
+            [(0.5, 0.75), (1.0, 1.0), (1.5, 0.75), (2.0, 0.0)].map(DVec2::from)
+        );
+        assert_eq!(four[0][0], DVec2::ZERO);
+        for pair in four.windows(2) {
+            assert_eq!(pair[0][2], pair[1][0], "the pieces chain");
+        }
+        assert!(four.iter().all(|p| chord_deviation(*p) == 1.0 / 16.0));
+        // Flat already: kept whole; a curve that no tolerance reaches stops at 2^16.
+        assert_eq!(pieces(1.0).len(), 1);
+        assert_eq!(pieces(0.0).len(), 1 << 16);
     }
 
     #[test]
