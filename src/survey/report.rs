@@ -324,12 +324,14 @@ fn markdown(
         );
     }
     for s in summaries.iter().filter(|s| !s.not_drawn.is_empty()) {
-        let _ = writeln!(
-            md,
-            "\n{} did not draw: {}",
-            s.method,
-            s.not_drawn.join("; ")
-        );
+        // Once each: a refusal repeats for every size and transform of a font.
+        let mut distinct: Vec<&str> = Vec::new();
+        for why in &s.not_drawn {
+            if !distinct.contains(&why.as_str()) {
+                distinct.push(why);
+            }
+        }
+        let _ = writeln!(md, "\n{} did not draw: {}", s.method, distinct.join("; "));
     }
     for method in methods {
         let Some(list) = worst.get(method.as_str()) else {

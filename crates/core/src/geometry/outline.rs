@@ -4,6 +4,7 @@
 use glam::DVec2;
 
 use super::cubic::cubic_to_quadratics;
+use super::quadratic::halved_until_flat;
 use super::rect::Rect;
 use super::segment::{Segment, segment_points};
 
@@ -64,14 +65,12 @@ impl Outline {
 
     /// The same outline (cubics must already be quadratics) with every quadratic halved
     /// until each piece keeps within `tolerance` of its chord
-    /// ([`halved_until_flat`](super::halved_until_flat)); lines are kept.
+    /// ([`halved_until_flat`]); lines are kept.
     pub fn halved_until_flat(&self, tolerance: f64) -> Outline {
         self.map_segments(|s, out| match *s {
-            Segment::Quad(a, b, c) => {
-                super::halved_until_flat([a, b, c], tolerance, &mut |[p, q, r]| {
-                    out.push(Segment::Quad(p, q, r))
-                })
-            }
+            Segment::Quad(a, b, c) => halved_until_flat([a, b, c], tolerance, &mut |[p, q, r]| {
+                out.push(Segment::Quad(p, q, r))
+            }),
             other => out.push(other),
         })
     }
