@@ -250,25 +250,28 @@ fn the_stability_sweep_and_motion_run_a_file_too() {
         String::from_utf8_lossy(&result.stderr)
     );
     assert!(stdout.contains(EXAMPLE), "{stdout}");
-    // A copy claiming what 16 samples cannot keep breaks its claim: exit 1.
+    // A copy claiming what 16 samples cannot keep breaks its claim: exit 1; and so
+    // does the file itself held to that claim with the method.
     let text = std::fs::read_to_string("examples/methods/supersampled.wgsl")
         .unwrap()
         .replace("// claim: max=0.3 mae=8", "// claim: max=0.001 mae=0.01");
     let (strict, _) = user_file("strict-stability.wgsl", &text);
-    let result = run(&[
-        "stability",
-        "--quick",
-        "--cases",
-        "collinear-quadratic",
-        "--methods",
-        &strict,
-    ]);
-    assert_eq!(
-        result.status.code(),
-        Some(1),
-        "{}",
-        String::from_utf8_lossy(&result.stderr)
-    );
+    for method in [strict, format!("{EXAMPLE}:claim=0.001/0.01")] {
+        let result = run(&[
+            "stability",
+            "--quick",
+            "--cases",
+            "collinear-quadratic",
+            "--methods",
+            &method,
+        ]);
+        assert_eq!(
+            result.status.code(),
+            Some(1),
+            "{method}: {}",
+            String::from_utf8_lossy(&result.stderr)
+        );
+    }
     let out = scratch("motion");
     let result = run(&[
         "motion",
