@@ -258,7 +258,7 @@ fn tangent_side(c: Curve, t: f32, p: vec2<f32>) -> Side {
 // curves and their corner decides: p is inside both tangent lines where the outline
 // turns right (convex), inside either where it turns left. Elsewhere `own` stands, as in
 // font-demo.
-fn join_side(before: vec2<f32>, v: vec2<f32>, after: vec2<f32>, p: vec2<f32>, own: Side) -> Side {
+fn join_side(before: vec2<f32>, v: vec2<f32>, after: vec2<f32>, far: vec4<f32>, p: vec2<f32>, own: Side) -> Side {
     let into = normalize(v - before);
     let out = normalize(after - v);
     if dot(p - v, into) < 0.0 || dot(p - v, out) > 0.0 {
@@ -268,7 +268,14 @@ fn join_side(before: vec2<f32>, v: vec2<f32>, after: vec2<f32>, p: vec2<f32>, ow
     let out_gradient = vec2<f32>(out.y, -out.x);
     let incoming = dot(into_gradient, p - v);
     let outgoing = dot(out_gradient, p - v);
-    let convex = dot(out_gradient, before - v) > 0.0;
+    // Convex where the outline turns right (y up) from one tangent to the other. At a
+    // cusp the two tangents lie on one line, the outline doubling back along it (a
+    // star's spike at its tip), and their turn is rounding's: the curves' far ends,
+    // `far` (the incoming curve's start, the outgoing curve's end), say which way it
+    // bends.
+    let turn = into.x * out.y - into.y * out.x;
+    let far_turn = cross2(v - far.xy, far.zw - v);
+    let convex = select(turn < 0.0, far_turn < 0.0, abs(turn) < 1e-4);
     let lines = Lines(into_gradient, out_gradient, convex);
     if (incoming < outgoing) == convex {
         return Side(incoming, into_gradient, true, out - into, lines);
@@ -365,7 +372,8 @@ fn estimate_curve(p: vec2<f32>, i: u32, field: ptr<function, Field>) {
         let own_out = select(c.control, c.end, all(c.control == c.start));
         let previous_in = select(c.previous_control, c.previous_start, all(c.previous_control == c.start));
         let next_out = select(c.next_control, c.next_end, all(c.next_control == c.end));
-        side = join_side(select(own_in, previous_in, at_start), v, select(next_out, own_out, at_start), p, side);
+        let far = select(vec4<f32>(c.start, c.next_end), vec4<f32>(c.previous_start, c.end), at_start);
+        side = join_side(select(own_in, previous_in, at_start), v, select(next_out, own_out, at_start), far, p, side);
     }
     let part = Part(udist, t > 0.0 && t < 1.0, select(NO_CORNER, v, side.corner), side.wedge,
         side.lines);

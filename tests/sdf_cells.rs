@@ -242,6 +242,24 @@ fn the_estimate_halves_curves_until_their_chords_hold_them() {
 }
 
 #[test]
+fn the_estimate_reads_a_cusp_by_its_curves_far_ends() {
+    // At each spike's tip the two curves arrive along one line: their tangents' turn is
+    // rounding's, and read as concave it put a bar of full coverage across the tip (29
+    // pixels over 0.5 on ✦ at 48 px/em before the far ends decided).
+    let case = glyphscope::stability::hard_cases::by_name("star-tips").unwrap();
+    for offset in [DVec2::ZERO, DVec2::new(0.25, 0.5)] {
+        let camera = case.camera(0.0, offset).unwrap();
+        let expected = reference::rasterize(&case.scene, &camera).unwrap();
+        let error = compare(
+            &Renderer::new(&[]).coverage(&case.scene, &camera),
+            &expected,
+        );
+        let error = error.unwrap();
+        assert_eq!(error.pixels_over_05, 0, "{offset}: {error:?}");
+    }
+}
+
+#[test]
 fn glyphs_past_font_demos_limits_render_with_every_encoding() {
     // DejaVu glyphs past the 256 slots (512 points) of kocsis1david's font-demo: found,
     // not assumed.

@@ -566,6 +566,14 @@ pub fn all() -> Vec<HardCase> {
             text("βζ"),
             48.0,
         ),
+        real(
+            "star-tips",
+            "DejaVu Sans ✦✧ (U+2726–7) at 48 px/em: spikes whose two curves arrive at \
+             the tip along one line, a cusp (sdf-cells' estimate once read a bar of full \
+             coverage across each tip)",
+            text("✦✧"),
+            48.0,
+        ),
         synthetic(
             "opposite-wound-contours",
             "separate contours wound opposite ways, both filled under nonzero: squares side \

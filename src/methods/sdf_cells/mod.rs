@@ -72,15 +72,17 @@ pub const INFO: MethodInfo = MethodInfo {
                 // `mode=exact` carries sdf-cells' claim. Its own remedy, curves halved
                 // until within `flatness` (0.004 em) of their chords, takes 94 % of the
                 // views with a pixel over 0.5 away (docs/methods/sdf-cells.md, "Halved
-                // curves"); sharp tips still read a whole pixel off with no trait.
+                // curves"), and cusps read by their curves' far ends most of the rest;
+                // 13 views with no trait still read a pixel more than 0.65 off.
                 bound: None,
                 except: &[],
                 limitation: None,
                 temporal: None,
                 statement: "estimate (font-demo's), overlapping contours merged and \
                             curves halved to within 0.004 em of their chords first: no \
-                            bound, its figures shown; at sharp tips the tie between two \
-                            curves can read a pixel a whole pixel off",
+                            bound, its figures shown; on a few glyphs (✇, card faces, ◈) \
+                            the tie between two curves still reads a pixel a whole pixel \
+                            off",
             },
         },
         ClaimedSetting {
