@@ -173,7 +173,8 @@ impl Pane {
         let stamp = user_file(settings).and_then(user::stamp);
         // A user's file that compiles is drawn once it has been drawn in a process of
         // its own (`trial`): a loop that never returns hangs that one, not this one.
-        let trial = match (user_file(settings), stamp) {
+        // Asked only where the pane is to make its method: not every frame.
+        let trial = || match (user_file(settings), stamp) {
             (Some(name), Some(stamp)) if user::find(name).is_ok() => trial::of(name, stamp),
             _ => Trial::Passed,
         };
@@ -185,7 +186,7 @@ impl Pane {
                 } else {
                     ""
                 };
-                match trial {
+                match trial() {
                     // Asked again next frame (the pane repaints while it draws a file).
                     Trial::Running => {
                         self.problem = Some(format!("{TRYING}{last}"));
@@ -228,7 +229,7 @@ impl Pane {
         let Some((scene, _)) = scene else {
             return;
         };
-        match trial {
+        match trial() {
             Trial::Running => {
                 // Made once the trial has passed: asked again next frame.
                 self.problem = Some(TRYING.into());

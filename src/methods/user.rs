@@ -13,10 +13,10 @@ use std::path::Path;
 use std::sync::{Mutex, OnceLock};
 use std::time::Duration;
 
+use super::Method;
 use super::info::{
     BenchSetting, Claim, ClaimedSetting, Constructor, MethodInfo, Role, bench_at, within,
 };
-use super::{CurveCost, Method, Overlay};
 use crate::Error;
 use crate::camera::Camera;
 use crate::gpu::{CoverageTarget, GpuContext};
@@ -191,6 +191,7 @@ pub fn find_claimed(name: &str, claim: Option<&str>) -> Result<&'static MethodIn
             Ok(Box::new(UserMethod {
                 name,
                 winding: Winding::with_user_source(source.to_owned()),
+                limit: frame_limit(),
             }))
         },
     ));
@@ -396,6 +397,8 @@ fn claim_within(max: f64, mae: f64, whose: &str) -> Claim {
 struct UserMethod {
     name: &'static str,
     winding: Winding,
+    /// [`frame_limit`], read once when the method is made.
+    limit: Duration,
 }
 
 impl Method for UserMethod {
@@ -418,8 +421,7 @@ impl Method for UserMethod {
         // file's (the last user's method drawn): a loop in it that never ends would
         // otherwise hang a software device (lavapipe has no GPU timeout) and this
         // process with it.
-        let limit = frame_limit();
-        let name = self.name;
+        let (limit, name) = (self.limit, self.name);
         gpu.guard_waits(limit, move |waited| {
             let message = format!(
                 "{}: your shader {HANG} in {:.0} s: does a loop never end? (the limit: \
@@ -435,21 +437,10 @@ impl Method for UserMethod {
         self.winding.encode(gpu, encoder, target, camera)
     }
 
+    // No overlays and no curve count: the user's function counts nothing (the trait's
+    // defaults).
     fn gpu_bytes(&self) -> u64 {
         self.winding.gpu_bytes()
-    }
-
-    fn overlays(&self) -> &'static [Overlay] {
-        &[]
-    }
-
-    fn curves_per_pixel(
-        &mut self,
-        _gpu: &GpuContext,
-        _camera: &Camera,
-    ) -> Result<Option<CurveCost>, Error> {
-        // The user's function counts nothing.
-        Ok(None)
     }
 }
 
