@@ -183,7 +183,7 @@ pub fn render(options: &RenderOptions) -> Result<Rendered, Error> {
         (Some(error), [only]) if method.name.starts_with(crate::methods::user::PREFIX) => {
             only.claim.bound.map(|bound| ClaimVerdict {
                 statement: only.claim.statement,
-                held: bound.holds(error.max, error.mae_255),
+                held: bound.holds(error.max, error.mae_255, error.edge.mae_255),
             })
         }
         _ => None,

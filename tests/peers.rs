@@ -159,8 +159,6 @@ fn peers_refuse_what_their_apis_cannot_draw() {
         (0.0, 100.0),
     ]]));
     assert!(refused(peers::glyphon::NAME, &synthetic, &upright).contains("no font"));
-    let one_glyph = Scene::from_glyph_id(&glyphscope::font::default_font(), 36).unwrap();
-    assert!(refused(peers::glyphon::NAME, &one_glyph, &upright).contains("id"));
     // The shipped variable font has a weight axis only: the rule is checked on the
     // variations themselves.
     let inter = glyphscope::font::SHIPPED_FONTS
@@ -201,6 +199,81 @@ fn peers_refuse_what_their_apis_cannot_draw() {
         let image = frame::render_image(gpu, method.as_mut(), &upright).unwrap();
         assert!(image.sum() > 0.0, "{name}");
     }
+}
+
+/// A scene of glyphs drawn by their ids (the survey's): glyphon draws a glyph that a
+/// character maps to as that character alone, where the reference draws the glyph, and
+/// refuses, glyph by glyph, one that no character reaches (.notdef), drawing nothing
+/// there.
+#[test]
+fn glyphon_draws_a_glyph_by_id_through_its_character() {
+    use glyphscope::scene::{Glyph, Instance};
+    let gpu = common::gpu();
+    let font = glyphscope::font::default_font();
+    let glyph = |id: u16| {
+        let outline = font.outline(id);
+        let bounds = outline.control_bounds().expect("the glyph has ink");
+        Glyph::new(id, outline, bounds)
+    };
+    let g = font.glyph_for_char('g').unwrap();
+    // .notdef (a box in DejaVu) at the origin, 'g' 1 500 units (29.3 px) to its right.
+    let scene = Scene::from_font_glyphs(
+        &font,
+        vec![glyph(0), glyph(g)],
+        vec![
+            Instance {
+                glyph: 0,
+                position: DVec2::ZERO,
+            },
+            Instance {
+                glyph: 1,
+                position: DVec2::new(1500.0, 0.0),
+            },
+        ],
+    );
+    let camera = Camera::new(90, 60, 40.0, DVec2::new(10.0, 40.0));
+    let mut glyphon = registry::create(peers::glyphon::NAME, &[]).unwrap();
+    glyphon.prepare(gpu, &scene).unwrap();
+    let image = frame::render_image(gpu, glyphon.as_mut(), &camera).unwrap();
+    let refused = glyphon.refused_glyphs();
+    assert_eq!(refused.len(), 1, "{refused:?}");
+    assert_eq!(refused[0].0, 0);
+    assert!(refused[0].1.contains("no character"), "{}", refused[0].1);
+    let reference = reference::rasterize(&scene, &camera).unwrap();
+    // Ink left and right of x = 37 (the box spans about x 12..30, the 'g' 40..62).
+    let ink = |image: &glyphscope::coverage::CoverageImage, right: bool| -> f64 {
+        (0..image.height)
+            .flat_map(|y| (0..image.width).map(move |x| (x, y)))
+            .filter(|&(x, _)| (x >= 37) == right)
+            .map(|(x, y)| f64::from(image.data[(y * image.width + x) as usize]))
+            .sum()
+    };
+    assert_eq!(
+        ink(&image, false),
+        0.0,
+        "nothing where the refused glyph is"
+    );
+    assert!(ink(&reference, false) > 20.0, "the reference draws the box");
+    let (theirs, ours) = (ink(&image, true), ink(&reference, true));
+    // The same glyph at the same place: its ink within 5 % (hinting moves edges a
+    // little, glyphon's whole-pixel baseline here moves nothing: the origin's y is whole),
+    // and a mean error of a few levels, where a misplaced glyph would be off by tens.
+    assert!(
+        (theirs - ours).abs() < 0.05 * ours,
+        "{theirs} against {ours}"
+    );
+    let right = |image: &glyphscope::coverage::CoverageImage| {
+        let mut part = glyphscope::coverage::CoverageImage::new(image.width - 37, image.height);
+        for y in 0..image.height {
+            for x in 37..image.width {
+                part.data[(y * part.width + x - 37) as usize] =
+                    image.data[(y * image.width + x) as usize];
+            }
+        }
+        part
+    };
+    let stats = metrics::compare(&right(&image), &right(&reference)).unwrap();
+    assert!(stats.mae_255 < 10.0, "{stats:?}");
 }
 
 /// vello submits its own command buffers; the time the frame loop takes for them is the

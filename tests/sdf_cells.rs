@@ -259,6 +259,36 @@ fn the_estimate_reads_a_cusp_by_its_curves_far_ends() {
     }
 }
 
+/// Where the side comes from a rule — curves tied within `bias` that disagree, or a pixel
+/// past the ends of the nearest chord — the winding number gives it (`ties=winding`, the
+/// default). font-demo's rules alone (`ties=merge`) read a pixel a whole pixel off on
+/// each of these: a triangle's tip on an arc, and Latin Modern's S and № at 48 px/em (a
+/// pixel under the S's tail, one inside the №'s stem), at the survey's offsets.
+#[test]
+fn the_estimate_takes_the_side_from_the_winding_number_where_a_rule_gave_it() {
+    let tip = glyphscope::stability::hard_cases::by_name("tip-on-arc").unwrap();
+    let tip_camera = tip.camera(0.0, DVec2::ZERO).unwrap();
+    let latin = Font::from_path(std::path::Path::new("fonts/lmroman10-regular.otf")).unwrap();
+    let glyph = |id: u32, origin: (f64, f64)| {
+        let scene = Scene::from_glyph_id(&latin, id).unwrap();
+        (scene, Camera::new(40, 52, 48.0, origin.into()))
+    };
+    let views = [
+        ("tip-on-arc", (tip.scene.clone(), tip_camera)),
+        ("S", glyph(97, (1.2495, 36.886875))),
+        ("numero", glyph(420, (1.1145, 36.781875))),
+    ];
+    let mut winding = Renderer::new(&[]);
+    let mut merge = Renderer::new(&[("ties", "merge")]);
+    for (name, (scene, camera)) in &views {
+        let expected = reference::rasterize(scene, camera).unwrap();
+        let published = compare(&merge.coverage(scene, camera), &expected).unwrap();
+        assert!(published.max > 0.8, "{name}, ties=merge: {published:?}");
+        let sided = compare(&winding.coverage(scene, camera), &expected).unwrap();
+        assert!(sided.max <= 0.5, "{name}: {sided:?}");
+    }
+}
+
 #[test]
 fn glyphs_past_font_demos_limits_render_with_every_encoding() {
     // DejaVu glyphs past the 256 slots (512 points) of kocsis1david's font-demo: found,
@@ -532,9 +562,13 @@ fn cell_overlay_draws_the_grid_and_tints_cells_by_their_curves() {
 
 #[test]
 fn curves_per_pixel_counts_what_the_cells_and_bands_hold() {
-    for mode in ["estimate", "exact"] {
+    // The estimate walks its bands only where a rule gives a pixel's side
+    // (`ties=winding`), which the CPU does not mirror: counted here with font-demo's
+    // rules alone, no bands; exact mode walks them at every pixel.
+    for (mode, ties) in [("estimate", "merge"), ("exact", "winding")] {
         let (mut sum, mut covered, mut max) = (0usize, 0usize, 0usize);
-        let (cost, _) = for_each_pixel('g', &[("mode", mode)], |glyph, p, coverage, _| {
+        let params = [("mode", mode), ("ties", ties)];
+        let (cost, _) = for_each_pixel('g', &params, |glyph, p, coverage, _| {
             if coverage <= 0.0 {
                 return;
             }

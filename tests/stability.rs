@@ -8,6 +8,7 @@ mod common;
 use glam::DVec2;
 use glyphscope::coverage::CoverageImage;
 use glyphscope::effort::Effort;
+use glyphscope::methods::info::MeanOver;
 use glyphscope::methods::registry;
 use glyphscope::metrics;
 use glyphscope::reference;
@@ -56,10 +57,11 @@ fn every_method_keeps_its_claims_on_every_hard_case() {
     );
 }
 
-/// The documented limitations are measured, not assumed: the estimate cracks where a
-/// contour's corner touches another's curved edge, and exact distances on detail under a
-/// pixel stay within their looser limitation bound. Overlapping contours, merged first,
-/// are inside both claims; touching ones inside exact mode's.
+/// The documented limitations are measured, not assumed: exact distances on detail under
+/// a pixel stay within their looser limitation bound. Touching contours are inside both
+/// claims — the estimate's since the winding number gives its side where a rule did (a
+/// contour's corner on another's curved edge cracked it before) — and overlapping ones,
+/// merged first, too.
 #[test]
 fn limitations_show_their_numbers() {
     let names = [
@@ -98,26 +100,24 @@ fn limitations_show_their_numbers() {
             .claim
     };
     let claimed_max = |label: &str| claim(label).bound.map(|b| b.max);
-    let estimate = find("tip-on-arc", "sdf-cells");
-    assert_eq!(
-        estimate.bound, None,
-        "the estimate bounds nothing where contours touch"
-    );
-    assert!(estimate.limitation);
-    // The full sweep counts 455 over 64 frames; the CI grid runs the worst of them.
-    assert!(estimate.artifact_pixels > 0, "{estimate:?}");
-    assert!(!estimate.breaks_claim());
     // Where the touching point is an end or a straight edge, the fills' wedges keep the
     // estimate within the bound it claimed elsewhere when they were written (0.65, set
-    // before these cases existed; withdrawn since, when ordinary glyphs broke it).
+    // before these cases existed; withdrawn when ordinary glyphs broke it); on a curved
+    // edge (`tip-on-arc`) the winding number, where a rule gives the side, does. The full
+    // sweep counted 455 pixels over 0.5 there over 64 frames with font-demo's rules
+    // alone (`ties=merge`; `tests/sdf_cells.rs` draws that camera both ways); the CI
+    // grid runs the worst camera of the sweep since.
     const WEDGES_BOUND: f64 = 0.65;
+    let estimate = find("tip-on-arc", "sdf-cells");
+    assert!(estimate.max <= WEDGES_BOUND, "{estimate:?}");
+    assert!(!estimate.breaks_claim(), "{estimate:?}");
     for case in [
         "touching-contours",
         "hole-touching-edge",
         "corners-touching-slanted",
     ] {
         let touching = find(case, "sdf-cells");
-        assert!(touching.limitation, "{case}");
+        assert!(!touching.limitation && !touching.breaks_claim(), "{case}");
         assert!(touching.max <= WEDGES_BOUND, "{touching:?}");
         let exact = find(case, "sdf-cells exact");
         assert!(!exact.limitation && !exact.breaks_claim(), "{exact:?}");
@@ -270,8 +270,22 @@ fn every_claim_rejects_coverage_rounded_to_0_or_1_and_nan() {
     for (variant, broken) in variants.iter().zip(&broken_by_rounding) {
         // A peer is observed, and so is a setting that claims nothing (its statement
         // says so: `every_method_claims_a_bound_where_it_is_meant_to_work`): nothing
-        // can break.
+        // can break. A claim on the maximum alone (sdf-cells' estimate: one distance per
+        // pixel reads a hairline up to 0.5 off, as rounding does) is kept by rounding,
+        // and says so.
         let claims_nothing = variant.claim.bound.is_none() && variant.claim.limitation.is_none();
+        let max_only = [variant.claim.bound, variant.claim.limitation]
+            .into_iter()
+            .flatten()
+            .all(|b| b.over == MeanOver::Unbounded);
+        if max_only && !claims_nothing {
+            assert!(
+                variant.claim.statement.contains("mean is not"),
+                "{}: a claim on the maximum alone does not say so",
+                variant.label
+            );
+            continue;
+        }
         if registry::find(variant.method).is_ok_and(|m| m.is_peer()) || claims_nothing {
             assert_eq!(
                 *broken, 0,
@@ -293,9 +307,9 @@ fn every_claim_rejects_coverage_rounded_to_0_or_1_and_nan() {
 }
 
 /// Every one of glyphscope's methods bounds its error on ordinary text in some claimed
-/// setting, and a bound on the maximum comes with one on the mean; a setting that claims
-/// nothing (`sdf-cells`' estimate, whose bound ordinary glyphs broke) says so in its
-/// statement. A peer claims nothing anywhere.
+/// setting, and a bound on the maximum comes with one on the mean or says that it does
+/// not (`sdf-cells`' estimate); a setting that claims nothing says so in its statement.
+/// A peer claims nothing anywhere.
 #[test]
 fn every_method_claims_a_bound_where_it_is_meant_to_work() {
     let ordinary = hard_cases::by_name("latin-modern-cubics").unwrap();
@@ -310,7 +324,10 @@ fn every_method_claims_a_bound_where_it_is_meant_to_work() {
         methods.push(variant.method);
         match variant.claim.bound(ordinary.traits) {
             Some(bound) => {
-                assert!(bound.max < 1.0 && bound.mae_255 > 0.0, "{}", variant.label);
+                let mean_bounded = bound.mae_255 > 0.0
+                    || (bound.over == MeanOver::Unbounded
+                        && variant.claim.statement.contains("mean is not"));
+                assert!(bound.max < 1.0 && mean_bounded, "{}", variant.label);
                 bounded.push(variant.method);
             }
             None => assert!(
@@ -392,12 +409,12 @@ fn a_temporal_claim_rejects_snapping_and_nan() {
     for pair in frames.windows(2) {
         let t =
             metrics::temporal([&snap(&pair[0]), &snap(&pair[1])], [&pair[0], &pair[1]]).unwrap();
-        snapped_breaks |= !bound.holds(t.max, t.mae_255);
+        snapped_breaks |= !bound.holds(t.max, t.mae_255, t.edge.mae_255);
         let mut nan = pair[1].clone();
         nan.data[0] = f32::NAN;
         let t = metrics::temporal([&pair[0], &nan], [&pair[0], &pair[1]]).unwrap();
         assert!(
-            !bound.holds(t.max, t.mae_255),
+            !bound.holds(t.max, t.mae_255, t.edge.mae_255),
             "NaN kept the temporal claim"
         );
     }

@@ -123,11 +123,20 @@ const MICROSCOPE_CASE: &str = "tip-on-arc";
 /// in README and docs/explorer.md says what sdf-cells gets wrong on this case, so
 /// sdf-cells is picked by its row, not by a role.
 fn microscope() -> Settings {
+    // The estimate as font-demo publishes it (its rules for ties and corners alone): the
+    // default reads this view right since the winding number gives the side there.
+    let published = || PaneSettings {
+        source: PaneSource::Method {
+            name: sdf_cells::INFO.name.into(),
+            params: vec![("ties".into(), "merge".into())],
+        },
+        ..PaneSettings::method(sdf_cells::INFO.name)
+    };
     let mut settings = Settings::default();
-    settings.panes[0] = PaneSettings::method(sdf_cells::INFO.name);
+    settings.panes[0] = published();
     settings.panes[1] = PaneSettings {
         overlay: PaneOverlay::Error,
-        ..PaneSettings::method(sdf_cells::INFO.name)
+        ..published()
     };
     settings
 }

@@ -165,6 +165,10 @@ impl Method for Guarded {
     fn layout_offset(&self) -> Option<LayoutOffset> {
         self.figure(None, |m| m.layout_offset())
     }
+
+    fn refused_glyphs(&self) -> Vec<(u16, String)> {
+        self.figure(Vec::new(), |m| m.refused_glyphs())
+    }
 }
 
 #[cfg(test)]

@@ -75,6 +75,13 @@ pub trait Method: Send {
         Ok(None)
     }
 
+    /// Glyphs of the prepared scene this method leaves undrawn, each with why: a peer
+    /// that draws text (glyphon) cannot reach a glyph no character maps to. The rest of
+    /// the scene is drawn.
+    fn refused_glyphs(&self) -> Vec<(u16, String)> {
+        Vec::new()
+    }
+
     /// For a peer that lays text out itself (glyphon): how far its glyphs' positions
     /// lie from glyphscope's shaping, in pixels, measured glyph by glyph in the last
     /// frame. Error figures include the difference; this says how much of them it is.
@@ -151,6 +158,7 @@ pub mod info;
 pub mod params;
 pub mod peers;
 pub mod registry;
+pub mod sample_pattern;
 pub mod sdf_cells;
 pub mod tessellation;
 pub mod user;

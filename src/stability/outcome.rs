@@ -116,6 +116,8 @@ impl Outcome {
     pub fn breaks_claim(&self) -> bool {
         !self.observed
             && (self.failure.is_some()
-                || self.bound.is_some_and(|b| !b.holds(self.max, self.mae_255)))
+                || self
+                    .bound
+                    .is_some_and(|b| !b.holds(self.max, self.mae_255, self.edge_mae_255)))
     }
 }

@@ -43,7 +43,8 @@ pub struct TemporalOutcome {
 impl TemporalOutcome {
     pub fn breaks_claim(&self) -> bool {
         self.bound.is_some_and(|b| {
-            self.failure.is_some() || (self.refused.is_none() && !b.holds(self.max, self.mae_255))
+            self.failure.is_some()
+                || (self.refused.is_none() && !b.holds(self.max, self.mae_255, self.edge_mae_255))
         })
     }
 }

@@ -111,7 +111,8 @@ struct Drawing {
     /// Its worst rows so far, with their tiles, worst first.
     worst: Vec<(Row, image::RgbImage)>,
     /// The frames it refused or failed to draw: one row per size, transform and
-    /// reason (a method that refuses a glyph by id refuses every frame alike).
+    /// reason (a method that refuses a camera refuses every frame alike). Glyphs it
+    /// refuses one by one (glyphon's, no character reaching them) are rows of their own.
     not_drawn: Vec<Row>,
 }
 
@@ -288,8 +289,24 @@ impl FaceContext<'_> {
             let image = match image {
                 Ok(image) => image,
                 // Said for this frame's size and transform; the method goes on with the
-                // other frames.
+                // other frames. A frame refused for its glyphs, one by one (glyphon's
+                // with none a character reaches), is a row per glyph like any other.
                 Err(e) => {
+                    let refused: HashMap<u16, String> =
+                        method.refused_glyphs().into_iter().collect();
+                    if !refused.is_empty() {
+                        for slot in &laid.slots {
+                            let g = &glyphs[slot.glyph];
+                            let why = refused.get(&g.glyph.id).cloned().unwrap_or(e.to_string());
+                            let mut row = self.unmeasured(Verdict::Refused, why);
+                            row.glyph = Some(g.glyph.id);
+                            row.name = g.name.clone();
+                            (row.size, row.transform) = (size, transform.name.clone());
+                            row.method = drawing.run.label.clone();
+                            result.rows.push(row);
+                        }
+                        continue;
+                    }
                     let verdict = match e {
                         Error::Refused(_) => Verdict::Refused,
                         _ => Verdict::Failed,
@@ -306,6 +323,8 @@ impl FaceContext<'_> {
                     continue;
                 }
             };
+            // Glyphs the method left undrawn (glyphon: those no character reaches).
+            let refused: HashMap<u16, String> = method.refused_glyphs().into_iter().collect();
             for (slot, (reference, traits)) in laid.slots.iter().zip(&references) {
                 let g = &glyphs[slot.glyph];
                 let mut row = self.unmeasured(Verdict::Observed, String::new());
@@ -315,6 +334,12 @@ impl FaceContext<'_> {
                 row.method = drawing.run.label.clone();
                 row.traits = traits::names(traits);
                 (row.origin_x, row.origin_y) = slot.origin_in_slot.into();
+                if let Some(why) = refused.get(&g.glyph.id) {
+                    row.verdict = Verdict::Refused;
+                    row.reason = why.clone();
+                    result.rows.push(row);
+                    continue;
+                }
                 let reference = match reference {
                     Ok(r) => r,
                     Err(e) => {
@@ -357,8 +382,8 @@ fn judge(row: &mut Row, stats: &ErrorStats, run: &MethodRun, traits: &[Trait]) {
         return;
     };
     let bound = claim.bound(traits);
-    row.bound = bound.map_or(String::new(), |b| format!("{}/{}", b.max, b.mae_255));
-    let holds = bound.is_none_or(|b| b.holds(stats.max, stats.mae_255));
+    row.bound = bound.map_or(String::new(), |b| b.to_string());
+    let holds = bound.is_none_or(|b| b.holds(stats.max, stats.mae_255, stats.edge.mae_255));
     row.verdict = match (holds, claim.is_limitation(traits)) {
         (false, _) => Verdict::Broken,
         (true, true) => Verdict::Limitation,

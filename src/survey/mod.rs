@@ -292,7 +292,7 @@ fn conclude(out: &Path, fonts: &[FontRows]) -> Result<bool, Error> {
         .collect();
     for r in broken.iter().take(20) {
         eprintln!(
-            "broken: {} {} glyph {} at {} px/em, {}: {} max {:.3}, MAE {:.2}/255 (claims {})",
+            "broken: {} {} glyph {} at {} px/em, {}: {} max {:.3}, MAE {:.2}/255, edge MAE {:.2}/255 (claims {})",
             r.font,
             r.face,
             r.glyph.unwrap_or_default(),
@@ -301,6 +301,7 @@ fn conclude(out: &Path, fonts: &[FontRows]) -> Result<bool, Error> {
             r.method,
             r.max,
             r.mae_255,
+            r.edge_mae_255,
             r.bound
         );
     }

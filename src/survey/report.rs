@@ -324,14 +324,23 @@ fn markdown(
         );
     }
     for s in summaries.iter().filter(|s| !s.not_drawn.is_empty()) {
-        // Once each: a refusal repeats for every size and transform of a font.
-        let mut distinct: Vec<&str> = Vec::new();
+        // Once each, with how often: a refusal repeats for every size and transform of a
+        // font, or for every glyph it holds for.
+        let mut distinct: Vec<(&str, usize)> = Vec::new();
         for why in &s.not_drawn {
-            if !distinct.contains(&why.as_str()) {
-                distinct.push(why);
+            match distinct
+                .iter_mut()
+                .find(|(known, _)| *known == why.as_str())
+            {
+                Some((_, count)) => *count += 1,
+                None => distinct.push((why, 1)),
             }
         }
-        let _ = writeln!(md, "\n{} did not draw: {}", s.method, distinct.join("; "));
+        let listed: Vec<String> = distinct
+            .iter()
+            .map(|(why, count)| format!("{why} ({count}×)"))
+            .collect();
+        let _ = writeln!(md, "\n{} did not draw: {}", s.method, listed.join("; "));
     }
     for method in methods {
         let Some(list) = worst.get(method.as_str()) else {
@@ -410,14 +419,13 @@ fn markdown(
     for r in broken.iter().take(BROKEN_LISTED) {
         let _ = writeln!(
             md,
-            "- {} {} at {} px/em, {}: {} claims max ≤ {} and MAE ≤ {}/255 here ({}), measured {} and {:.2}/255 — {}",
+            "- {} {} at {} px/em, {}: {} claims {} here ({}), measured max {}, MAE {:.2}/255 and edge MAE {:.2}/255 — {}",
             font_cell(r),
             glyph_cell(r),
             r.size,
             r.transform,
             r.method,
-            r.bound.split('/').next().unwrap_or_default(),
-            r.bound.split('/').nth(1).unwrap_or_default(),
+            r.bound,
             if r.traits.is_empty() {
                 "no traits"
             } else {
@@ -425,6 +433,7 @@ fn markdown(
             },
             num(r.max, 3),
             r.mae_255,
+            r.edge_mae_255,
             link_cell(link_of(r)),
         );
     }

@@ -44,7 +44,8 @@ pub struct Row {
     pub method: String,
     /// The glyph's traits at this size and transform (see `survey::traits`).
     pub traits: String,
-    /// The bound the method's claim sets here, `max/MAE` (MAE in 1/255); empty for none.
+    /// The bound the method's claim sets here, as `info::Bound` writes it ("max ≤ 0.5
+    /// and edge MAE ≤ 49/255"); empty for none.
     pub bound: String,
     pub max: f64,
     pub mae_255: f64,

@@ -250,6 +250,33 @@ impl Font {
         })
     }
 
+    /// For each glyph the font's Unicode cmap reaches, the smallest character that maps
+    /// to it: the way to a glyph for a renderer that draws text only. Glyph 0 is left
+    /// out: a cmap maps a character it lacks to it.
+    pub fn chars_of_glyphs(&self) -> std::collections::HashMap<GlyphId, char> {
+        let mut chars = std::collections::HashMap::new();
+        let face = self.face();
+        let Some(cmap) = face.tables().cmap else {
+            return chars;
+        };
+        for subtable in cmap.subtables.into_iter().filter(|s| s.is_unicode()) {
+            subtable.codepoints(|code| {
+                let (Some(c), Some(glyph)) = (char::from_u32(code), subtable.glyph_index(code))
+                else {
+                    return;
+                };
+                if glyph.0 == 0 {
+                    return;
+                }
+                chars
+                    .entry(glyph.0)
+                    .and_modify(|known: &mut char| *known = (*known).min(c))
+                    .or_insert(c);
+            });
+        }
+        chars
+    }
+
     /// Checks a glyph id against the font's glyph count.
     pub fn check_glyph_id(&self, id: u32) -> Result<GlyphId, Error> {
         if id < u32::from(self.glyph_count) {

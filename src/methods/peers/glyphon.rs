@@ -6,9 +6,15 @@
 //! its layout then puts each glyph, against glyphscope's shaping, is measured
 //! ([`Method::layout_offset`]) and stated beside its error figures, which include it.
 //!
+//! A scene of glyphs drawn by their ids (the survey's) is drawn as text too: each
+//! instance whose glyph a character maps to (the font's cmap) is that character alone in
+//! a text area of its own, placed at the instance's pen, as long as shaping it gives that
+//! glyph alone; the others are refused one by one ([`Method::refused_glyphs`]), since
+//! glyphon has no way to draw a glyph by its id.
+//!
 //! An atlas draws translation and uniform scale only: any other camera is refused, as
-//! is a scene that is not text in a font (synthetic outlines, a glyph by id) and a font
-//! varied on an axis other than weight (cosmic-text sets `wght` alone).
+//! is a scene with no font (synthetic outlines) and a font varied on an axis other than
+//! weight (cosmic-text sets `wght` alone).
 
 use std::sync::Arc;
 
@@ -56,6 +62,9 @@ const PARAMS: &[ParamSpec] = &[ParamSpec {
 pub struct Glyphon {
     hint: bool,
     prepared: Option<Prepared>,
+    /// Glyphs of the last scene prepared that no character reaches, with why (kept when
+    /// the whole scene is refused for them).
+    refused: Vec<(u16, String)>,
     image: Option<PeerImage>,
     /// The last frame's text area top-left (exact, drawn) and camera, for
     /// [`Method::layout_offset`].
@@ -68,14 +77,13 @@ struct Prepared {
     atlas: TextAtlas,
     viewport: Viewport,
     renderer: TextRenderer,
-    buffer: Buffer,
-    family: String,
-    weight: Weight,
-    /// Whether swash hints the glyphs (glyphon's default).
-    hint: bool,
-    /// The metrics the buffer was last laid out at.
+    /// The scene's text as one label at its origin, or (a scene of glyphs by id) one
+    /// label per instance glyphon can reach.
+    labels: Vec<Label>,
+    /// Whether the labels are the scene's text (else one glyph each).
+    is_text: bool,
+    /// The metrics the buffers were last laid out at.
     laid_out_at: Option<Metrics>,
-    text: String,
     scene: Scene,
     /// Lines advance by this many font units (glyphscope's shaping).
     line_advance_units: f64,
@@ -88,10 +96,18 @@ impl Glyphon {
         Glyphon {
             hint: params.word("hint") != Some("off"),
             prepared: None,
+            refused: Vec::new(),
             image: None,
             last_frame: None,
         }
     }
+}
+
+/// Text glyphon lays out and draws in an area of its own.
+struct Label {
+    buffer: Buffer,
+    /// Where its first baseline starts in the scene, font units.
+    pen: DVec2,
 }
 
 /// The weight cosmic-text is to set for a font varied by `variations` with `axes`: the
@@ -187,21 +203,12 @@ impl Prepared {
                  rounds to 0 in cosmic-text's f32 metrics"
             )));
         }
-        if self.laid_out_at.is_none() {
-            let flags = if self.hint {
-                CacheKeyFlags::empty()
-            } else {
-                CacheKeyFlags::DISABLE_HINTING
-            };
-            let attrs = Attrs::new()
-                .family(Family::Name(&self.family))
-                .weight(self.weight)
-                .cache_key_flags(flags);
-            self.buffer
-                .set_text(&self.text, &attrs, Shaping::Advanced, None);
+        for label in &mut self.labels {
+            label.buffer.set_metrics(metrics);
+            label
+                .buffer
+                .shape_until_scroll(&mut self.font_system, false);
         }
-        self.buffer.set_metrics(metrics);
-        self.buffer.shape_until_scroll(&mut self.font_system, false);
         self.laid_out_at = Some(metrics);
         Ok(())
     }
@@ -210,9 +217,9 @@ impl Prepared {
     /// top-left `area`, and its pen where glyphon draws it from the top-left `drawn` —
     /// x in quarter-pixel bins, the area's y truncated and the line's baseline rounded
     /// to whole pixels, as its `prepare` places glyphs.
-    fn laid_out(&self, area: DVec2, drawn: DVec2) -> Vec<(u16, DVec2, DVec2)> {
+    fn laid_out(buffer: &Buffer, area: DVec2, drawn: DVec2) -> Vec<(u16, DVec2, DVec2)> {
         let mut out = Vec::new();
-        for run in self.buffer.layout_runs() {
+        for run in buffer.layout_runs() {
             for g in run.glyphs {
                 let pen = DVec2::new(
                     f64::from(g.x + g.font_size * g.x_offset),
@@ -229,18 +236,18 @@ impl Prepared {
         out
     }
 
-    /// The text area's top-left that puts glyphon's first baseline at the scene's
-    /// origin as `camera` sees it, its top on the nearest whole pixel: glyphon truncates
+    /// The text area's top-left that puts a label's first baseline at its pen in the
+    /// scene as `camera` sees it, its top on the nearest whole pixel: glyphon truncates
     /// the area's top (and draws each line's baseline at its rounded offset), so a
     /// whole top is where its first baseline lands nearest the scene's.
     /// Also returns the exact top-left, where the layout's own positions are measured
     /// from: (exact, drawn).
-    fn area_origin(&self, camera: &Camera) -> (DVec2, DVec2) {
+    fn area_origin(&self, label: &Label, camera: &Camera) -> (DVec2, DVec2) {
         let origin = camera
-            .glyph_to_image(self.scene.units_per_em, DVec2::ZERO)
+            .glyph_to_image(self.scene.units_per_em, label.pen)
             .z_axis
             .truncate();
-        let first_baseline = self.buffer.layout_runs().next().map_or(0.0, |r| r.line_y);
+        let first_baseline = label.buffer.layout_runs().next().map_or(0.0, |r| r.line_y);
         let exact = origin - DVec2::new(0.0, f64::from(first_baseline));
         let top = origin.y - f64::from(first_baseline.round());
         (exact, DVec2::new(origin.x, top.round()))
@@ -475,6 +482,7 @@ impl Method for Glyphon {
     }
 
     fn prepare(&mut self, gpu: &GpuContext, scene: &Scene) -> Result<(), Error> {
+        self.refused.clear();
         let refuse = |why: &str| {
             Err(Error::Refused(format!(
                 "glyphon draws a font's text only: {why}"
@@ -483,27 +491,73 @@ impl Method for Glyphon {
         let Some(source) = &scene.source else {
             return refuse("this scene's outlines come from no font");
         };
-        let Some(text) = &source.text else {
-            return refuse("this scene is one glyph drawn by its id, not text");
-        };
-        let (font_system, family, weight) = font_system_of(&source.font)?;
+        let (mut font_system, family, weight) = font_system_of(&source.font)?;
         let line_advance_units = positive_line_advance(&source.font)?;
+        let flags = if self.hint {
+            CacheKeyFlags::empty()
+        } else {
+            CacheKeyFlags::DISABLE_HINTING
+        };
+        let attrs = Attrs::new()
+            .family(Family::Name(&family))
+            .weight(weight)
+            .cache_key_flags(flags);
+        let mut label = |text: &str, pen: DVec2| {
+            // No wrapping: each line of the text is one line of the layout.
+            let mut buffer = Buffer::new_empty(Metrics::new(16.0, 16.0));
+            buffer.set_size(None, None);
+            buffer.set_text(text, &attrs, Shaping::Advanced, None);
+            buffer.shape_until_scroll(&mut font_system, false);
+            Label { buffer, pen }
+        };
+        let (mut labels, mut refused): (Vec<Label>, Vec<(u16, String)>) = (Vec::new(), Vec::new());
+        match &source.text {
+            Some(text) => labels.push(label(text, DVec2::ZERO)),
+            None => {
+                let chars = source.font.chars_of_glyphs();
+                for instance in &scene.instances {
+                    let id = scene.glyphs[instance.glyph as usize].id;
+                    let Some(&c) = chars.get(&id) else {
+                        refused.push((
+                            id,
+                            "glyphon draws text: no character maps to this glyph".into(),
+                        ));
+                        continue;
+                    };
+                    let made = label(&c.to_string(), instance.position);
+                    let shaped: Vec<u16> = made
+                        .buffer
+                        .layout_runs()
+                        .flat_map(|run| run.glyphs.iter().map(|g| g.glyph_id))
+                        .collect();
+                    if shaped == [id] {
+                        labels.push(made);
+                    } else {
+                        refused.push((
+                            id,
+                            "glyphon draws text: shaping the character that maps to this \
+                             glyph gives another glyph, or more than one"
+                                .into(),
+                        ));
+                    }
+                }
+            }
+        }
+        // A scene glyphon can draw none of is refused whole, never drawn blank.
+        self.refused = refused;
+        if let ([], [(_, why), ..]) = (labels.as_slice(), self.refused.as_slice()) {
+            return Err(Error::Refused(why.clone()));
+        }
         let (atlas, viewport, renderer) = atlas_viewport_renderer(gpu);
-        // No wrapping: each line of the text is one line of the layout.
-        let mut buffer = Buffer::new_empty(Metrics::new(1.0, 1.0));
-        buffer.set_size(None, None);
         self.prepared = Some(Prepared {
             font_system,
             swash: SwashCache::new(),
             atlas,
             viewport,
             renderer,
-            buffer,
-            family,
-            weight,
-            hint: self.hint,
+            labels,
+            is_text: source.text.is_some(),
             laid_out_at: None,
-            text: text.clone(),
             scene: scene.clone(),
             line_advance_units,
             largest_glyph_units: scene
@@ -535,7 +589,11 @@ impl Method for Glyphon {
             )));
         }
         prepared.lay_out(font_size)?;
-        let (exact, area) = prepared.area_origin(camera);
+        let origins: Vec<(DVec2, DVec2)> = prepared
+            .labels
+            .iter()
+            .map(|label| prepared.area_origin(label, camera))
+            .collect();
         prepared.viewport.update(
             &gpu.queue,
             Resolution {
@@ -543,15 +601,19 @@ impl Method for Glyphon {
                 height: target.height,
             },
         );
-        let text_area = TextArea {
-            buffer: &prepared.buffer,
-            left: area.x as f32,
-            top: area.y as f32,
-            scale: 1.0,
-            bounds: TextBounds::default(),
-            default_color: Color::rgb(255, 255, 255),
-            custom_glyphs: &[],
-        };
+        let text_areas = prepared
+            .labels
+            .iter()
+            .zip(&origins)
+            .map(|(label, (_, area))| TextArea {
+                buffer: &label.buffer,
+                left: area.x as f32,
+                top: area.y as f32,
+                scale: 1.0,
+                bounds: TextBounds::default(),
+                default_color: Color::rgb(255, 255, 255),
+                custom_glyphs: &[],
+            });
         prepared
             .renderer
             .prepare(
@@ -560,7 +622,7 @@ impl Method for Glyphon {
                 &mut prepared.font_system,
                 &mut prepared.atlas,
                 &prepared.viewport,
-                [text_area],
+                text_areas,
                 &mut prepared.swash,
             )
             .map_err(|e| match e {
@@ -581,7 +643,10 @@ impl Method for Glyphon {
             atlas,
             viewport,
         )?;
-        self.last_frame = Some((exact, area, *camera));
+        self.last_frame = match (prepared.is_text, origins.first()) {
+            (true, Some(&(exact, area))) => Some((exact, area, *camera)),
+            _ => None,
+        };
         Ok(())
     }
 
@@ -594,13 +659,16 @@ impl Method for Glyphon {
         self.image.as_ref().map_or(0, PeerImage::bytes)
     }
 
+    fn refused_glyphs(&self) -> Vec<(u16, String)> {
+        self.refused.clone()
+    }
+
     fn layout_offset(&self) -> Option<LayoutOffset> {
         let prepared = self.prepared.as_ref()?;
         let (exact, drawn, camera) = self.last_frame.as_ref()?;
         let scene = &prepared.scene;
         let ink: std::collections::HashSet<u16> = scene.glyphs.iter().map(|g| g.id).collect();
-        let theirs = prepared
-            .laid_out(*exact, *drawn)
+        let theirs = Prepared::laid_out(&prepared.labels.first()?.buffer, *exact, *drawn)
             .into_iter()
             .filter(|(id, _, _)| ink.contains(id));
         let ours = scene.instances.iter().map(|i| {

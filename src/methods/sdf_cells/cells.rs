@@ -17,7 +17,8 @@
 //! quarters' lists (fewer curves per pixel). Cells are grown by a small pad first, since
 //! the shader picks a point's cell in f32.
 //!
-//! Exact mode also needs the winding number, from a ray to +x: each grid row gets a band
+//! Exact mode also needs the winding number, from a ray to +x (and the estimate, where a
+//! rule rather than a tangent line gives a pixel's side): each grid row gets a band
 //! of the curves whose y-range meets it, sorted by decreasing right end so the shader
 //! can stop at the first curve wholly left of the pixel.
 
@@ -295,7 +296,7 @@ impl Candidate {
     }
 }
 
-/// The winding bands of exact mode: for each grid row, the curves whose control points'
+/// The winding bands (exact mode's, the estimate's with `ties=winding`): for each grid row, the curves whose control points'
 /// y-range meets the row (grown by the cell pad), sorted by their right end, decreasing.
 pub fn row_bands(layout: &CurveLayout, grid: &Grid) -> Vec<Vec<u32>> {
     let pad = grid.cell.y * CELL_PAD;

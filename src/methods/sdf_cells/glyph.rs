@@ -1,5 +1,6 @@
 //! One distinct glyph made ready for the shader: its curves laid out, its grid chosen,
-//! its cells listed and encoded, and (exact mode) its winding bands.
+//! its cells listed and encoded, and its winding bands (exact mode; the estimate with
+//! `ties=winding`).
 
 use glam::DVec2;
 
@@ -28,7 +29,8 @@ pub struct PreparedGlyph {
     /// The curves each cell needs (by slot), before encoding.
     pub lists: Vec<Vec<u32>>,
     pub cells: EncodedCells,
-    /// Exact mode's winding bands, one per grid row; empty for the estimate.
+    /// The winding bands, one per grid row: exact mode's sign everywhere, the
+    /// estimate's where tied curves disagree (`ties=winding`); else empty.
     pub bands: Vec<Vec<u32>>,
 }
 
@@ -90,8 +92,10 @@ impl PreparedGlyph {
             (grid, lists) = build(square_grid(area, finer.min(MAX_PACKING_SIDE)));
             cells = EncodedCells::new(&lists, &layout, true).ok_or_else(too_long)?;
         }
+        // The estimate reads a winding number only where tied curves disagree.
         let bands = match settings.mode {
             Mode::Exact => row_bands(&layout, &grid),
+            Mode::Estimate if settings.ties_by_winding => row_bands(&layout, &grid),
             Mode::Estimate => Vec::new(),
         };
         Ok(PreparedGlyph {

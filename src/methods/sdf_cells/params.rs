@@ -12,8 +12,9 @@ pub const PARAMS: &[ParamSpec] = &[
         key: "mode",
         choices: &["estimate", "exact"],
         numbers: None,
-        help: "estimate: the tangent-line distance of kocsis1david's font-demo (cheap, \
-               wrong far from high curvature and where curves tie); exact: true distance \
+        help: "estimate: the tangent-line distance of kocsis1david's font-demo (cheap; \
+               curves halved until flat, and the side from the winding number where \
+               curves tie, by default); exact: true distance \
                to each quadratic (a cubic solve per curve, after Clément Bœsch's \
                \"GPU-computed distances\" article) with the sign from the winding number.",
     },
@@ -30,6 +31,17 @@ pub const PARAMS: &[ParamSpec] = &[
                tangent-line distance is off by about the curve's bend, and so is the \
                chord that picks the nearest curve; off: the curves as the font has them, \
                font-demo as published. More curves per cell as it shrinks.",
+    },
+    ParamSpec {
+        key: "ties",
+        choices: &["winding", "merge"],
+        numbers: None,
+        help: "estimate: where the side of the nearest curve comes from a rule rather \
+               than its tangent line (curves tied within `bias` disagree, or the pixel \
+               lies past the ends of the nearest chord), winding: the winding number \
+               along the pixel's row decides, as exact mode's does everywhere; merge: \
+               font-demo's rules for joins and ties decide alone, as published (a wrong \
+               choice reads a pixel a whole pixel off).",
     },
     ParamSpec {
         key: "bias",
@@ -169,6 +181,8 @@ pub struct Settings {
     pub bias_em: f64,
     /// Estimate: curves halved until within this many em of their chord; None: off.
     pub flatness_em: Option<f64>,
+    /// Estimate: where tied curves' sides disagree, the winding number decides.
+    pub ties_by_winding: bool,
     pub grid: GridChoice,
     pub encoding: EncodingChoice,
     pub effects: Effects,
@@ -183,6 +197,7 @@ impl Default for Settings {
             join_instances: true,
             bias_em: DEFAULT_BIAS_EM,
             flatness_em: Some(DEFAULT_FLATNESS_EM),
+            ties_by_winding: true,
             grid: GridChoice::Auto,
             encoding: EncodingChoice::Auto,
             effects: Effects::default(),
@@ -211,6 +226,7 @@ impl Settings {
                 Some(Value::Real(x)) => Some(x),
                 _ => defaults.flatness_em,
             },
+            ties_by_winding: params.word("ties") != Some("merge"),
             grid: match params.get("grid") {
                 Some(Value::Whole(n)) => GridChoice::Fixed(n),
                 _ => GridChoice::Auto,

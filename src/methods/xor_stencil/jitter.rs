@@ -89,6 +89,33 @@ mod tests {
     }
 
     #[test]
+    fn the_patterns_straight_edge_errors() {
+        use crate::methods::sample_pattern::{
+            STANDARD_4X, mean_straight_edge_error, worst_straight_edge_error,
+        };
+        let settings = super::super::Settings::default();
+        assert_eq!((settings.samples, settings.passes), (4, 4));
+        // Each pass moves the geometry by an offset, so the frame's samples are the 4x
+        // standard ones moved back by each offset: 16 samples in four clusters.
+        let samples: Vec<DVec2> = jitter_offsets(settings.passes, settings.samples)
+            .iter()
+            .flat_map(|o| STANDARD_4X.map(|s| s - *o))
+            .collect();
+        assert!(
+            samples
+                .iter()
+                .all(|s| s.min_element() > 0.0 && s.max_element() < 1.0)
+        );
+        let worst = worst_straight_edge_error(&samples);
+        let mean = mean_straight_edge_error(&samples);
+        assert!((worst - 0.234).abs() < 0.0005, "{worst}");
+        assert!((mean - 0.040).abs() < 0.0005, "{mean}");
+        // A quarter of one centre sample's mean error, the claim's bound.
+        let aliased = crate::methods::sample_pattern::ALIASED_EDGE_MAE_255 / 255.0;
+        assert!(mean < aliased / 4.0, "{mean} against {aliased}");
+    }
+
+    #[test]
     fn jitter_finds_the_rotated_grid_and_the_best_six() {
         // Four passes: the rotated grid of 4x MSAA (rows 2, 0, 3, 1 or its mirror).
         let four = jitter_offsets(4, 1);
