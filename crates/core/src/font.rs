@@ -250,11 +250,13 @@ impl Font {
         })
     }
 
-    /// For each glyph the font's Unicode cmap reaches, the smallest character that maps
-    /// to it: the way to a glyph for a renderer that draws text only. Glyph 0 is left
-    /// out: a cmap maps a character it lacks to it.
-    pub fn chars_of_glyphs(&self) -> std::collections::HashMap<GlyphId, char> {
-        let mut chars = std::collections::HashMap::new();
+    /// For each glyph the font's Unicode cmap reaches, the characters that map to it,
+    /// smallest first: the way to a glyph for a renderer that draws text only (shaping
+    /// may take one character elsewhere and another not). Glyph 0 is left out: a cmap
+    /// maps a character it lacks to it.
+    pub fn chars_of_glyphs(&self) -> std::collections::HashMap<GlyphId, Vec<char>> {
+        let mut chars: std::collections::HashMap<GlyphId, Vec<char>> =
+            std::collections::HashMap::new();
         let face = self.face();
         let Some(cmap) = face.tables().cmap else {
             return chars;
@@ -268,11 +270,12 @@ impl Font {
                 if glyph.0 == 0 {
                     return;
                 }
-                chars
-                    .entry(glyph.0)
-                    .and_modify(|known: &mut char| *known = (*known).min(c))
-                    .or_insert(c);
+                chars.entry(glyph.0).or_default().push(c);
             });
+        }
+        for list in chars.values_mut() {
+            list.sort_unstable();
+            list.dedup();
         }
         chars
     }

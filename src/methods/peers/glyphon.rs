@@ -517,28 +517,31 @@ impl Method for Glyphon {
                 let chars = source.font.chars_of_glyphs();
                 for instance in &scene.instances {
                     let id = scene.glyphs[instance.glyph as usize].id;
-                    let Some(&c) = chars.get(&id) else {
+                    let Some(candidates) = chars.get(&id) else {
                         refused.push((
                             id,
                             "glyphon draws text: no character maps to this glyph".into(),
                         ));
                         continue;
                     };
-                    let made = label(&c.to_string(), instance.position);
-                    let shaped: Vec<u16> = made
-                        .buffer
-                        .layout_runs()
-                        .flat_map(|run| run.glyphs.iter().map(|g| g.glyph_id))
-                        .collect();
-                    if shaped == [id] {
-                        labels.push(made);
-                    } else {
-                        refused.push((
+                    // The first character that shapes to this glyph alone.
+                    let made = candidates.iter().find_map(|c| {
+                        let made = label(&c.to_string(), instance.position);
+                        let shaped: Vec<u16> = made
+                            .buffer
+                            .layout_runs()
+                            .flat_map(|run| run.glyphs.iter().map(|g| g.glyph_id))
+                            .collect();
+                        (shaped == [id]).then_some(made)
+                    });
+                    match made {
+                        Some(made) => labels.push(made),
+                        None => refused.push((
                             id,
-                            "glyphon draws text: shaping the character that maps to this \
+                            "glyphon draws text: shaping each character that maps to this \
                              glyph gives another glyph, or more than one"
                                 .into(),
-                        ));
+                        )),
                     }
                 }
             }
