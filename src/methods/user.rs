@@ -15,7 +15,8 @@ use std::time::Duration;
 
 use super::Method;
 use super::info::{
-    BenchSetting, Claim, ClaimedSetting, Constructor, MethodInfo, Role, bench_at, within,
+    BenchSetting, Bound, Claim, ClaimedSetting, Constructor, MeanOver, MethodInfo, Role, bench_at,
+    within, within_on_edges,
 };
 use crate::Error;
 use crate::camera::Camera;
@@ -312,7 +313,9 @@ fn check(path: &Path, source: &str) -> Result<(), Error> {
 }
 
 /// The claim a `// claim: max=M mae=A` line of `text` makes (`Bound` M in coverage, A
-/// in 1/255); without one, none: the method is observed.
+/// in 1/255, the mean over the frame), or `max=M edge_mae=A` (the mean over the edge
+/// pixels, where a sampled method's error lives); without one, none: the method is
+/// observed.
 fn claim_of(path: &str, text: &str) -> Result<Claim, Error> {
     let Some(line) = text
         .lines()
@@ -328,11 +331,11 @@ fn claim_of(path: &str, text: &str) -> Result<Claim, Error> {
     };
     let bad = |why: &str| {
         Error::Input(format!(
-            "{path}: the claim '{}' {why}: write `// claim: max=M mae=A` (M in coverage, 0 to 1; A in 1/255)",
+            "{path}: the claim '{}' {why}: write `// claim: max=M mae=A` or `max=M edge_mae=A` (M in coverage, 0 to 1; A in 1/255)",
             line.trim()
         ))
     };
-    let (mut max, mut mae) = (None, None);
+    let (mut max, mut mae, mut edge_mae) = (None, None, None);
     for part in line.split_whitespace() {
         let (key, value) = part
             .split_once('=')
@@ -346,24 +349,33 @@ fn claim_of(path: &str, text: &str) -> Result<Claim, Error> {
         match key {
             "max" if value <= 1.0 => max = Some(value),
             "mae" => mae = Some(value),
+            "edge_mae" => edge_mae = Some(value),
             _ => return Err(bad(&format!("has '{key}={value}'"))),
         }
     }
-    let (Some(max), Some(mae)) = (max, mae) else {
-        return Err(bad("lacks max or mae"));
+    let bound = match (max, mae, edge_mae) {
+        (Some(max), Some(mae), None) => within(max, mae),
+        (Some(max), None, Some(edge)) => within_on_edges(max, edge),
+        (_, Some(_), Some(_)) => return Err(bad("has both mae and edge_mae")),
+        _ => return Err(bad("lacks max or mae")),
     };
-    Ok(claim_within(max, mae, "your claim"))
+    Ok(claim_within(bound, "your claim"))
 }
 
 /// The claim `MAX/MAE` given after a user's file (`wgsl:PATH:claim=MAX/MAE`, or
-/// `--param claim=MAX/MAE`), which overrides its header line.
+/// `--param claim=MAX/MAE`), which overrides its header line; `MAX/MAE/edges` bounds
+/// the mean over the edge pixels instead of the frame.
 fn given_claim(name: &str, text: &str) -> Result<Claim, Error> {
     let bad = |why: &str| {
         Error::Input(format!(
-            "{name}: claim={text} {why}: write claim=MAX/MAE (MAX in coverage, 0 to 1; MAE in 1/255), e.g. claim=0.3/8"
+            "{name}: claim={text} {why}: write claim=MAX/MAE or MAX/MAE/edges (MAX in coverage, 0 to 1; MAE in 1/255), e.g. claim=0.3/8"
         ))
     };
-    let (max, mae) = text.split_once('/').ok_or_else(|| bad("is not MAX/MAE"))?;
+    let (rest, on_edges) = match text.strip_suffix("/edges") {
+        Some(rest) => (rest, true),
+        None => (text, false),
+    };
+    let (max, mae) = rest.split_once('/').ok_or_else(|| bad("is not MAX/MAE"))?;
     let number = |t: &str| {
         t.parse::<f64>()
             .ok()
@@ -374,18 +386,29 @@ fn given_claim(name: &str, text: &str) -> Result<Claim, Error> {
     if max > 1.0 {
         return Err(bad("has a MAX over 1"));
     }
-    Ok(claim_within(max, mae, "your claim (given with the method)"))
+    let bound = if on_edges {
+        within_on_edges(max, mae)
+    } else {
+        within(max, mae)
+    };
+    Ok(claim_within(bound, "your claim (given with the method)"))
 }
 
-/// A claim that no pixel is off by more than `max` and a frame's mean error is within
-/// `mae`/255, stated as `whose` it is.
-fn claim_within(max: f64, mae: f64, whose: &str) -> Claim {
+/// A claim of `bound`, stated as `whose` it is.
+fn claim_within(bound: Bound, whose: &str) -> Claim {
+    let mean = match bound.over {
+        MeanOver::EdgePixels => "mean error over edge pixels",
+        _ => "mean error",
+    };
     let statement: &'static str = Box::leak(
-        format!("{whose}: no pixel off by more than {max}, mean error within {mae}/255")
-            .into_boxed_str(),
+        format!(
+            "{whose}: no pixel off by more than {}, {mean} within {}/255",
+            bound.max, bound.mae_255
+        )
+        .into_boxed_str(),
     );
     Claim {
-        bound: Some(within(max, mae)),
+        bound: Some(bound),
         except: &[],
         limitation: None,
         temporal: None,
@@ -452,8 +475,16 @@ mod tests {
     fn claims_are_read_from_the_header_or_refused_in_one_line() {
         let claim = claim_of("f.wgsl", "// claim: max=0.3 mae=8\nfn f() {}").unwrap();
         assert_eq!(claim.bound, Some(within(0.3, 8.0)));
+        let edges = claim_of("f.wgsl", "// claim: max=0.5 edge_mae=40\nfn f() {}").unwrap();
+        assert_eq!(edges.bound, Some(within_on_edges(0.5, 40.0)));
+        assert!(
+            edges.statement.contains("over edge pixels"),
+            "{}",
+            edges.statement
+        );
         assert!(claim_of("f.wgsl", "fn f() {}").unwrap().bound.is_none());
         for bad in [
+            "max=0.5 mae=1 edge_mae=2",
             "max=2 mae=1",
             "max=0.1",
             "max=x mae=1",
@@ -473,7 +504,17 @@ mod tests {
     fn a_claim_given_with_the_method_is_read_or_refused_in_one_line() {
         let claim = given_claim("wgsl:f.wgsl", "0.05/0.5").unwrap();
         assert_eq!(claim.bound, Some(within(0.05, 0.5)));
-        for bad in ["2/1", "0.1", "x/1", "NaN/1", "0.1/-1", "0.1/inf"] {
+        let edges = given_claim("wgsl:f.wgsl", "0.5/40/edges").unwrap();
+        assert_eq!(edges.bound, Some(within_on_edges(0.5, 40.0)));
+        for bad in [
+            "2/1",
+            "0.1",
+            "x/1",
+            "NaN/1",
+            "0.1/-1",
+            "0.1/inf",
+            "0.1/1/frame",
+        ] {
             let text = given_claim("wgsl:f.wgsl", bad).unwrap_err().to_string();
             assert!(
                 text.starts_with("wgsl:f.wgsl: claim=") && !text.contains('\n'),
