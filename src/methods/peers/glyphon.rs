@@ -502,17 +502,21 @@ impl Method for Glyphon {
             .family(Family::Name(&family))
             .weight(weight)
             .cache_key_flags(flags);
-        let mut label = |text: &str, pen: DVec2| {
+        // `shaped`: shaped now, to read which glyphs it gives (a glyph by id); the text is
+        // shaped once at the frame's size otherwise (`lay_out`).
+        let mut label = |text: &str, pen: DVec2, shaped: bool| {
             // No wrapping: each line of the text is one line of the layout.
             let mut buffer = Buffer::new_empty(Metrics::new(16.0, 16.0));
             buffer.set_size(None, None);
             buffer.set_text(text, &attrs, Shaping::Advanced, None);
-            buffer.shape_until_scroll(&mut font_system, false);
+            if shaped {
+                buffer.shape_until_scroll(&mut font_system, false);
+            }
             Label { buffer, pen }
         };
         let (mut labels, mut refused): (Vec<Label>, Vec<(u16, String)>) = (Vec::new(), Vec::new());
         match &source.text {
-            Some(text) => labels.push(label(text, DVec2::ZERO)),
+            Some(text) => labels.push(label(text, DVec2::ZERO, false)),
             None => {
                 let chars = source.font.chars_of_glyphs();
                 for instance in &scene.instances {
@@ -526,7 +530,7 @@ impl Method for Glyphon {
                     };
                     // The first character that shapes to this glyph alone.
                     let made = candidates.iter().find_map(|c| {
-                        let made = label(&c.to_string(), instance.position);
+                        let made = label(&c.to_string(), instance.position, true);
                         let shaped: Vec<u16> = made
                             .buffer
                             .layout_runs()
