@@ -289,8 +289,10 @@ impl FaceContext<'_> {
             let image = match image {
                 Ok(image) => image,
                 // Said for this frame's size and transform; the method goes on with the
-                // other frames. A frame refused for its glyphs, one by one (glyphon's
-                // with none a character reaches), is a row per glyph like any other.
+                // other frames. Where it refused some of this frame's glyphs one by one
+                // (glyphon's, no character reaching them), every glyph view is a row of
+                // its own: the refused ones with their reason, the others with the
+                // frame's (a turned camera's, for glyphon).
                 Err(e) => {
                     let refused: HashMap<u16, String> =
                         method.refused_glyphs().into_iter().collect();
