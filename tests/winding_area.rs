@@ -456,3 +456,36 @@ fn the_cost_breakdown_counts_what_a_square_makes() {
     let image = render(&mut quads, &scene, &cam);
     assert_eq!(image.sum(), 35.0);
 }
+
+/// A joined word (`between=union`) is one glyph as wide as the word; its bands are split
+/// into segments along x (crates/text/src/winding/bands.rs: `segment_curves`) so that a
+/// pixel walks its own stretch of the word. On the bench's Arabic and Bengali scenes it
+/// stays exact, and its curves per covered pixel stay within 1.5× those of the same
+/// letters drawn added (`between=add`: short walks, but not exact where letters
+/// overlap), its most within 2× theirs — where the whole word's bands cost 1.8× and
+/// 1.6× on average and 15× at most (`glyphscope render --case arabic --method winding
+/// --stats S.json`, before the segments).
+#[test]
+fn a_joined_word_costs_about_what_its_letters_cost() {
+    for name in ["arabic", "bengali"] {
+        let (scene, cam) = glyphscope::named_views::build(name).unwrap();
+        let cost = |params: &[(&str, &str)]| {
+            let mut method = area_method(params);
+            let image = render(method.as_mut(), &scene, &cam);
+            let cost = method.curves_per_pixel(gpu(), &cam).unwrap().unwrap();
+            (image, cost)
+        };
+        let (joined, joined_cost) = cost(&[]);
+        let (_, added_cost) = cost(&[("between", "add")]);
+        let s = compare(&joined, &reference::rasterize(&scene, &cam).unwrap()).unwrap();
+        assert!(s.mae_255 <= 0.02 && s.max <= 0.02, "{name}: {s:?}");
+        println!(
+            "{name}: joined {:.2} ({}), added {:.2} ({}) curves per covered pixel",
+            joined_cost.mean, joined_cost.max, added_cost.mean, added_cost.max
+        );
+        assert!(
+            joined_cost.mean <= 1.5 * added_cost.mean && joined_cost.max <= 2 * added_cost.max,
+            "{name}: joined {joined_cost:?}, added {added_cost:?}"
+        );
+    }
+}

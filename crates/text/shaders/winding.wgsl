@@ -40,7 +40,8 @@ struct Curve {
 struct Glyph {
     // Control-point bounds: min.xy, max.xy.
     bounds: vec4<f32>,
-    // Horizontal band count, vertical band count, first band in `bands`.
+    // Horizontal band count, vertical band count (aa=area: the segments each band is
+    // split into along x and the levels split, `area_band`), first band in `bands`.
     band_count_h: u32,
     band_count_v: u32,
     first_band: u32,
@@ -295,7 +296,9 @@ const CLASS_COLORS = array<vec3<f32>, 8>(
 fn nearest_class(g: Glyph, p: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> u32 {
     let det = jx.x * jy.y - jy.x * jx.y;
     let to_pixels = mat2x2<f32>(vec2<f32>(jy.y, -jx.y), vec2<f32>(-jy.x, jx.x)) * (1.0 / det);
-    let all = band_at(g.first_band + g.band_count_h + g.band_count_v);
+    // aa=area's bands are each followed by their segments (`area_band`).
+    let split = select(1u, 1u + (g.band_count_v & 0xffffu), g.band_count_v >> 16u > 0u);
+    let all = band_at(g.first_band + select(g.band_count_h + g.band_count_v, g.band_count_h * split, AREA));
     var best = 3.0;
     var root_class = 8u;
     for (var i = 0u; i < all.count; i++) {

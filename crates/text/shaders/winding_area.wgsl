@@ -429,24 +429,53 @@ const AREA_REACH: f32 = 1.5;
 
 // The band holding every curve at the height of a pixel centred on `centre`, up to
 // `half_height` above and below it: the finest level whose bands are at least the
-// pixel's height over 2·AREA_REACH (see bands.rs). One read, of the band chosen.
-fn area_band(g: Glyph, centre: vec2<f32>, half_height: f32) -> Band {
+// pixel's height over 2·AREA_REACH (see bands.rs). In a glyph whose bands are split
+// into segments along x (`band_count_v`: their count in its low 16 bits, bands.rs:
+// `segment_curves`), each band of the levels split (the finest, up to the count in its
+// high 16 bits) is followed by its segments, and a pixel up to `half_width` either side of `centre`
+// that fits one (its right edge within the segment, its left within two segments of the
+// boundary, a 256th of a segment inside both) takes that segment's list, walked towards
+// +x. One read, of the list chosen.
+struct ChosenBand {
+    band: Band,
+    // Walked towards +x: a segment's list.
+    segment: bool,
+}
+
+fn area_band(g: Glyph, centre: vec2<f32>, half_width: f32, half_height: f32) -> ChosenBand {
     var height = (g.bounds.w - g.bounds.y) / f32(g.band_count_h);
+    // Segments per band, and how many levels from the finest have them.
+    let segments = g.band_count_v & 0xffffu;
+    let split_levels = g.band_count_v >> 16u;
+    var per_band = select(1u, 1u + segments, split_levels > 0u);
     // Level 0, then the band of all curves, then the coarser levels.
-    let all = g.first_band + g.band_count_h;
+    let all = g.first_band + g.band_count_h * per_band;
     var first = g.first_band;
     var count = g.band_count_h;
     var next = all + 1u;
+    var level = 0u;
     while count > 1u && AREA_REACH * height < half_height {
         first = next;
         height *= 2.0;
         count = (count + 1u) / 2u;
-        next = first + count;
+        level++;
+        per_band = select(1u, 1u + segments, level < split_levels);
+        next = first + count * per_band;
     }
     // A glyph of no height makes `index` garbage (0/0), thrown away by the select: one
     // read either way, where an early return would add a read of its own.
     let index = u32(clamp(floor((centre.y - g.bounds.y) / height), 0.0, f32(count - 1u)));
-    return band_at(select(first + index, all, !USE_BANDS || !(height > 0.0)));
+    // The segment whose boundary is the first at least a 256th of a segment right of
+    // the pixel.
+    let width = (g.bounds.z - g.bounds.x) / f32(max(segments, 1u));
+    let right = centre.x + half_width;
+    let j = clamp(ceil((right - g.bounds.x) / width + 1.0 / 256.0), 1.0, f32(max(segments, 1u)));
+    let boundary = g.bounds.x + j * width;
+    let banded = USE_BANDS && height > 0.0;
+    let segment = banded && per_band > 1u && right <= boundary - width / 256.0
+        && centre.x - half_width >= boundary - 2.0 * width + width / 256.0;
+    let chosen = first + index * per_band + select(0u, u32(j), segment);
+    return ChosenBand(band_at(select(all, chosen, banded)), segment);
 }
 
 // What aa=area found in this fragment, for the cost breakdown's counting passes
@@ -477,15 +506,17 @@ struct AreaWinding {
 // entries that cross the pixel (lavapipe: 500 moving labels, docs/library.md).
 fn area_winding(g: Glyph, centre: vec2<f32>, jx: vec2<f32>, jy: vec2<f32>) -> AreaWinding {
     var result: AreaWinding;
-    let direction = direction_for(g, centre, 0u);
+    let half_width = 0.5 * (abs(jx.x) + abs(jy.x));
+    let chosen = area_band(g, centre, half_width, 0.5 * (abs(jx.y) + abs(jy.y)));
+    let band = chosen.band;
+    let direction = select(direction_for(g, centre, 0u), 1.0, chosen.segment);
     let frame = pixel_frame(jx, jy, direction);
     if !frame.valid {
         return result;
     }
-    let band = area_band(g, centre, 0.5 * (abs(jx.y) + abs(jy.y)));
     // A curve wholly behind the pixel's nearest point along the walk adds nothing, and
     // the band is sorted so that every later one lies behind it too (`behind`).
-    let near_end = direction * centre.x - 0.5 * (abs(jx.x) + abs(jy.x));
+    let near_end = direction * centre.x - half_width;
     let start = select(band.by_max, band.by_min, direction < 0.0);
     if STAGE == 1u {
         // Setup only: the result must still depend on all of it.

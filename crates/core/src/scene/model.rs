@@ -17,6 +17,10 @@ pub struct Glyph {
     pub id: GlyphId,
     pub outline: Outline,
     pub bounds: Rect,
+    /// The outline is a nonzero union of contours ([`Scene::with_overlaps_merged`]):
+    /// its winding number is 0 or its fill sign everywhere, and its contours meet, if
+    /// at all, only by touching.
+    pub merged: bool,
     /// The outline's nonzero union where it differs from the outline, taken on first use
     /// and shared by every copy of the glyph: the methods that merge overlaps, their
     /// re-preparations when a parameter changes, and the explorer's overlay take it once.
@@ -29,6 +33,7 @@ impl Glyph {
             id,
             outline,
             bounds,
+            merged: false,
             union: Arc::default(),
         }
     }
@@ -85,7 +90,10 @@ impl Scene {
             .glyphs
             .iter()
             .map(|glyph| match glyph.union(self.units_per_em) {
-                Some(union) => Glyph::new(glyph.id, union.clone(), glyph.bounds),
+                Some(union) => Glyph {
+                    merged: true,
+                    ..Glyph::new(glyph.id, union.clone(), glyph.bounds)
+                },
                 None => glyph.clone(),
             })
             .collect();

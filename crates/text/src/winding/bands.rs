@@ -11,12 +11,22 @@
 //! boundaries, and a pixel up to three bands tall lies wholly inside the band holding
 //! its centre. Pixels taller than that take a coarser level: the same at twice the
 //! height, four times, … up to one band for the glyph.
+//!
+//! A glyph much wider than tall (a joined word: `between=union`) also splits each of
+//! its `aa=area` bands along x into segments ([`segment_curves`]), so that a pixel in
+//! the middle of a word walks the curves of its own stretch, not half the word's. A
+//! segment's list holds the curves left of its right boundary, those across it cut
+//! there, and, for everything right of it, a few vertical lines on the boundary: what
+//! the curves right of a pixel add to its integral is the pixel's area between their
+//! end heights, so theirs telescopes to the heights where the outline crosses the
+//! boundary, which the lines carry.
 
 use glam::DVec2;
 
 use super::overlaps::overlap_flags;
 use crate::geometry::{
     DEFAULT_QUAD_TOLERANCE_EM, Outline, Quad, Segment, cubic_to_quadratics, monotone_pieces,
+    point_at, subcurve, t_at,
 };
 use crate::scene::Scene;
 
@@ -44,6 +54,9 @@ pub struct GpuCurve {
 pub struct GpuGlyph {
     pub bounds: [f32; 4],
     pub band_count_h: u32,
+    /// [`Layout::Rays`]: the vertical bands; [`Layout::Area`]: the segments each band is
+    /// split into along x (0: none) in its low 16 bits, and in its high 16 how many
+    /// levels of bands, from the finest, are split.
     pub band_count_v: u32,
     pub first_band: u32,
     pub units_per_em: f32,
@@ -116,6 +129,23 @@ struct PreparedCurve {
 }
 
 impl PreparedCurve {
+    /// The record the GPU reads.
+    fn gpu(&self) -> GpuCurve {
+        let [p0, p1, p2] = self.p.map(|p| p.as_vec2());
+        GpuCurve {
+            p0p1: [p0.x, p0.y, p1.x, p1.y],
+            p2: p2.to_array(),
+            overlaps: f32::from(u8::from(self.overlaps)),
+            parent: self.parent,
+            max_min: [
+                self.max.x as f32,
+                self.max.y as f32,
+                self.min.x as f32,
+                self.min.y as f32,
+            ],
+        }
+    }
+
     fn along(&self, axis: usize) -> (f64, f64) {
         (self.min[axis], self.max[axis])
     }
@@ -199,7 +229,11 @@ impl GlyphData {
     pub fn of_scene(scene: &Scene, band_count: BandCount, layout: Layout) -> GlyphData {
         let mut data = GlyphData::default();
         for glyph in &scene.glyphs {
-            data.push(&glyph.outline, scene.units_per_em, band_count, layout);
+            if glyph.merged {
+                data.push_union(&glyph.outline, scene.units_per_em, band_count, layout);
+            } else {
+                data.push(&glyph.outline, scene.units_per_em, band_count, layout);
+            }
         }
         data
     }
@@ -213,10 +247,38 @@ impl GlyphData {
         band_count: BandCount,
         layout: Layout,
     ) -> u32 {
+        self.push_contours(outline, units_per_em, band_count, layout, false)
+    }
+
+    /// [`GlyphData::push`] for an outline that is a nonzero union of contours
+    /// ([`merge_overlaps`](crate::geometry::merge_overlaps)'s): no curve is marked as
+    /// overlapping. Its winding number is 0 or its fill sign everywhere, so no pixel
+    /// holds three winding levels, where its contours touch (which marks the curves of
+    /// an outline as a font gives it: touching contours wound against each other put
+    /// three levels in a pixel) as anywhere else.
+    pub fn push_union(
+        &mut self,
+        outline: &Outline,
+        units_per_em: f64,
+        band_count: BandCount,
+        layout: Layout,
+    ) -> u32 {
+        self.push_contours(outline, units_per_em, band_count, layout, true)
+    }
+
+    fn push_contours(
+        &mut self,
+        outline: &Outline,
+        units_per_em: f64,
+        band_count: BandCount,
+        layout: Layout,
+        union: bool,
+    ) -> u32 {
         let contours = contours(outline, DEFAULT_QUAD_TOLERANCE_EM * units_per_em);
         // Only `aa=area` reads the marks (rays never integrate a pixel as a whole).
         let overlaps: Vec<bool> = match layout {
             Layout::Rays => vec![false; contours.iter().map(Vec::len).sum()],
+            Layout::Area if union => vec![false; contours.iter().map(Vec::len).sum()],
             Layout::Area => {
                 let curves: Vec<Vec<Quad>> = contours
                     .iter()
@@ -242,23 +304,7 @@ impl GlyphData {
             })
             .collect();
         let first_curve = self.curves.len() as u32;
-        self.curves.extend(quads.iter().map(|q| GpuCurve {
-            p0p1: [
-                q.p[0].x as f32,
-                q.p[0].y as f32,
-                q.p[1].x as f32,
-                q.p[1].y as f32,
-            ],
-            p2: [q.p[2].x as f32, q.p[2].y as f32],
-            overlaps: f32::from(u8::from(q.overlaps)),
-            parent: q.parent,
-            max_min: [
-                q.max.x as f32,
-                q.max.y as f32,
-                q.min.x as f32,
-                q.min.y as f32,
-            ],
-        }));
+        self.curves.extend(quads.iter().map(PreparedCurve::gpu));
         let min = quads
             .iter()
             .fold(DVec2::splat(f64::INFINITY), |m, q| m.min(q.min));
@@ -284,16 +330,61 @@ impl GlyphData {
                 count_v
             }
             Layout::Area => {
-                self.push_bands(&quads, first_curve, 1, (min.y, max.y), count_h, AREA_REACH);
+                let segments = auto_segment_count(&quads, (min, max));
+                // Each segment's curves once in the curve list; the bands list them.
+                let lists: Vec<(u32, Vec<PreparedCurve>)> = (1..=segments)
+                    .map(|j| {
+                        let curves = segment_curves(&quads, (min.x, max.x), segments, j)
+                            .expect("auto_segment_count segments only closed outlines");
+                        let first = self.curves.len() as u32;
+                        self.curves.extend(curves.iter().map(PreparedCurve::gpu));
+                        (first, curves)
+                    })
+                    .collect();
+                // A level's bands serve pixels taller than 2·AREA_REACH of the finer
+                // level's bands (the finest, any): where those are wider than a segment
+                // (a pixel about square), none fits one, and the level keeps its bands
+                // whole. The levels from the finest that are split, as the shader
+                // counts them (`area_band`).
+                let segment_width = (max.x - min.x) / f64::from(segments.max(1));
+                let band_height =
+                    |level: u32| (max.y - min.y) / f64::from(count_h) * f64::from(1 << level);
+                let split_levels = if segments == 0 {
+                    0
+                } else {
+                    1 + (1..8)
+                        .take_while(|&l| 2.0 * AREA_REACH * band_height(l - 1) < segment_width)
+                        .count() as u32
+                };
+                let level = |this: &mut GlyphData, range: (f64, f64), count: u32, split: bool| {
+                    let lists = if split { &lists[..] } else { &[] };
+                    let split: Vec<Vec<Vec<usize>>> = (lists.iter())
+                        .map(|(_, curves)| band_members(curves, 1, range, count, AREA_REACH))
+                        .collect();
+                    let bands = band_members(&quads, 1, range, count, AREA_REACH);
+                    for (b, members) in bands.iter().enumerate() {
+                        this.push_band(&quads, first_curve, members, 0);
+                        for ((first, curves), members) in lists.iter().zip(&split) {
+                            this.push_segment(curves, *first, &members[b]);
+                        }
+                    }
+                };
+                level(self, (min.y, max.y), count_h, split_levels > 0);
                 self.push_band(&quads, first_curve, &all, 0);
-                let (mut height, mut count) = ((max.y - min.y) / f64::from(count_h), count_h);
+                let (mut height, mut count, mut l) =
+                    ((max.y - min.y) / f64::from(count_h), count_h, 0);
                 while count > 1 {
                     height *= 2.0;
                     count = count.div_ceil(2);
-                    let range = (min.y, min.y + height * f64::from(count));
-                    self.push_bands(&quads, first_curve, 1, range, count, AREA_REACH);
+                    l += 1;
+                    level(
+                        self,
+                        (min.y, min.y + height * f64::from(count)),
+                        count,
+                        l < split_levels,
+                    );
                 }
-                0
+                segments | (split_levels << 16)
             }
         };
         self.marked.push(any_marked);
@@ -346,6 +437,22 @@ impl GlyphData {
         self.bands.push(GpuBand {
             by_max: start,
             by_min: start + members.len() as u32,
+            count: members.len() as u32,
+        });
+    }
+
+    /// A segment's band: `members` of a segment's `curves` (in the curve list from
+    /// `first_curve`), in the one ordering its walk takes, towards + (by descending max
+    /// x): a segment's list ends at its right boundary.
+    fn push_segment(&mut self, curves: &[PreparedCurve], first_curve: u32, members: &[usize]) {
+        let mut by_max = members.to_vec();
+        by_max.sort_by(|&a, &b| curves[b].max.x.total_cmp(&curves[a].max.x));
+        let start = self.band_curves.len() as u32;
+        self.band_curves
+            .extend(by_max.iter().map(|&i| first_curve + i as u32));
+        self.bands.push(GpuBand {
+            by_max: start,
+            by_min: start,
             count: members.len() as u32,
         });
     }
@@ -449,6 +556,136 @@ fn auto_band_count(quads: &[PreparedCurve], across: usize, range: (f64, f64)) ->
         current = doubled;
     }
     count
+}
+
+/// Most segments a glyph's bands are split into along x.
+pub const MAX_SEGMENTS: u32 = 64;
+
+/// Segment `j` (1 to `segments`) of `segments` equal ones across `span` (the glyph's x
+/// bounds): its right boundary, as the GPU holds it.
+fn segment_boundary(span: (f64, f64), segments: u32, j: u32) -> f64 {
+    let width = (span.1 - span.0) / f64::from(segments);
+    f64::from((span.0 + width * f64::from(j)) as f32)
+}
+
+/// The curves a pixel in segment `j` of `segments` across `span` walks, towards +x:
+/// one whose right edge lies within the segment (at most its boundary, less a 256th of
+/// a segment) and whose left edge lies at most two segments left of the boundary (a
+/// 256th more), the shader's test (`area_band` in winding_area.wgsl). A curve wholly
+/// left of that reach adds nothing to such a pixel.
+///
+/// Listed: the curves left of the boundary reaching that far; those across it, cut
+/// where they meet it (their left part; a monotone piece meets it once); and vertical
+/// lines on the boundary that add to any such pixel what every curve right of it (and
+/// every cut-off right part) adds. Such a curve lies wholly right of the pixel and adds
+/// A(end) − A(start), A the pixel's area below a height; summed over them, the sum
+/// Σ sᵢ·A(yᵢ) over their ends (s = +1 at an end, −1 at a start) telescopes where one
+/// piece ends and the next starts, leaving the heights where the outline crosses the
+/// boundary. By Abel summation, with Sₖ the running sum of s up to the k-th height in
+/// ascending order, it is Σₖ Sₖ·(A(yₖ) − A(yₖ₊₁)): Sₖ lines from yₖ₊₁ down to yₖ.
+///
+/// `None` where the signs do not sum to 0 (an outline that is not closed): that glyph
+/// takes no segments.
+fn segment_curves(
+    quads: &[PreparedCurve],
+    span: (f64, f64),
+    segments: u32,
+    j: u32,
+) -> Option<Vec<PreparedCurve>> {
+    let width = (span.1 - span.0) / f64::from(segments);
+    let boundary = segment_boundary(span, segments, j);
+    let reach = span.0 + width * (f64::from(j) - 2.0 - 1.0 / 256.0);
+    let mut listed = Vec::new();
+    // The heights of the right side's ends, with their signs.
+    let mut ends: Vec<(f64, i64)> = Vec::new();
+    for q in quads {
+        if q.max.x <= boundary {
+            if q.max.x >= reach {
+                listed.push(*q);
+            }
+            continue;
+        }
+        if q.min.x >= boundary {
+            ends.extend([(q.p[2].y, 1), (q.p[0].y, -1)]);
+            continue;
+        }
+        // Across the boundary: cut there, as the GPU will hold the cut (x exactly the
+        // boundary, y rounded once), its middle control point kept within its ends' box.
+        let t = t_at(q.p.map(|p| p.x), boundary);
+        let y = f64::from(point_at(q.p, t).y as f32).clamp(q.min.y, q.max.y);
+        let cut = DVec2::new(boundary, y);
+        let rising = q.p[2].x > q.p[0].x;
+        let (a, b) = if rising { (0.0, t) } else { (t, 1.0) };
+        let middle = subcurve(q.p, a, b)[1].as_vec2().as_dvec2();
+        let [start, end] = if rising { [q.p[0], cut] } else { [cut, q.p[2]] };
+        let middle = middle.clamp(start.min(end), start.max(end));
+        if start != end {
+            listed.push(PreparedCurve {
+                p: [start, middle, end],
+                min: start.min(end),
+                max: start.max(end),
+                ..*q
+            });
+        }
+        let (right_start, right_end) = if rising { (cut, q.p[2]) } else { (q.p[0], cut) };
+        ends.extend([(right_end.y, 1), (right_start.y, -1)]);
+    }
+    ends.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut running = 0;
+    for (k, &(y, sign)) in ends.iter().enumerate() {
+        running += sign;
+        let Some(&(above, _)) = ends.get(k + 1) else {
+            break;
+        };
+        if running == 0 || above == y {
+            continue;
+        }
+        // `running` lines from `above` down to `y` (up, where it is negative).
+        let (from, to) = if running > 0 { (above, y) } else { (y, above) };
+        let line = PreparedCurve {
+            p: [
+                DVec2::new(boundary, from),
+                DVec2::new(
+                    boundary,
+                    f64::from((0.5 * (from + to)) as f32).clamp(y, above),
+                ),
+                DVec2::new(boundary, to),
+            ],
+            min: DVec2::new(boundary, y),
+            max: DVec2::new(boundary, above),
+            overlaps: false,
+            counted: false,
+            parent: u32::MAX,
+        };
+        listed.extend(std::iter::repeat_n(line, running.unsigned_abs() as usize));
+    }
+    (running == 0).then_some(listed)
+}
+
+/// How many segments a glyph's `aa=area` bands are split into: segments about a
+/// quarter of the glyph's height wide (`SEGMENTS_PER_HEIGHT`), up to [`MAX_SEGMENTS`],
+/// in a glyph at least twice as wide as tall with `LEAST_CURVES` monotone pieces or
+/// more: a joined word, not a letter nor a dash. None otherwise.
+///
+/// Measured on the bench's scenes (`glyphscope render --case arabic|bengali --method
+/// winding --param between=union|add --stats S.json`, curves per covered pixel, mean
+/// (max)): segments a glyph's height wide saved less (arabic 3.76, bengali 4.37), an
+/// eighth of it no more than a quarter (3.49 and 3.21 against 3.47 and 3.31) for a
+/// quarter more memory. Below 48 pieces, wide single letters (Arabic's seen, its
+/// final yeh) took segments too and cost more drawn one by one (`between=add`: 2.52
+/// (11) → 2.56 (13)); the scene's wide joined words have 34 to 113 pieces, and the
+/// few under 48 keep their bands whole.
+fn auto_segment_count(quads: &[PreparedCurve], (min, max): (DVec2, DVec2)) -> u32 {
+    const SEGMENTS_PER_HEIGHT: f64 = 4.0;
+    const LEAST_CURVES: usize = 48;
+    let (width, height) = (max.x - min.x, max.y - min.y);
+    if width < 2.0 * height || quads.len() < LEAST_CURVES {
+        return 0;
+    }
+    let segments = ((SEGMENTS_PER_HEIGHT * width / height).ceil() as u32).min(MAX_SEGMENTS);
+    let closed =
+        (1..=segments).all(|j| segment_curves(quads, (min.x, max.x), segments, j).is_some());
+    if closed { segments } else { 0 }
 }
 
 #[cfg(test)]
@@ -653,7 +890,7 @@ mod tests {
             let mut data = GlyphData::default();
             data.push(&glyph(&font, c), 2048.0, count, Layout::Area);
             let g = data.glyphs[0];
-            assert_eq!(g.band_count_v, 0);
+            assert_eq!(g.band_count_v, 0, "{c:?}: a glyph about as wide as tall");
             let (lo, hi) = (f64::from(g.bounds[1]), f64::from(g.bounds[3]));
             let mut first = 0;
             let mut next = g.band_count_h as usize + 1;
@@ -764,5 +1001,186 @@ mod tests {
             }
         }
         assert_eq!(area.curves[3].parent, 1);
+    }
+
+    /// A word's width of 'm's, each one's contours moved along by its advance: a glyph
+    /// much wider than tall, with many curves in each band.
+    fn word_of_ms(font: &Font, count: usize) -> Outline {
+        let m = glyph(font, 'm');
+        let advance = m.control_bounds().unwrap().size().x * 1.08;
+        let contours = (0..count)
+            .flat_map(|k| {
+                let shift = DVec2::new(advance * k as f64, 0.0);
+                (m.contours.iter()).map(move |c| crate::geometry::Contour {
+                    segments: c.segments.iter().map(|s| s.map(|p| p + shift)).collect(),
+                })
+            })
+            .collect();
+        Outline { contours }
+    }
+
+    /// The list `area_band` in winding_area.wgsl reads for a pixel centred on `centre`
+    /// whose half extents are `half` (local units), mirrored in f64: its curves, and
+    /// whether it is a segment's (walked towards +x) or a band's.
+    fn chosen_list(
+        data: &GlyphData,
+        g: &GpuGlyph,
+        centre: DVec2,
+        half: DVec2,
+    ) -> (Vec<Quad>, bool) {
+        let [x0, y0, x1, y1] = g.bounds.map(f64::from);
+        let (segments, split_levels) = (g.band_count_v & 0xffff, g.band_count_v >> 16);
+        let per_band = |level: u32| {
+            if level < split_levels {
+                1 + segments
+            } else {
+                1
+            }
+        };
+        let mut height = (y1 - y0) / f64::from(g.band_count_h);
+        let (mut first, mut count, mut level) = (g.first_band, g.band_count_h, 0);
+        let mut next = first + count * per_band(0) + 1;
+        while count > 1 && AREA_REACH * height < half.y {
+            first = next;
+            height *= 2.0;
+            count = count.div_ceil(2);
+            level += 1;
+            next = first + count * per_band(level);
+        }
+        let per_band = per_band(level);
+        let index = ((centre.y - y0) / height)
+            .floor()
+            .clamp(0.0, f64::from(count - 1)) as u32;
+        let width = (x1 - x0) / f64::from(segments.max(1));
+        let right = centre.x + half.x;
+        let j = ((right - x0) / width + 1.0 / 256.0)
+            .ceil()
+            .clamp(1.0, f64::from(segments.max(1)));
+        let boundary = x0 + j * width;
+        let segment = per_band > 1
+            && right <= boundary - width / 256.0
+            && centre.x - half.x >= boundary - 2.0 * width + width / 256.0;
+        let record = first + index * per_band + if segment { j as u32 } else { 0 };
+        let band = data.bands[record as usize];
+        let curves = data.band_curves[band.by_max as usize..][..band.count as usize]
+            .iter()
+            .map(|&i| {
+                let c = data.curves[i as usize];
+                [[c.p0p1[0], c.p0p1[1]], [c.p0p1[2], c.p0p1[3]], c.p2]
+                    .map(|[x, y]| DVec2::new(f64::from(x), f64::from(y)))
+            })
+            .collect();
+        (curves, segment)
+    }
+
+    /// A glyph split into segments: for pixels of many sizes, shapes and places, the
+    /// segment `area_band` picks gives the pixel-averaged winding number (the CPU
+    /// mirror's, `area::pixel_winding`, in f64) of every curve of the glyph — its cut
+    /// pieces and boundary lines standing in for everything right of it — and a band's
+    /// list gives it too where no segment fits. Most pixels find a segment.
+    #[test]
+    fn a_segment_holds_what_its_pixels_integrate() {
+        use super::super::area::pixel_winding;
+        let font = shipped(0);
+        let word = word_of_ms(&font, 5);
+        let mut data = GlyphData::default();
+        data.push(&word, 2048.0, BandCount::Auto, Layout::Area);
+        let g = data.glyphs[0];
+        let segments = g.band_count_v & 0xffff;
+        assert!(
+            segments >= 8 && g.band_count_v >> 16 >= 1,
+            "{segments} segments"
+        );
+        let curves: Vec<Quad> = word.segments().filter_map(Segment::as_quad).collect();
+        let [x0, y0, x1, y1] = g.bounds.map(f64::from);
+        // A small generator of its own: the same pixels on every run.
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut fitted, mut tried) = (0, 0);
+        for _ in 0..3000 {
+            // Pixels from a twentieth of a segment to three segments across, turned and
+            // skewed a little, anywhere over the glyph and a little past it.
+            let size = (x1 - x0) / f64::from(segments) * (0.05 + 3.0 * next() * next());
+            let angle = 0.6 * (next() - 0.5);
+            let skew = 0.4 * (next() - 0.5);
+            let jx = DVec2::new(angle.cos(), angle.sin()) * size;
+            let jy = DVec2::new(-angle.sin() + skew, angle.cos()) * size;
+            let centre = DVec2::new(
+                x0 - size + (x1 - x0 + 2.0 * size) * next(),
+                y0 - size + (y1 - y0 + 2.0 * size) * next(),
+            );
+            let half = 0.5 * DVec2::new(jx.x.abs() + jy.x.abs(), jx.y.abs() + jy.y.abs());
+            let (listed, segment) = chosen_list(&data, &g, centre, half);
+            let whole = pixel_winding(&curves, centre, jx, jy);
+            // (A band's list, walked either way, sums to the whole's too.)
+            let from_list = pixel_winding(&listed, centre, jx, jy);
+            assert!(
+                (whole - from_list).abs() <= 1e-4,
+                "pixel at {centre} of size {size}: {from_list} from its {} list of {} curves, \
+                 {whole} from all",
+                if segment { "segment's" } else { "band's" },
+                listed.len()
+            );
+            fitted += usize::from(segment);
+            tried += 1;
+        }
+        assert!(
+            fitted * 2 > tried,
+            "{fitted} of {tried} pixels found a segment"
+        );
+    }
+
+    /// Segments go to glyphs much wider than tall with curves enough in their bands: a
+    /// word, not a letter, not a dash.
+    #[test]
+    fn only_wide_glyphs_with_curves_to_save_take_segments() {
+        let font = shipped(0);
+        let segments = |outline: &Outline| {
+            let mut data = GlyphData::default();
+            data.push(outline, 2048.0, BandCount::Auto, Layout::Area);
+            data.glyphs[0].band_count_v & 0xffff
+        };
+        assert_eq!(segments(&glyph(&font, 'm')), 0);
+        assert_eq!(segments(&glyph(&font, '\u{2014}')), 0, "an em dash");
+        assert!(segments(&word_of_ms(&font, 5)) > 0);
+        // Rays never split bands along x: their vertical bands are the other count.
+        let mut rays = GlyphData::default();
+        rays.push(
+            &word_of_ms(&font, 5),
+            2048.0,
+            BandCount::Fixed(4),
+            Layout::Rays,
+        );
+        assert_eq!(rays.glyphs[0].band_count_v, 4);
+    }
+
+    /// A union's curves are never marked (its winding is 0 or its fill sign
+    /// everywhere), where the same contours as a font gives them are, when they touch.
+    #[test]
+    fn a_unions_touching_contours_are_not_marked() {
+        let square = |x: f64| crate::geometry::Contour {
+            segments: [(0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0)]
+                .iter()
+                .zip([(10.0, 0.0), (10.0, 10.0), (0.0, 10.0), (0.0, 0.0)])
+                .map(|(&(ax, ay), (bx, by))| {
+                    Segment::Line(DVec2::new(ax + x, ay), DVec2::new(bx + x, by))
+                })
+                .collect(),
+        };
+        let touching = Outline {
+            contours: vec![square(0.0), square(10.0)],
+        };
+        let mut given = GlyphData::default();
+        given.push(&touching, 1000.0, BandCount::Fixed(1), Layout::Area);
+        assert_eq!(given.marked, [true]);
+        let mut union = GlyphData::default();
+        union.push_union(&touching, 1000.0, BandCount::Fixed(1), Layout::Area);
+        assert_eq!(union.marked, [false]);
+        assert!(union.curves.iter().all(|c| c.overlaps == 0.0));
     }
 }

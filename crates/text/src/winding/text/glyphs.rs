@@ -17,6 +17,8 @@ use crate::scene::Glyph;
 struct Kept {
     key: (usize, u64),
     outline: Outline,
+    /// The outline is a nonzero union ([`GlyphData::push_union`]).
+    union: bool,
     units_per_em: f64,
 }
 
@@ -41,25 +43,33 @@ impl PreparedGlyphs {
         if let Some(&index) = self.index.get(&key) {
             return index;
         }
-        let outline = glyph.union(units_per_em).unwrap_or(&glyph.outline).clone();
-        self.push(key, outline, units_per_em, glyph.bounds)
+        let (outline, union) = match glyph.union(units_per_em) {
+            Some(union) => (union.clone(), true),
+            None => (glyph.outline.clone(), glyph.merged),
+        };
+        self.push(key, outline, union, units_per_em, glyph.bounds)
     }
 
     fn push(
         &mut self,
         key: (usize, u64),
         outline: Outline,
+        union: bool,
         units_per_em: f64,
         bounds: Rect,
     ) -> u32 {
-        let index = self
-            .data
-            .push(&outline, units_per_em, BandCount::Auto, Layout::Area);
+        let (bands, layout) = (BandCount::Auto, Layout::Area);
+        let index = if union {
+            self.data.push_union(&outline, units_per_em, bands, layout)
+        } else {
+            self.data.push(&outline, units_per_em, bands, layout)
+        };
         self.bounds.push(bounds);
         self.index.insert(key, index);
         self.kept.push(Kept {
             key,
             outline,
+            union,
             units_per_em,
         });
         index
@@ -122,8 +132,15 @@ impl PreparedGlyphs {
         let old = std::mem::take(self);
         let mut new_index = Vec::with_capacity(old.kept.len());
         for ((kept, bounds), &used) in old.kept.into_iter().zip(old.bounds).zip(used) {
-            new_index
-                .push(used.then(|| self.push(kept.key, kept.outline, kept.units_per_em, bounds)));
+            new_index.push(used.then(|| {
+                self.push(
+                    kept.key,
+                    kept.outline,
+                    kept.union,
+                    kept.units_per_em,
+                    bounds,
+                )
+            }));
         }
         new_index
     }
