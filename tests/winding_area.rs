@@ -489,3 +489,53 @@ fn a_joined_word_costs_about_what_its_letters_cost() {
         );
     }
 }
+
+/// A union's contours may touch: two squares overlapping and a third meeting the second
+/// at a corner make a union of two contours that meet at a point. As a font would give
+/// them, touching contours mark their curves (wound against each other they would put
+/// three winding levels in a pixel); a union's winding is 0 or its fill sign
+/// everywhere, so `winding` marks none of its curves, and pixels holding the point stay
+/// exact without the sub-pixel grid, under every transform and at 16 offsets.
+#[test]
+fn a_union_whose_contours_touch_is_exact_without_sub_pixels() {
+    use glyphscope::geometry::Contour;
+    use glyphscope::methods::winding::{BandCount, GlyphData, Layout};
+    let square = |x: f64, y: f64| Contour {
+        segments: [(0.0, 0.0), (400.0, 0.0), (400.0, 400.0), (0.0, 400.0)]
+            .iter()
+            .zip([(400.0, 0.0), (400.0, 400.0), (0.0, 400.0), (0.0, 0.0)])
+            .map(|(&(ax, ay), (bx, by))| {
+                Segment::Line(DVec2::new(ax + x, ay + y), DVec2::new(bx + x, by + y))
+            })
+            .collect(),
+    };
+    let outline = Outline {
+        contours: vec![square(0.0, 0.0), square(200.0, 200.0), square(600.0, 600.0)],
+    };
+    let scene = Scene::from_outlines(1000.0, vec![(outline, DVec2::ZERO)]);
+    let merged = scene.with_overlaps_merged();
+    assert!(
+        merged.glyphs[0].merged,
+        "the squares overlap: a union is taken"
+    );
+    let union = &merged.glyphs[0].outline;
+    assert_eq!(union.contours.len(), 2, "{union:?}");
+    let data = GlyphData::of_scene(&merged, BandCount::Auto, Layout::Area);
+    assert_eq!(data.marked, [false]);
+    let mut given = GlyphData::default();
+    given.push(union, 1000.0, BandCount::Auto, Layout::Area);
+    assert_eq!(given.marked, [true], "as a font's contours, they touch");
+    let mut method = area_method(&[]);
+    method.prepare(gpu(), &scene).unwrap();
+    for (name, matrix) in transforms() {
+        for k in 0..16 {
+            let cam = framed(&scene, 24.0, matrix, subpixel(k));
+            let got = frame::render_image(gpu(), method.as_mut(), &cam).unwrap();
+            let s = compare(&got, &reference::rasterize(&scene, &cam).unwrap()).unwrap();
+            assert!(
+                s.mae_255 <= 0.02 && s.max <= 0.02,
+                "{name}, offset {k}: {s:?}"
+            );
+        }
+    }
+}

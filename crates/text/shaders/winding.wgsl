@@ -54,7 +54,9 @@ struct Glyph {
 // ray stops at the first curve that lies wholly behind it. A glyph's bands (`Layout`
 // in bands.rs), from `first_band`: for aa=rays its horizontal bands, its vertical ones,
 // then one of all its curves (`band_for`); for aa=area (no vertical bands) its
-// horizontal bands, the one of all its curves, then coarser levels (`area_band`).
+// horizontal bands, the one of all its curves, then coarser levels (`area_band`), each
+// band followed by its segments' lists in a glyph split along x (kept once, by_min =
+// by_max: walked towards + alone).
 struct Band {
     by_max: u32,
     by_min: u32,

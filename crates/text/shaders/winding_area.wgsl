@@ -427,6 +427,12 @@ fn clamp_antiderivative(x: f32) -> f32 {
 // height is at most this many bands.
 const AREA_REACH: f32 = 1.5;
 
+// `area_band`'s choice: the list, and whether it is a segment's (walked towards +x).
+struct ChosenBand {
+    band: Band,
+    segment: bool,
+}
+
 // The band holding every curve at the height of a pixel centred on `centre`, up to
 // `half_height` above and below it: the finest level whose bands are at least the
 // pixel's height over 2·AREA_REACH (see bands.rs). In a glyph whose bands are split
@@ -436,12 +442,6 @@ const AREA_REACH: f32 = 1.5;
 // that fits one (its right edge within the segment, its left within two segments of the
 // boundary, a 256th of a segment inside both) takes that segment's list, walked towards
 // +x. One read, of the list chosen.
-struct ChosenBand {
-    band: Band,
-    // Walked towards +x: a segment's list.
-    segment: bool,
-}
-
 fn area_band(g: Glyph, centre: vec2<f32>, half_width: f32, half_height: f32) -> ChosenBand {
     var height = (g.bounds.w - g.bounds.y) / f32(g.band_count_h);
     // Segments per band, and how many levels from the finest have them.

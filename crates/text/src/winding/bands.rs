@@ -4,7 +4,8 @@
 //! A band lists every curve whose control-point bounds overlap it across the ray, so a
 //! ray cast inside the band meets no other curve. Each band keeps its curves twice:
 //! by descending max (rays cast towards +) and by ascending min (rays cast towards −);
-//! a ray then stops at the first curve lying wholly behind it.
+//! a ray then stops at the first curve lying wholly behind it. (A segment's list, below,
+//! is walked towards + alone and kept once.)
 //!
 //! `aa=area` needs every curve at the height of a whole pixel, not of one ray, so its
 //! bands ([`Layout::Area`]) overlap: each reaches one and a half bands beyond its
@@ -91,7 +92,9 @@ pub enum Layout {
     Rays,
     /// For `aa=area`: its horizontal bands, each reaching `AREA_REACH` bands beyond its
     /// boundaries; the band of all its curves; then the coarser levels, each with bands
-    /// twice as tall (and as far apart) as the last, down to a single band.
+    /// twice as tall (and as far apart) as the last, down to a single band. In a glyph
+    /// split into segments along x, each band of the levels split is followed by its
+    /// segments' records ([`segment_curves`]).
     Area,
 }
 
@@ -334,8 +337,7 @@ impl GlyphData {
                 // Each segment's curves once in the curve list; the bands list them.
                 let lists: Vec<(u32, Vec<PreparedCurve>)> = (1..=segments)
                     .map(|j| {
-                        let curves = segment_curves(&quads, (min.x, max.x), segments, j)
-                            .expect("auto_segment_count segments only closed outlines");
+                        let curves = segment_curves(&quads, (min.x, max.x), segments, j);
                         let first = self.curves.len() as u32;
                         self.curves.extend(curves.iter().map(PreparedCurve::gpu));
                         (first, curves)
@@ -584,14 +586,14 @@ fn segment_boundary(span: (f64, f64), segments: u32, j: u32) -> f64 {
 /// boundary. By Abel summation, with Sₖ the running sum of s up to the k-th height in
 /// ascending order, it is Σₖ Sₖ·(A(yₖ) − A(yₖ₊₁)): Sₖ lines from yₖ₊₁ down to yₖ.
 ///
-/// `None` where the signs do not sum to 0 (an outline that is not closed): that glyph
-/// takes no segments.
+/// Every piece right of the boundary, whole or cut off, adds one +1 and one −1, so the
+/// signs sum to 0 and the lines end where they must, closed outline or not.
 fn segment_curves(
     quads: &[PreparedCurve],
     span: (f64, f64),
     segments: u32,
     j: u32,
-) -> Option<Vec<PreparedCurve>> {
+) -> Vec<PreparedCurve> {
     let width = (span.1 - span.0) / f64::from(segments);
     let boundary = segment_boundary(span, segments, j);
     let reach = span.0 + width * (f64::from(j) - 2.0 - 1.0 / 256.0);
@@ -659,7 +661,11 @@ fn segment_curves(
         };
         listed.extend(std::iter::repeat_n(line, running.unsigned_abs() as usize));
     }
-    (running == 0).then_some(listed)
+    debug_assert_eq!(
+        running, 0,
+        "each piece right of the boundary adds +1 and −1"
+    );
+    listed
 }
 
 /// How many segments a glyph's `aa=area` bands are split into: segments about a
@@ -682,10 +688,7 @@ fn auto_segment_count(quads: &[PreparedCurve], (min, max): (DVec2, DVec2)) -> u3
     if width < 2.0 * height || quads.len() < LEAST_CURVES {
         return 0;
     }
-    let segments = ((SEGMENTS_PER_HEIGHT * width / height).ceil() as u32).min(MAX_SEGMENTS);
-    let closed =
-        (1..=segments).all(|j| segment_curves(quads, (min.x, max.x), segments, j).is_some());
-    if closed { segments } else { 0 }
+    ((SEGMENTS_PER_HEIGHT * width / height).ceil() as u32).min(MAX_SEGMENTS)
 }
 
 #[cfg(test)]
@@ -1157,30 +1160,5 @@ mod tests {
             Layout::Rays,
         );
         assert_eq!(rays.glyphs[0].band_count_v, 4);
-    }
-
-    /// A union's curves are never marked (its winding is 0 or its fill sign
-    /// everywhere), where the same contours as a font gives them are, when they touch.
-    #[test]
-    fn a_unions_touching_contours_are_not_marked() {
-        let square = |x: f64| crate::geometry::Contour {
-            segments: [(0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0)]
-                .iter()
-                .zip([(10.0, 0.0), (10.0, 10.0), (0.0, 10.0), (0.0, 0.0)])
-                .map(|(&(ax, ay), (bx, by))| {
-                    Segment::Line(DVec2::new(ax + x, ay), DVec2::new(bx + x, by))
-                })
-                .collect(),
-        };
-        let touching = Outline {
-            contours: vec![square(0.0), square(10.0)],
-        };
-        let mut given = GlyphData::default();
-        given.push(&touching, 1000.0, BandCount::Fixed(1), Layout::Area);
-        assert_eq!(given.marked, [true]);
-        let mut union = GlyphData::default();
-        union.push_union(&touching, 1000.0, BandCount::Fixed(1), Layout::Area);
-        assert_eq!(union.marked, [false]);
-        assert!(union.curves.iter().all(|c| c.overlaps == 0.0));
     }
 }
