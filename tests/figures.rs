@@ -460,8 +460,8 @@ fn a_wrong_quoted_cell_is_named() {
         "{errors:?}"
     );
     let extra = doc.replacen(
-        "| reference | default | 1251 (CPU)",
-        "| nothing | default | 1 |\n| reference | default | 1251 (CPU)",
+        "| reference | default | 466 (CPU)",
+        "| nothing | default | 1 |\n| reference | default | 466 (CPU)",
         1,
     );
     let errors = quote_errors("docs/bench.md", &extra, &committed_report);
