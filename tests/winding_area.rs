@@ -460,11 +460,12 @@ fn the_cost_breakdown_counts_what_a_square_makes() {
 /// A joined word (`between=union`) is one glyph as wide as the word; its bands are split
 /// into segments along x (crates/text/src/winding/bands.rs: `segment_curves`) so that a
 /// pixel walks its own stretch of the word. On the bench's Arabic and Bengali scenes it
-/// stays exact, and its curves per covered pixel stay within 1.5× those of the same
+/// stays exact, and its curves per covered pixel stay within 1.2× those of the same
 /// letters drawn added (`between=add`: short walks, but not exact where letters
-/// overlap), its most within 2× theirs — where the whole word's bands cost 1.8× and
-/// 1.6× on average and 15× at most (`glyphscope render --case arabic --method winding
-/// --stats S.json`, before the segments).
+/// overlap) on average and within 2× at most, the bounds set for them — where the whole
+/// word's bands cost 1.8× and 1.6× on average and 15× at most (`glyphscope render
+/// --case arabic --method winding --stats S.json`, before the segments), and the
+/// segments with a boundary line per piece beside the ink 1.37× and 1.06×.
 #[test]
 fn a_joined_word_costs_about_what_its_letters_cost() {
     for name in ["arabic", "bengali"] {
@@ -484,7 +485,7 @@ fn a_joined_word_costs_about_what_its_letters_cost() {
             joined_cost.mean, joined_cost.max, added_cost.mean, added_cost.max
         );
         assert!(
-            joined_cost.mean <= 1.5 * added_cost.mean && joined_cost.max <= 2 * added_cost.max,
+            joined_cost.mean <= 1.2 * added_cost.mean && joined_cost.max <= 2 * added_cost.max,
             "{name}: joined {joined_cost:?}, added {added_cost:?}"
         );
     }

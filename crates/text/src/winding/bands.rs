@@ -584,7 +584,9 @@ fn segment_boundary(span: (f64, f64), segments: u32, j: u32) -> f64 {
 /// Σ sᵢ·A(yᵢ) over their ends (s = +1 at an end, −1 at a start) telescopes where one
 /// piece ends and the next starts, leaving the heights where the outline crosses the
 /// boundary. By Abel summation, with Sₖ the running sum of s up to the k-th height in
-/// ascending order, it is Σₖ Sₖ·(A(yₖ) − A(yₖ₊₁)): Sₖ lines from yₖ₊₁ down to yₖ.
+/// ascending order, it is Σₖ Sₖ·(A(yₖ) − A(yₖ₊₁)): Sₖ lines from yₖ₊₁ down to yₖ, and
+/// where consecutive Sₖ are equal their lines join into one (the terms of the heights
+/// between telescope).
 ///
 /// Every piece right of the boundary, whole or cut off, adds one +1 and one −1, so the
 /// signs sum to 0 and the lines end where they must, closed outline or not.
@@ -633,33 +635,41 @@ fn segment_curves(
         ends.extend([(right_end.y, 1), (right_start.y, -1)]);
     }
     ends.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let mut running = 0;
+    // The heights where the running sum changes, and the sum from each to the next:
+    // heights where one right-side piece ends and the next starts leave it as it was,
+    // and one line spans the whole run (a line per end height listed ink crossed by
+    // the boundary once per piece beside it: arabic's lines per covered pixel 0.58).
+    let (mut running, mut run_start, mut run_value) = (0, 0.0, 0);
     for (k, &(y, sign)) in ends.iter().enumerate() {
         running += sign;
-        let Some(&(above, _)) = ends.get(k + 1) else {
-            break;
-        };
-        if running == 0 || above == y {
+        if ends.get(k + 1).is_some_and(|&(next, _)| next == y) || running == run_value {
             continue;
         }
-        // `running` lines from `above` down to `y` (up, where it is negative).
-        let (from, to) = if running > 0 { (above, y) } else { (y, above) };
-        let line = PreparedCurve {
-            p: [
-                DVec2::new(boundary, from),
-                DVec2::new(
-                    boundary,
-                    f64::from((0.5 * (from + to)) as f32).clamp(y, above),
-                ),
-                DVec2::new(boundary, to),
-            ],
-            min: DVec2::new(boundary, y),
-            max: DVec2::new(boundary, above),
-            overlaps: false,
-            counted: false,
-            parent: u32::MAX,
-        };
-        listed.extend(std::iter::repeat_n(line, running.unsigned_abs() as usize));
+        if run_value != 0 {
+            // `run_value` lines from `y` down to `run_start` (up, where it is negative).
+            let (from, to) = if run_value > 0 {
+                (y, run_start)
+            } else {
+                (run_start, y)
+            };
+            let line = PreparedCurve {
+                p: [
+                    DVec2::new(boundary, from),
+                    DVec2::new(
+                        boundary,
+                        f64::from((0.5 * (from + to)) as f32).clamp(run_start, y),
+                    ),
+                    DVec2::new(boundary, to),
+                ],
+                min: DVec2::new(boundary, run_start),
+                max: DVec2::new(boundary, y),
+                overlaps: false,
+                counted: false,
+                parent: u32::MAX,
+            };
+            listed.extend(std::iter::repeat_n(line, run_value.unsigned_abs() as usize));
+        }
+        (run_start, run_value) = (y, running);
     }
     debug_assert_eq!(
         running, 0,
@@ -668,21 +678,23 @@ fn segment_curves(
     listed
 }
 
-/// How many segments a glyph's `aa=area` bands are split into: segments about a
-/// quarter of the glyph's height wide (`SEGMENTS_PER_HEIGHT`), up to [`MAX_SEGMENTS`],
-/// in a glyph at least twice as wide as tall with `LEAST_CURVES` monotone pieces or
-/// more: a joined word, not a letter nor a dash. None otherwise.
+/// How many segments a glyph's `aa=area` bands are split into: segments about a sixth
+/// of the glyph's height wide (`SEGMENTS_PER_HEIGHT`), up to [`MAX_SEGMENTS`], in a
+/// glyph at least twice as wide as tall with `LEAST_CURVES` monotone pieces or more: a
+/// joined word, not a letter nor a dash. None otherwise.
 ///
 /// Measured on the bench's scenes (`glyphscope render --case arabic|bengali --method
-/// winding --param between=union|add --stats S.json`, curves per covered pixel, mean
-/// (max)): segments a glyph's height wide saved less (arabic 3.76, bengali 4.37), an
-/// eighth of it no more than a quarter (3.49 and 3.21 against 3.47 and 3.31) for a
-/// quarter more memory. Below 48 pieces, wide single letters (Arabic's seen, its
-/// final yeh) took segments too and cost more drawn one by one (`between=add`: 2.52
-/// (11) → 2.56 (13)); the scene's wide joined words have 34 to 113 pieces, and the
-/// few under 48 keep their bands whole.
+/// winding --stats S.json`, curves per covered pixel, mean, with this constant set to
+/// 1, 2, 4, 6, 8 and 12): arabic 3.44, 3.14, 2.96, 2.89, 2.85, 2.93; bengali 4.17,
+/// 3.33, 2.88, 2.77, 2.74, 2.68. Narrower segments shorten the walk to the boundary
+/// but put more boundaries across Arabic's baseline strokes (each a cut piece and a
+/// line in the lists of the bands there); a sixth holds less memory than a quarter or
+/// an eighth (fewer levels are split: `split_levels`). Below 48 pieces, wide single
+/// letters (Arabic's seen, its final yeh) took segments too and cost more drawn one by
+/// one (`between=add`: 2.52 (11) → 2.56 (13)); the scene's wide joined words have 34
+/// to 113 pieces, and the few under 48 keep their bands whole.
 fn auto_segment_count(quads: &[PreparedCurve], (min, max): (DVec2, DVec2)) -> u32 {
-    const SEGMENTS_PER_HEIGHT: f64 = 4.0;
+    const SEGMENTS_PER_HEIGHT: f64 = 6.0;
     const LEAST_CURVES: usize = 48;
     let (width, height) = (max.x - min.x, max.y - min.y);
     if width < 2.0 * height || quads.len() < LEAST_CURVES {
@@ -1160,5 +1172,51 @@ mod tests {
             Layout::Rays,
         );
         assert_eq!(rays.glyphs[0].band_count_v, 4);
+    }
+
+    /// Where a boundary crosses ink, one line stands for the whole stretch (a glyph
+    /// whose winding is 0 or 1): a segment's lines are disjoint and none touches the
+    /// next, and there are at most half as many as the pieces of the outline that cross
+    /// the boundary. Right-side pieces that end inside the ink split a stretch into a
+    /// line per piece beside it, which every pixel of the segment then walks.
+    #[test]
+    fn a_boundary_holds_one_line_per_stretch_of_ink() {
+        let font = shipped(0);
+        let word = word_of_ms(&font, 5);
+        let quads: Vec<PreparedCurve> = contours(&word, DEFAULT_QUAD_TOLERANCE_EM * 2048.0)
+            .concat()
+            .iter()
+            .flat_map(monotone_quads)
+            .collect();
+        let min = quads.iter().fold(DVec2::INFINITY, |m, q| m.min(q.min));
+        let max = quads.iter().fold(DVec2::NEG_INFINITY, |m, q| m.max(q.max));
+        let segments = auto_segment_count(&quads, (min, max));
+        assert!(segments >= 8, "{segments} segments");
+        let mut inked = 0;
+        for j in 1..segments {
+            let boundary = segment_boundary((min.x, max.x), segments, j);
+            let crossings = (quads.iter())
+                .filter(|q| q.min.x < boundary && q.max.x > boundary)
+                .count();
+            let mut lines: Vec<(f64, f64)> = segment_curves(&quads, (min.x, max.x), segments, j)
+                .iter()
+                .filter(|c| c.parent == u32::MAX)
+                .map(|c| (c.min.y, c.max.y))
+                .collect();
+            lines.sort_by(|a, b| a.0.total_cmp(&b.0));
+            assert!(
+                2 * lines.len() <= crossings && (crossings == 0) == lines.is_empty(),
+                "boundary {j}: {} lines for {crossings} crossings",
+                lines.len()
+            );
+            for pair in lines.windows(2) {
+                assert!(pair[0].1 < pair[1].0, "boundary {j}: lines {pair:?} meet");
+            }
+            inked += usize::from(!lines.is_empty());
+        }
+        assert!(
+            inked * 2 >= segments as usize,
+            "{inked} of {segments} boundaries cross ink"
+        );
     }
 }
