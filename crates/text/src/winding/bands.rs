@@ -637,8 +637,9 @@ fn segment_curves(
     ends.sort_by(|a, b| a.0.total_cmp(&b.0));
     // The heights where the running sum changes, and the sum from each to the next:
     // heights where one right-side piece ends and the next starts leave it as it was,
-    // and one line spans the whole run (a line per end height listed ink crossed by
-    // the boundary once per piece beside it: arabic's lines per covered pixel 0.58).
+    // and one line (|sum| copies) spans the whole run. A line per pair of consecutive
+    // end heights had split each stretch of ink at every right-side piece's end inside
+    // it: 0.58 lines per covered pixel on arabic, up to 15.
     let (mut running, mut run_start, mut run_value) = (0, 0.0, 0);
     for (k, &(y, sign)) in ends.iter().enumerate() {
         running += sign;
@@ -1018,11 +1019,12 @@ mod tests {
         assert_eq!(area.curves[3].parent, 1);
     }
 
-    /// A word's width of 'm's, each one's contours moved along by its advance: a glyph
-    /// much wider than tall, with many curves in each band.
-    fn word_of_ms(font: &Font, count: usize) -> Outline {
+    /// A word's width of 'm's, each one's contours moved along by `spacing` times its
+    /// width: a glyph much wider than tall, with many curves in each band (its letters
+    /// apart for a spacing over 1, overlapping under it).
+    fn word_of_ms(font: &Font, count: usize, spacing: f64) -> Outline {
         let m = glyph(font, 'm');
-        let advance = m.control_bounds().unwrap().size().x * 1.08;
+        let advance = m.control_bounds().unwrap().size().x * spacing;
         let contours = (0..count)
             .flat_map(|k| {
                 let shift = DVec2::new(advance * k as f64, 0.0);
@@ -1092,19 +1094,57 @@ mod tests {
     /// segment `area_band` picks gives the pixel-averaged winding number (the CPU
     /// mirror's, `area::pixel_winding`, in f64) of every curve of the glyph — its cut
     /// pieces and boundary lines standing in for everything right of it — and a band's
-    /// list gives it too where no segment fits. Most pixels find a segment.
+    /// list gives it too where no segment fits. Most pixels find a segment. Two words:
+    /// 'm's side by side (winding 0 or 1), and 'm's overlapping with one contour
+    /// reversed (overlaps kept as a font gives them: winding 2 where two 'm's meet, −1
+    /// and 0 where the reversed one lies), so that the boundary lines come in several
+    /// copies and both orientations.
     #[test]
     fn a_segment_holds_what_its_pixels_integrate() {
-        use super::super::area::pixel_winding;
         let font = shipped(0);
-        let word = word_of_ms(&font, 5);
+        let word = word_of_ms(&font, 5, 1.08);
+        let mut overlapping = word_of_ms(&font, 6, 0.7);
+        overlapping.contours[2] = overlapping.contours[2].reversed();
+        // The overlapping word's boundaries do carry lines in copies and upwards.
+        let (quads, min, max, segments) = pieces_of(&overlapping);
+        let lines: Vec<PreparedCurve> = (1..segments)
+            .flat_map(|j| segment_curves(&quads, (min.x, max.x), segments, j))
+            .filter(|c| c.parent == u32::MAX)
+            .collect();
+        assert!(lines.iter().any(|l| l.p[0].y < l.p[2].y), "no line upwards");
+        assert!(
+            lines.windows(2).any(|pair| pair[0].p == pair[1].p),
+            "no line in two copies"
+        );
+        for (name, word) in [("side by side", word), ("overlapping", overlapping)] {
+            check_segments(name, &word);
+        }
+    }
+
+    /// An outline's monotone pieces as `push` makes them, their bounds, and the segments
+    /// `auto_segment_count` gives it (at least 8: the tests' words are wide).
+    fn pieces_of(word: &Outline) -> (Vec<PreparedCurve>, DVec2, DVec2, u32) {
+        let quads: Vec<PreparedCurve> = contours(word, DEFAULT_QUAD_TOLERANCE_EM * 2048.0)
+            .concat()
+            .iter()
+            .flat_map(monotone_quads)
+            .collect();
+        let min = quads.iter().fold(DVec2::INFINITY, |m, q| m.min(q.min));
+        let max = quads.iter().fold(DVec2::NEG_INFINITY, |m, q| m.max(q.max));
+        let segments = auto_segment_count(&quads, (min, max));
+        assert!(segments >= 8, "{segments} segments");
+        (quads, min, max, segments)
+    }
+
+    fn check_segments(name: &str, word: &Outline) {
+        use super::super::area::pixel_winding;
         let mut data = GlyphData::default();
-        data.push(&word, 2048.0, BandCount::Auto, Layout::Area);
+        data.push(word, 2048.0, BandCount::Auto, Layout::Area);
         let g = data.glyphs[0];
         let segments = g.band_count_v & 0xffff;
         assert!(
             segments >= 8 && g.band_count_v >> 16 >= 1,
-            "{segments} segments"
+            "{name}: {segments} segments"
         );
         let curves: Vec<Quad> = word.segments().filter_map(Segment::as_quad).collect();
         let [x0, y0, x1, y1] = g.bounds.map(f64::from);
@@ -1136,8 +1176,8 @@ mod tests {
             let from_list = pixel_winding(&listed, centre, jx, jy);
             assert!(
                 (whole - from_list).abs() <= 1e-4,
-                "pixel at {centre} of size {size}: {from_list} from its {} list of {} curves, \
-                 {whole} from all",
+                "{name}: pixel at {centre} of size {size}: {from_list} from its {} list of {} \
+                 curves, {whole} from all",
                 if segment { "segment's" } else { "band's" },
                 listed.len()
             );
@@ -1146,7 +1186,7 @@ mod tests {
         }
         assert!(
             fitted * 2 > tried,
-            "{fitted} of {tried} pixels found a segment"
+            "{name}: {fitted} of {tried} pixels found a segment"
         );
     }
 
@@ -1162,11 +1202,11 @@ mod tests {
         };
         assert_eq!(segments(&glyph(&font, 'm')), 0);
         assert_eq!(segments(&glyph(&font, '\u{2014}')), 0, "an em dash");
-        assert!(segments(&word_of_ms(&font, 5)) > 0);
+        assert!(segments(&word_of_ms(&font, 5, 1.08)) > 0);
         // Rays never split bands along x: their vertical bands are the other count.
         let mut rays = GlyphData::default();
         rays.push(
-            &word_of_ms(&font, 5),
+            &word_of_ms(&font, 5, 1.08),
             2048.0,
             BandCount::Fixed(4),
             Layout::Rays,
@@ -1177,24 +1217,20 @@ mod tests {
     /// Where a boundary crosses ink, one line stands for the whole stretch (a glyph
     /// whose winding is 0 or 1): a segment's lines are disjoint and none touches the
     /// next, and there are at most half as many as the pieces of the outline that cross
-    /// the boundary. Right-side pieces that end inside the ink split a stretch into a
-    /// line per piece beside it, which every pixel of the segment then walks.
+    /// the boundary (none of the word's points lies on a boundary, which would cross it
+    /// with no piece counted). Right-side pieces that end inside the ink had split a
+    /// stretch into a line per piece beside it, which every pixel of the segment walked.
     #[test]
     fn a_boundary_holds_one_line_per_stretch_of_ink() {
         let font = shipped(0);
-        let word = word_of_ms(&font, 5);
-        let quads: Vec<PreparedCurve> = contours(&word, DEFAULT_QUAD_TOLERANCE_EM * 2048.0)
-            .concat()
-            .iter()
-            .flat_map(monotone_quads)
-            .collect();
-        let min = quads.iter().fold(DVec2::INFINITY, |m, q| m.min(q.min));
-        let max = quads.iter().fold(DVec2::NEG_INFINITY, |m, q| m.max(q.max));
-        let segments = auto_segment_count(&quads, (min, max));
-        assert!(segments >= 8, "{segments} segments");
+        let (quads, min, max, segments) = pieces_of(&word_of_ms(&font, 5, 1.08));
         let mut inked = 0;
         for j in 1..segments {
             let boundary = segment_boundary((min.x, max.x), segments, j);
+            assert!(
+                (quads.iter()).all(|q| q.min.x != boundary && q.max.x != boundary),
+                "boundary {j} meets a point of the word: choose another word for this test"
+            );
             let crossings = (quads.iter())
                 .filter(|q| q.min.x < boundary && q.max.x > boundary)
                 .count();
