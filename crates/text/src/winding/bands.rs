@@ -94,7 +94,7 @@ pub enum Layout {
     /// boundaries; the band of all its curves; then the coarser levels, each with bands
     /// twice as tall (and as far apart) as the last, down to a single band. In a glyph
     /// split into segments along x, each band of the levels split is followed by its
-    /// segments' records ([`segment_curves`]).
+    /// segments' records (`segment_curves` in bands.rs).
     Area,
 }
 
