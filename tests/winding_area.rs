@@ -540,3 +540,24 @@ fn a_union_whose_contours_touch_is_exact_without_sub_pixels() {
         }
     }
 }
+
+/// `quads=word` draws each word as one glyph under one quad (`Scene::with_words_joined`):
+/// on `tiny` the image is as exact as with a quad per glyph, from under a quarter as many
+/// quads (docs/methods/winding.md, "A quad per word", for what it costs and saves).
+#[test]
+fn a_quad_per_word_is_as_exact() {
+    let (scene, cam) = glyphscope::named_views::build("tiny").unwrap();
+    let words = scene.with_words_joined().0;
+    assert!(
+        words.instances.len() * 4 < scene.instances.len(),
+        "{} quads for {} glyphs",
+        words.instances.len(),
+        scene.instances.len()
+    );
+    let reference = reference::rasterize(&scene, &cam).unwrap();
+    for quads in ["glyph", "word"] {
+        let mut method = area_method(&[("quads", quads)]);
+        let s = compare(&render(method.as_mut(), &scene, &cam), &reference).unwrap();
+        assert!(s.mae_255 <= 0.1 && s.max <= 0.02, "quads={quads}: {s:?}");
+    }
+}

@@ -160,6 +160,16 @@ pub const PARAMS: &[ParamSpec] = &[
     },
     BETWEEN,
     ParamSpec {
+        key: "quads",
+        choices: &["glyph", "word"],
+        numbers: None,
+        help: "glyph: a quad per glyph instance over its box; word: each word's letters \
+               (instances whose boxes lie within 0.15 em along x) joined into one glyph \
+               under one quad (Scene::with_words_joined): fewer, larger quads for a \
+               software rasterizer to set up and fill, a glyph's data per distinct word \
+               (docs/methods/winding.md, \"A quad per word\").",
+    },
+    ParamSpec {
         key: "overlay",
         choices: &["none", "classes", "cost"],
         numbers: None,
@@ -240,6 +250,14 @@ pub fn settings_from_params(params: &Params) -> Result<Settings, Error> {
         Some(between) => between == "union",
         None => !s.even_odd,
     };
+    s.join_words = params.word("quads") == Some("word");
+    if s.join_words && (s.even_odd || !s.join_instances) {
+        return Err(Error::Input(
+            "winding: quads=word draws each word as one glyph, whose overlapping ink counts \
+             once under the nonzero rule: it takes neither fill=evenodd nor between=add"
+                .into(),
+        ));
+    }
     s.bands = match params.get("bands") {
         Some(Value::Whole(n)) => Some(BandCount::Fixed(n)),
         Some(Value::Word("off")) => None,

@@ -40,6 +40,12 @@ pub struct JoinCounts {
     pub distinct: usize,
 }
 
+/// How far apart, in ems, two instances' control boxes may lie along x and still be
+/// letters of one word for [`Scene::with_words_joined`]: more than the side bearings of
+/// two letters (DejaVu Sans: up to about 0.1 em each side of a letter's box), less than
+/// a space with them (0.32 em and more).
+pub const WORD_GAP_EM: f64 = 0.15;
+
 /// A position relative to a group's first instance, bit for bit.
 type Offset = [u64; 2];
 
@@ -55,16 +61,8 @@ impl Scene {
     /// whose ink intersection cannot be told (drawn added, as without joining). Glyphs
     /// no instance draws any more are left out.
     pub fn with_overlapping_instances_joined(&self) -> (Scene, JoinCounts) {
-        let placed = |i: &Instance| {
-            let b = self.glyphs[i.glyph as usize].bounds;
-            Rect {
-                min: b.min + i.position,
-                max: b.max + i.position,
-            }
-        };
-        let bounds: Vec<Rect> = self.instances.iter().map(placed).collect();
         let mut pairs: HashMap<(u32, u32, Offset), bool> = HashMap::new();
-        let groups = groups_where(&bounds, |a, b| {
+        self.joined_where(0.0, |a, b| {
             let (a, b) = (self.instances[a], self.instances[b]);
             *pairs
                 .entry((a.glyph, b.glyph, offset(a.position, b.position)))
@@ -77,7 +75,38 @@ impl Scene {
                     let a = &self.glyphs[a.glyph as usize].outline;
                     inks_overlap(a, &b_in_a, self.units_per_em).unwrap_or(false)
                 })
-        });
+        })
+    }
+
+    /// The same picture with each word drawn as one instance of one glyph: instances
+    /// whose control boxes, grown along x by [`WORD_GAP_EM`] of an em on each side, meet
+    /// (letters of a word, and any instances whose ink overlaps, whose boxes meet) are
+    /// grouped transitively and joined as
+    /// [`with_overlapping_instances_joined`](Self::with_overlapping_instances_joined)
+    /// joins, so the fill is still the union. A method drawing a quad per instance then
+    /// draws one per word: fewer, larger quads, and a glyph per distinct word.
+    pub fn with_words_joined(&self) -> (Scene, JoinCounts) {
+        self.joined_where(WORD_GAP_EM * self.units_per_em, |_, _| true)
+    }
+
+    /// The scene with the groups of instances joined whose control boxes, grown along x
+    /// by `grow` font units on each side, meet and `joins` says belong together (by
+    /// index, each pair at most once; transitively).
+    fn joined_where(
+        &self,
+        grow: f64,
+        joins: impl FnMut(usize, usize) -> bool,
+    ) -> (Scene, JoinCounts) {
+        let placed = |i: &Instance| {
+            let b = self.glyphs[i.glyph as usize].bounds;
+            let by = DVec2::new(grow, 0.0);
+            Rect {
+                min: b.min + i.position - by,
+                max: b.max + i.position + by,
+            }
+        };
+        let bounds: Vec<Rect> = self.instances.iter().map(placed).collect();
+        let groups = groups_where(&bounds, joins);
 
         let mut glyphs = self.glyphs.clone();
         let mut joined: HashMap<Vec<(u32, Offset)>, u32> = HashMap::new();
@@ -249,6 +278,56 @@ mod tests {
         assert_eq!(joined.instances[2].position, at(20_000.0));
         assert_eq!(joined.instances[3].position, at(20_100.0));
         assert_eq!(joined.ink_bounds(), scene.ink_bounds());
+    }
+
+    /// Letters of a word (boxes less than 0.3 em apart along x: 0.15 em grown on each
+    /// side) join into one glyph, words a space apart do not, and a group whose ink
+    /// overlaps joins as well; a repeated word is one glyph. Squares 100 units wide in
+    /// a 1000-unit em: 20 units apart is a word's letters, 400 a space.
+    #[test]
+    fn words_join_letters_a_gap_apart() {
+        let at = |x: f64| DVec2::new(x, 0.0);
+        let mut scene = Scene::from_outlines(1000.0, vec![(square(0.0), DVec2::ZERO)]);
+        // "aaa aa aaa" and a square alone far off; the last word's two overlap by half.
+        scene.instances = [
+            0.0, 120.0, 240.0, 740.0, 860.0, 1360.0, 1480.0, 1600.0, 1650.0,
+        ]
+        .into_iter()
+        .chain([9000.0])
+        .map(|x| Instance {
+            glyph: 0,
+            position: at(x),
+        })
+        .collect();
+        let (joined, counts) = scene.with_words_joined();
+        assert_eq!(
+            counts,
+            JoinCounts {
+                groups: 3,
+                instances: 9,
+                distinct: 3
+            }
+        );
+        let widths: Vec<(f64, usize)> = (joined.instances.iter())
+            .map(|i| {
+                let g = &joined.glyphs[i.glyph as usize];
+                (g.bounds.max.x - g.bounds.min.x, g.outline.contours.len())
+            })
+            .collect();
+        assert_eq!(
+            widths,
+            [(340.0, 3), (220.0, 2), (390.0, 4), (100.0, 1)],
+            "each word's squares, its box as wide as they span"
+        );
+        assert_eq!(joined.ink_bounds(), scene.ink_bounds());
+        // The gap is that of WORD_GAP_EM: letters 0.29 em apart join, 0.31 em do not.
+        let pair = |gap: f64| {
+            let mut two = scene.clone();
+            two.instances.truncate(2);
+            two.instances[1].position = at(100.0 + gap);
+            two.with_words_joined().1.groups
+        };
+        assert_eq!((pair(290.0), pair(310.0)), (1, 0));
     }
 
     /// The same glyphs at the same relative positions are one distinct group: a

@@ -8,5 +8,5 @@
 mod joined;
 mod model;
 
-pub use joined::JoinCounts;
+pub use joined::{JoinCounts, WORD_GAP_EM};
 pub use model::{Glyph, Instance, Scene, SceneSource};

@@ -107,6 +107,9 @@ pub struct Settings {
     /// Draw each group of instances whose ink overlaps as one glyph (`between=union`,
     /// the default under the nonzero rule).
     pub join_instances: bool,
+    /// Draw each word as one glyph under one quad (`quads=word`,
+    /// [`Scene::with_words_joined`]; the overlapping groups are joined with it).
+    pub join_words: bool,
     /// None: no bands, every curve for every ray.
     pub bands: Option<BandCount>,
     pub overlay: Option<Overlay>,
@@ -121,6 +124,7 @@ impl Default for Settings {
             even_odd: false,
             merge_overlaps: true,
             join_instances: true,
+            join_words: false,
             bands: Some(BandCount::Auto),
             overlay: None,
         }
@@ -395,7 +399,11 @@ impl Winding {
             Antialiasing::Rays => Layout::Rays,
             Antialiasing::Area => Layout::Area,
         };
-        let scene = scene.joined_if(self.settings.join_instances);
+        let scene = if self.settings.join_words {
+            std::borrow::Cow::Owned(scene.with_words_joined().0)
+        } else {
+            scene.joined_if(self.settings.join_instances)
+        };
         let merged;
         let outlines = if self.settings.merge_overlaps {
             merged = scene.with_overlaps_merged();
