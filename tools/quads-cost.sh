@@ -2,7 +2,8 @@
 # What drawing a quad per word costs against a quad per glyph (docs/methods/winding.md,
 # "A quad per word"): `winding` at quads=glyph and quads=word, and glyphon, on the page
 # and `tiny`, ROUNDS renders each (default 5) taking turns, so that the machine's drift
-# falls on all three alike, on lavapipe and on SwiftShader (where installed). GPU ms:
+# falls on all three alike, on lavapipe (the adapter `llvmpipe`) and on SwiftShader
+# (where installed). GPU ms:
 # the median of the renders' `gpu_ms` (fastest–slowest in brackets); × glyphon: the
 # median of each round's ratio to glyphon's render in the same round (least–most); the
 # rest as measured.
@@ -21,12 +22,20 @@ for adapter in llvmpipe swiftshader; do
         continue
     fi
     for case in tiny page; do
-        for round in $(seq 1 "$rounds"); do
-            for drawn in glyph word glyphon; do
+        round=1
+        while [ "$round" -le "$rounds" ]; do
+            # Each round starts with the next of the three, so that none always runs first.
+            case $((round % 3)) in
+                0) order="glyph word glyphon" ;;
+                1) order="word glyphon glyph" ;;
+                *) order="glyphon glyph word" ;;
+            esac
+            for drawn in $order; do
                 if [ "$drawn" = glyphon ]; then set -- --method glyphon; else set -- --method winding --param "quads=$drawn"; fi
                 "$bin" render --case "$case" "$@" --adapter "$adapter" --out "$dir/c.png" \
                     --stats "$dir/$drawn-$round.json" >/dev/null
             done
+            round=$((round + 1))
         done
         python3 - "$adapter" "$case" "$dir" "$rounds" <<'PY'
 import json, statistics, sys

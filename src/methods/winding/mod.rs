@@ -164,7 +164,7 @@ pub const PARAMS: &[ParamSpec] = &[
         choices: &["glyph", "word"],
         numbers: None,
         help: "glyph: a quad per glyph instance over its box; word: each word's letters \
-               (instances whose boxes lie within 0.15 em along x) joined into one glyph \
+               (instances whose boxes lie less than 0.2 em apart along x) joined into one glyph \
                under one quad (Scene::with_words_joined): fewer, larger quads for a \
                software rasterizer to set up and fill, a glyph's data per distinct word \
                (docs/methods/winding.md, \"A quad per word\").",

@@ -42,9 +42,10 @@ pub struct JoinCounts {
 
 /// How far apart, in ems, two instances' control boxes may lie along x and still be
 /// letters of one word for [`Scene::with_words_joined`]: more than the side bearings of
-/// two letters (DejaVu Sans: up to about 0.1 em each side of a letter's box), less than
-/// a space with them (0.32 em and more).
-pub const WORD_GAP_EM: f64 = 0.15;
+/// two letters (DejaVu Sans: up to about 0.09 em each), less than a space with them
+/// (DejaVu Sans 0.318 em, Inter 0.281 em, before side bearings). Text without spaces
+/// joins whole lines.
+pub const WORD_GAP_EM: f64 = 0.2;
 
 /// A position relative to a group's first instance, bit for bit.
 type Offset = [u64; 2];
@@ -79,14 +80,14 @@ impl Scene {
     }
 
     /// The same picture with each word drawn as one instance of one glyph: instances
-    /// whose control boxes, grown along x by [`WORD_GAP_EM`] of an em on each side, meet
-    /// (letters of a word, and any instances whose ink overlaps, whose boxes meet) are
+    /// whose control boxes lie less than [`WORD_GAP_EM`] of an em apart along x and
+    /// overlap in y (letters of a word, and any instances whose ink overlaps) are
     /// grouped transitively and joined as
     /// [`with_overlapping_instances_joined`](Self::with_overlapping_instances_joined)
     /// joins, so the fill is still the union. A method drawing a quad per instance then
     /// draws one per word: fewer, larger quads, and a glyph per distinct word.
     pub fn with_words_joined(&self) -> (Scene, JoinCounts) {
-        self.joined_where(WORD_GAP_EM * self.units_per_em, |_, _| true)
+        self.joined_where(0.5 * WORD_GAP_EM * self.units_per_em, |_, _| true)
     }
 
     /// The scene with the groups of instances joined whose control boxes, grown along x
@@ -280,24 +281,23 @@ mod tests {
         assert_eq!(joined.ink_bounds(), scene.ink_bounds());
     }
 
-    /// Letters of a word (boxes less than 0.3 em apart along x: 0.15 em grown on each
-    /// side) join into one glyph, words a space apart do not, and a group whose ink
-    /// overlaps joins as well; a repeated word is one glyph. Squares 100 units wide in
-    /// a 1000-unit em: 20 units apart is a word's letters, 400 a space.
+    /// Letters of a word (boxes less than 0.2 em apart along x) join into one glyph,
+    /// words a space apart do not, nor a letter on another line, and a group whose ink
+    /// overlaps joins as well; a repeated word is one glyph. Squares 100 units wide and
+    /// tall in a 1000-unit em: 20 units apart is a word's letters, 400 a space.
     #[test]
     fn words_join_letters_a_gap_apart() {
-        let at = |x: f64| DVec2::new(x, 0.0);
+        let at = |x: f64, y: f64| DVec2::new(x, y);
         let mut scene = Scene::from_outlines(1000.0, vec![(square(0.0), DVec2::ZERO)]);
-        // "aaa aa aaa" and a square alone far off; the last word's two overlap by half.
+        // "aaa aa aaa", a square alone far off and one on the line below the first;
+        // the last word's last two overlap by half.
         scene.instances = [
             0.0, 120.0, 240.0, 740.0, 860.0, 1360.0, 1480.0, 1600.0, 1650.0,
         ]
         .into_iter()
-        .chain([9000.0])
-        .map(|x| Instance {
-            glyph: 0,
-            position: at(x),
-        })
+        .map(|x| at(x, 0.0))
+        .chain([at(9000.0, 0.0), at(0.0, -120.0)])
+        .map(|position| Instance { glyph: 0, position })
         .collect();
         let (joined, counts) = scene.with_words_joined();
         assert_eq!(
@@ -308,26 +308,33 @@ mod tests {
                 distinct: 3
             }
         );
-        let widths: Vec<(f64, usize)> = (joined.instances.iter())
+        let widths: Vec<(f64, f64, usize)> = (joined.instances.iter())
             .map(|i| {
                 let g = &joined.glyphs[i.glyph as usize];
-                (g.bounds.max.x - g.bounds.min.x, g.outline.contours.len())
+                let size = g.bounds.max - g.bounds.min;
+                (size.x, size.y, g.outline.contours.len())
             })
             .collect();
         assert_eq!(
             widths,
-            [(340.0, 3), (220.0, 2), (390.0, 4), (100.0, 1)],
-            "each word's squares, its box as wide as they span"
+            [
+                (340.0, 100.0, 3),
+                (220.0, 100.0, 2),
+                (390.0, 100.0, 4),
+                (100.0, 100.0, 1),
+                (100.0, 100.0, 1)
+            ],
+            "each word's squares, its box as wide as they span (not grown)"
         );
         assert_eq!(joined.ink_bounds(), scene.ink_bounds());
-        // The gap is that of WORD_GAP_EM: letters 0.29 em apart join, 0.31 em do not.
+        // The gap is WORD_GAP_EM: letters 0.19 em apart join, 0.21 em do not.
         let pair = |gap: f64| {
             let mut two = scene.clone();
             two.instances.truncate(2);
-            two.instances[1].position = at(100.0 + gap);
+            two.instances[1].position = at(100.0 + gap, 0.0);
             two.with_words_joined().1.groups
         };
-        assert_eq!((pair(290.0), pair(310.0)), (1, 0));
+        assert_eq!((pair(190.0), pair(210.0)), (1, 0));
     }
 
     /// The same glyphs at the same relative positions are one distinct group: a
