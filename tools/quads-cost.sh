@@ -21,7 +21,7 @@ for adapter in llvmpipe swiftshader; do
         echo "| $adapter | — | — | not found | | | | | | |"
         continue
     fi
-    for case in tiny page; do
+    for scene in tiny page; do
         round=1
         while [ "$round" -le "$rounds" ]; do
             # Each round starts with the next of the three, so that none always runs first.
@@ -32,12 +32,12 @@ for adapter in llvmpipe swiftshader; do
             esac
             for drawn in $order; do
                 if [ "$drawn" = glyphon ]; then set -- --method glyphon; else set -- --method winding --param "quads=$drawn"; fi
-                "$bin" render --case "$case" "$@" --adapter "$adapter" --out "$dir/c.png" \
+                "$bin" render --case "$scene" "$@" --adapter "$adapter" --out "$dir/c.png" \
                     --stats "$dir/$drawn-$round.json" >/dev/null
             done
             round=$((round + 1))
         done
-        python3 - "$adapter" "$case" "$dir" "$rounds" <<'PY'
+        python3 - "$adapter" "$scene" "$dir" "$rounds" <<'PY'
 import json, statistics, sys
 adapter, case, folder, rounds = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])
 load = lambda drawn: [json.load(open(f"{folder}/{drawn}-{r}.json")) for r in range(1, rounds + 1)]
